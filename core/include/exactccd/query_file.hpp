@@ -1,0 +1,54 @@
+// Reading the CCD benchmark's CSV files (Wang et al. 2021): 8 rows per query, 7 integer
+// columns x_num,x_den,y_num,y_den,z_num,z_den,truth. Coordinates are read as exact rationals.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "exactccd/rational_query.hpp"
+
+namespace exactccd {
+
+/// Malformed input: the message names the file and, where there is one, the line.
+class InputError : public std::runtime_error {
+ public:
+  InputError(const std::string& file, std::size_t line, const std::string& what);
+  const std::string& file() const { return file_; }
+  std::size_t line() const { return line_; }  ///< 1-based; 0 when the whole file is at fault
+
+ private:
+  std::string file_;
+  std::size_t line_;
+};
+
+struct QueryRecord {
+  RationalQuery query;
+  bool truth = false;         ///< the file's truth column
+  std::size_t first_line = 0; ///< 1-based line of the query's first row
+};
+
+struct QueryFile {
+  std::string path;
+  QueryType type = QueryType::vertex_face;
+  std::vector<QueryRecord> queries;
+};
+
+/// The query type from a path component named "vertex-face" or "edge-edge" (the nearest one),
+/// or nullopt.
+std::optional<QueryType> query_type_from_path(const std::string& path);
+
+/// Reads and validates a whole file. Throws InputError for: a missing or unreadable file, a
+/// row without exactly 7 columns, a field that is not an integer (NaN and Inf included), a
+/// zero denominator, a truth value other than 0 or 1, truth differing within a query, a query
+/// cut short (row count not a multiple of 8).
+QueryFile read_query_file(const std::string& path, QueryType type);
+
+/// `path` itself when it is a file; for a directory, every `vertex-face/*.csv` and
+/// `edge-edge/*.csv` below it, sorted. Throws InputError when the path does not exist or a
+/// directory holds no such file.
+std::vector<std::string> find_query_files(const std::string& path);
+
+}  // namespace exactccd

@@ -1,0 +1,104 @@
+// Polynomials in t of fixed degree over any number type, and 3-vectors of them.
+//
+// Every CCD predicate of exactccd is written once over these templates. Instantiated with
+// a field NT (double, an interval type, exact rationals) a vertex's linear motion
+// x(t) = x_t0 + t (x_t1 - x_t0) is a FixedPoly<NT, 1>, and products of coordinates give the
+// coefficients of the coplanarity cubic and of the inclusion polynomials exactly as written.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <utility>
+
+namespace exactccd::predicates {
+
+/// c[i] is the coefficient of t^i.
+template <class NT, int D>
+struct FixedPoly {
+  static_assert(D >= 0, "degree must be non-negative");
+  static constexpr int degree = D;
+  std::array<NT, D + 1> c;
+};
+
+template <class NT, int D1, int D2>
+auto operator+(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
+  constexpr int D = D1 > D2 ? D1 : D2;
+  FixedPoly<NT, D> r{};
+  for (int i = 0; i <= D; ++i) {
+    if (i <= D1 && i <= D2) r.c[i] = a.c[i] + b.c[i];
+    else if (i <= D1) r.c[i] = a.c[i];
+    else r.c[i] = b.c[i];
+  }
+  return r;
+}
+
+template <class NT, int D1, int D2>
+auto operator-(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
+  constexpr int D = D1 > D2 ? D1 : D2;
+  FixedPoly<NT, D> r{};
+  for (int i = 0; i <= D; ++i) {
+    if (i <= D1 && i <= D2) r.c[i] = a.c[i] - b.c[i];
+    else if (i <= D1) r.c[i] = a.c[i];
+    else r.c[i] = -b.c[i];
+  }
+  return r;
+}
+
+template <class NT, int D1, int D2>
+FixedPoly<NT, D1 + D2> operator*(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
+  FixedPoly<NT, D1 + D2> r{};
+  for (int k = 0; k <= D1 + D2; ++k) {
+    // Sum the products in a fixed order: the filters' error analysis counts these terms.
+    bool first = true;
+    for (int i = 0; i <= D1; ++i) {
+      const int j = k - i;
+      if (j < 0 || j > D2) continue;
+      if (first) {
+        r.c[k] = a.c[i] * b.c[j];
+        first = false;
+      } else {
+        r.c[k] = r.c[k] + a.c[i] * b.c[j];
+      }
+    }
+  }
+  return r;
+}
+
+template <class T>
+struct Vec3 {
+  T x, y, z;
+  const T& operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+};
+
+template <class A, class B>
+auto operator-(const Vec3<A>& a, const Vec3<B>& b) {
+  return Vec3<decltype(a.x - b.x)>{a.x - b.x, a.y - b.y, a.z - b.z};
+}
+
+template <class A, class B>
+auto cross(const Vec3<A>& a, const Vec3<B>& b) {
+  return Vec3<decltype(a.y * b.z - a.z * b.y)>{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z,
+                                              a.x * b.y - a.y * b.x};
+}
+
+template <class A, class B>
+auto dot(const Vec3<A>& a, const Vec3<B>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/// The k-th component of cross(b - a, c - a): the orientation of (a, b, c) projected along
+/// axis k, with the cyclic axis order (k+1, k+2) so that it equals the k-th normal component.
+template <class T>
+auto orient2d_along_axis(int k, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  const int u = (k + 1) % 3, v = (k + 2) % 3;
+  return (b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u]);
+}
+
+/// x(t) = x0 + t (x1 - x0), coordinate-wise.
+template <class NT>
+Vec3<FixedPoly<NT, 1>> linear_motion(const Vec3<NT>& x0, const Vec3<NT>& x1) {
+  return {FixedPoly<NT, 1>{{x0.x, x1.x - x0.x}}, FixedPoly<NT, 1>{{x0.y, x1.y - x0.y}},
+          FixedPoly<NT, 1>{{x0.z, x1.z - x0.z}}};
+}
+
+}  // namespace exactccd::predicates

@@ -1,0 +1,127 @@
+#include "exact/algebraic_time.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+namespace exactccd::exact {
+
+namespace {
+std::uint64_t bits_of(double d) {
+  std::uint64_t u;
+  std::memcpy(&u, &d, sizeof u);
+  return u;
+}
+double double_of(std::uint64_t u) {
+  double d;
+  std::memcpy(&d, &u, sizeof d);
+  return d;
+}
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}  // namespace
+
+bool no_double_strictly_between(const Rational& lo, const Rational& hi) {
+  const double first_above = std::nextafter(round_down(lo), kInf);
+  return cmp(Rational(first_above), hi) >= 0;
+}
+
+Rational split_point(const Rational& lo, const Rational& hi) {
+  if (sgn(lo) >= 0) {
+    const double first = std::nextafter(round_down(lo), kInf);  // smallest double > lo
+    const double last = std::nextafter(round_up(hi), -kInf);    // largest double < hi
+    if (first <= last) {
+      // For non-negative doubles the bit patterns are ordered like the values, so the middle
+      // pattern halves the number of doubles left: at most 64 steps to the tightest pair.
+      const std::uint64_t a = bits_of(first), b = bits_of(last);
+      return Rational(double_of(a + (b - a) / 2));
+    }
+  }
+  Rational mid = lo + hi;
+  mid /= 2;
+  return mid;
+}
+
+AlgebraicTime AlgebraicTime::rational(Rational value) {
+  AlgebraicTime t;
+  t.set_rational(std::move(value));
+  return t;
+}
+
+AlgebraicTime::AlgebraicTime(Polynomial f, Rational lo, Rational hi)
+    : f_(std::move(f)), lo_(std::move(lo)), hi_(std::move(hi)) {
+  sign_f_lo_ = f_.sign_at(lo_);
+  if (cmp(lo_, hi_) >= 0 || sign_f_lo_ == 0 || f_.sign_at(hi_) != -sign_f_lo_)
+    throw std::logic_error("exactccd: AlgebraicTime needs a sign change of f on (lo, hi)");
+}
+
+void AlgebraicTime::set_rational(Rational value) {
+  lo_ = value;
+  hi_ = std::move(value);
+  rational_ = true;
+}
+
+void AlgebraicTime::refine_once() {
+  if (rational_) return;
+  Rational m = split_point(lo_, hi_);
+  const int s = f_.sign_at(m);
+  if (s == 0) {
+    set_rational(std::move(m));
+  } else if (s == sign_f_lo_) {
+    lo_ = std::move(m);
+  } else {
+    hi_ = std::move(m);
+  }
+}
+
+int AlgebraicTime::sign_of(const Polynomial& g) {
+  if (g.is_zero()) return 0;
+  if (rational_) return g.sign_at(lo_);
+  bool zero_checked = false;
+  for (;;) {
+    // g keeps the sign of g(lo) on [lo, hi] when |g(lo)| > sum_k |g^(k)(lo)/k!| w^k.
+    // PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time
+    const Polynomial shifted = g.taylor_shift(lo_);
+    const auto& d = shifted.coefficients();
+    const Rational w = hi_ - lo_;
+    Rational bound = 0, wk = 1;
+    for (std::size_t k = 1; k < d.size(); ++k) {
+      wk *= w;
+      bound += abs(d[k]) * wk;
+    }
+    const Rational g_lo = d.empty() ? Rational(0) : d[0];
+    if (cmp(abs(g_lo), bound) > 0) return sgn(g_lo);
+    if (!zero_checked) {
+      // g(t) = 0 iff gcd(f, g) vanishes at t; the gcd divides the square-free f, so its only
+      // possible root in (lo, hi) is t, simple, and shows as a sign change.
+      const Polynomial h = gcd(f_, g);
+      if (h.degree() >= 1 && h.sign_at(lo_) != h.sign_at(hi_)) return 0;
+      zero_checked = true;
+    }
+    refine_once();
+    if (rational_) return g.sign_at(lo_);
+  }
+}
+
+int AlgebraicTime::compare(const Rational& q) {
+  for (;;) {
+    if (rational_) return cmp(lo_, q);
+    if (cmp(q, lo_) <= 0) return 1;
+    if (cmp(q, hi_) >= 0) return -1;
+    const int s = f_.sign_at(q);
+    if (s == 0) return 0;  // q is a root of f in (lo, hi): it is this time
+    refine_once();
+  }
+}
+
+std::pair<double, double> AlgebraicTime::enclosure(double width) {
+  for (;;) {
+    const double dl = round_down(lo_), dh = round_up(hi_);
+    if (rational_ || no_double_strictly_between(lo_, hi_) || (width > 0 && dh - dl <= width))
+      return {dl, dh};
+    refine_once();
+  }
+}
+
+}  // namespace exactccd::exact

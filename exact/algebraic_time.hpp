@@ -1,0 +1,71 @@
+// A time of the exact path: a rational, or the unique root of a square-free rational
+// polynomial f inside an open interval (lo, hi) with rational endpoints, f(lo) f(hi) < 0.
+// Signs of other polynomials at such a time are decided exactly.
+// PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time
+#pragma once
+
+#include <utility>
+
+#include "core/predicates/motion.hpp"
+#include "exact/polynomial.hpp"
+
+namespace exactccd::exact {
+
+class AlgebraicTime {
+ public:
+  static AlgebraicTime rational(Rational value);
+  /// f square-free, lo < hi, f(lo) and f(hi) non-zero of opposite signs.
+  AlgebraicTime(Polynomial f, Rational lo, Rational hi);
+
+  bool is_rational() const { return rational_; }
+  /// The value when is_rational(), else the current lower end of the isolating interval.
+  const Rational& lo() const { return lo_; }
+  const Rational& hi() const { return hi_; }
+  const Polynomial& defining_polynomial() const { return f_; }
+
+  /// Exact sign (-1, 0, +1) of g at this time. May refine the isolating interval.
+  int sign_of(const Polynomial& g);
+  template <int D>
+  int sign_of(const predicates::FixedPoly<Rational, D>& g) {
+    if (rational_) return sgn(horner(g));
+    return sign_of(Polynomial(g));
+  }
+
+  /// Halves the isolating interval (in the ordering of doubles while a double lies inside it);
+  /// may discover that the time is a rational number.
+  void refine_once();
+
+  /// Doubles lo <= t <= hi: the tightest such pair when width == 0, otherwise a pair with
+  /// hi - lo <= width or the tightest, whichever comes first.
+  std::pair<double, double> enclosure(double width);
+
+  /// Exact comparison with a rational.
+  int compare(const Rational& q);
+
+ private:
+  AlgebraicTime() = default;
+  template <int D>
+  Rational horner(const predicates::FixedPoly<Rational, D>& g) const {
+    Rational r = g.c[D];
+    for (int i = D - 1; i >= 0; --i) {
+      r *= lo_;
+      r += g.c[i];
+    }
+    return r;
+  }
+  void set_rational(Rational value);
+
+  Polynomial f_;
+  Rational lo_, hi_;
+  int sign_f_lo_ = 0;
+  bool rational_ = false;
+};
+
+/// A point strictly inside (lo, hi), 0 <= lo < hi: the middle double in the ordering of
+/// doubles when one lies strictly inside, else the rational midpoint.
+Rational split_point(const Rational& lo, const Rational& hi);
+
+/// True when no double lies strictly between lo and hi.
+bool no_double_strictly_between(const Rational& lo, const Rational& hi);
+
+}  // namespace exactccd::exact

@@ -1,0 +1,94 @@
+#include "exact/polynomial.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+namespace exactccd::exact {
+
+Polynomial::Polynomial(std::vector<Rational> c) : c_(std::move(c)) { trim(); }
+
+void Polynomial::trim() {
+  while (!c_.empty() && sgn(c_.back()) == 0) c_.pop_back();
+}
+
+Rational Polynomial::evaluate(const Rational& t) const {
+  Rational r = 0;
+  for (auto it = c_.rbegin(); it != c_.rend(); ++it) {
+    r *= t;
+    r += *it;
+  }
+  return r;
+}
+
+Polynomial Polynomial::derivative() const {
+  std::vector<Rational> d;
+  for (std::size_t i = 1; i < c_.size(); ++i) d.push_back(c_[i] * static_cast<long>(i));
+  return Polynomial(std::move(d));
+}
+
+Polynomial Polynomial::monic() const {
+  if (is_zero()) return *this;
+  std::vector<Rational> m(c_);
+  const Rational lead = leading();
+  for (auto& x : m) x /= lead;
+  return Polynomial(std::move(m));
+}
+
+Polynomial Polynomial::taylor_shift(const Rational& t0) const {
+  // Repeated synthetic division by (t - t0): O(n^2), exact.
+  std::vector<Rational> a(c_);
+  const std::size_t n = a.size();
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    for (std::size_t i = n - 1; i > k; --i) a[i - 1] += t0 * a[i];
+  return Polynomial(std::move(a));
+}
+
+Polynomial operator*(const Polynomial& a, const Polynomial& b) {
+  if (a.is_zero() || b.is_zero()) return Polynomial();
+  std::vector<Rational> r(a.c_.size() + b.c_.size() - 1);
+  for (std::size_t i = 0; i < a.c_.size(); ++i)
+    for (std::size_t j = 0; j < b.c_.size(); ++j) r[i + j] += a.c_[i] * b.c_[j];
+  return Polynomial(std::move(r));
+}
+
+Polynomial operator-(const Polynomial& a) {
+  std::vector<Rational> r(a.c_);
+  for (auto& x : r) x = -x;
+  return Polynomial(std::move(r));
+}
+
+void divide(const Polynomial& a, const Polynomial& b, Polynomial* q, Polynomial* r) {
+  if (b.is_zero()) throw std::domain_error("exactccd: polynomial division by zero");
+  std::vector<Rational> rem(a.c_);
+  const int db = b.degree();
+  std::vector<Rational> quo(a.degree() >= db ? a.degree() - db + 1 : 0);
+  for (int k = a.degree() - db; k >= 0; --k) {
+    const Rational f = rem[k + db] / b.leading();
+    quo[k] = f;
+    if (sgn(f) == 0) continue;
+    for (int j = 0; j <= db; ++j) rem[k + j] -= f * b.c_[j];
+  }
+  rem.resize(db > 0 ? db : 0);
+  if (q) *q = Polynomial(std::move(quo));
+  if (r) *r = Polynomial(std::move(rem));
+}
+
+Polynomial gcd(Polynomial a, Polynomial b) {
+  while (!b.is_zero()) {
+    Polynomial r;
+    divide(a, b, nullptr, &r);
+    a = std::move(b);
+    b = r.monic();  // keeps coefficient growth in check
+  }
+  return a.monic();
+}
+
+Polynomial square_free_part(const Polynomial& p) {
+  if (p.is_zero()) throw std::domain_error("exactccd: square-free part of the zero polynomial");
+  const Polynomial g = gcd(p, p.derivative());
+  Polynomial q;
+  divide(p, g, &q, nullptr);
+  return q.monic();
+}
+
+}  // namespace exactccd::exact

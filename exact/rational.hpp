@@ -1,0 +1,20 @@
+// Exact rationals (GMP, through gmpxx) and their exact relation to doubles.
+#pragma once
+
+#include <gmpxx.h>
+
+namespace exactccd::exact {
+
+using Rational = mpq_class;
+
+/// Largest double <= q (q of any magnitude; -inf / +inf-free: |q| beyond DBL_MAX saturates
+/// to -inf for negative q). Exact: GMP's mpq_get_d truncates towards zero.
+double round_down(const Rational& q);
+/// Smallest double >= q.
+double round_up(const Rational& q);
+/// True when q is exactly a finite double (and then sets *d to it).
+bool to_double_exactly(const Rational& q, double* d);
+
+inline int sign(const Rational& q) { return sgn(q); }
+
+}  // namespace exactccd::exact
