@@ -115,6 +115,24 @@ int AlgebraicTime::compare(const Rational& q) {
   }
 }
 
+int compare(AlgebraicTime& a, AlgebraicTime& b) {
+  if (a.is_rational()) return -b.compare(a.lo());
+  if (b.is_rational()) return a.compare(b.lo());
+  // Equal iff a is a root of b's polynomial inside b's isolating interval, which holds
+  // only for b's own root. PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time
+  const Rational b_lo = b.lo(), b_hi = b.hi();
+  if (a.sign_of(b.defining_polynomial()) == 0 && a.compare(b_lo) > 0 && a.compare(b_hi) < 0)
+    return 0;
+  for (;;) {  // distinct: refine both until their intervals separate
+    if (a.is_rational()) return -b.compare(a.lo());
+    if (b.is_rational()) return a.compare(b.lo());
+    if (cmp(a.hi(), b.lo()) <= 0) return -1;
+    if (cmp(b.hi(), a.lo()) <= 0) return 1;
+    a.refine_once();
+    b.refine_once();
+  }
+}
+
 std::pair<double, double> AlgebraicTime::enclosure(double width) {
   for (;;) {
     const double dl = round_down(lo_), dh = round_up(hi_);

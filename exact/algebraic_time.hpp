@@ -61,6 +61,9 @@ class AlgebraicTime {
   bool rational_ = false;
 };
 
+/// Exact comparison of two algebraic times (-1, 0, +1). May refine both.
+int compare(AlgebraicTime& a, AlgebraicTime& b);
+
 /// A point strictly inside (lo, hi), 0 <= lo < hi: the middle double in the ordering of
 /// doubles when one lies strictly inside, else the rational midpoint.
 Rational split_point(const Rational& lo, const Rational& hi);

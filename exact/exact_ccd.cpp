@@ -2,6 +2,7 @@
 #include "exact/exact_ccd.hpp"
 
 #include <optional>
+#include <tuple>
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
@@ -32,29 +33,45 @@ Polynomial vertex_edge_candidates(const MovingPoint<Rational>& p, const MovingPo
   return Polynomial(dot(p - x, p - y));
 }
 
-/// Multiplies the non-zero candidates into one polynomial (the constant 1 when none).
-Polynomial product_of_nonzero(std::initializer_list<Polynomial> factors) {
-  Polynomial product(std::vector<Rational>{Rational(1)});
-  for (const auto& f : factors)
-    if (!f.is_zero()) product = product * f;
-  return product;
-}
-
-/// The earliest time among the candidates (t = 0 when include_zero, and the roots of
-/// `candidates` in [0, t_max]) at which contact_at holds.
+/// The earliest time at which contact_at holds among the candidates: t = 0 when include_zero,
+/// and the roots in [0, t_max] of each polynomial in `candidates` (zero polynomials and
+/// constants have none). Each polynomial is searched in ascending order of its roots up to
+/// the best time found so far, and the earliest of the per-polynomial firsts is returned.
 template <class ContactAt>
-std::optional<AlgebraicTime> earliest_contact(const Polynomial& candidates, bool include_zero,
-                                              const Rational& t_max, ContactAt&& contact_at) {
+std::optional<AlgebraicTime> earliest_contact(std::initializer_list<Polynomial> candidates,
+                                              bool include_zero, const Rational& t_max,
+                                              ContactAt&& contact_at) {
   if (include_zero) {
     AlgebraicTime zero = AlgebraicTime::rational(0);
     if (contact_at(zero)) return zero;
   }
-  if (candidates.is_zero() || candidates.degree() == 0) return std::nullopt;
-  for (AlgebraicTime& t : real_roots_in(candidates, Rational(0), t_max)) {
-    if (include_zero && t.is_rational() && sgn(t.lo()) == 0) continue;  // already tried
-    if (contact_at(t)) return std::move(t);
+  std::optional<AlgebraicTime> best;
+  for (const Polynomial& poly : candidates) {
+    if (poly.degree() < 1) continue;
+    for (AlgebraicTime& t : real_roots_in(poly, Rational(0), t_max)) {
+      if (include_zero && t.is_rational() && sgn(t.lo()) == 0) continue;  // already tried
+      if (best && compare(t, *best) >= 0) break;  // ascending: no later root can be earlier
+      if (contact_at(t)) {
+        best = std::move(t);
+        break;
+      }
+    }
   }
-  return std::nullopt;
+  return best;
+}
+
+/// Scales every coordinate by the least common multiple of the denominators: a uniform
+/// positive scaling of space changes no contact and no contact time, and integer data keeps
+/// GMP's rational normalisation cheap.
+RationalQuery with_integer_coordinates(const RationalQuery& q) {
+  mpz_class l = 1;
+  for (const auto& p : q.points)
+    for (const Rational* x : {&p.x, &p.y, &p.z}) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x->get_den_mpz_t());
+  if (l == 1) return q;
+  RationalQuery scaled = q;
+  for (auto& p : scaled.points)
+    for (Rational* x : {&p.x, &p.y, &p.z}) *x *= l;
+  return scaled;
 }
 
 CcdResult make_result(std::optional<AlgebraicTime> toi, const CcdOptions& options) {
@@ -72,7 +89,8 @@ auto sign_at(AlgebraicTime& t) {
 
 }  // namespace
 
-CcdResult vertex_face_ccd_exact(const RationalQuery& q, const CcdOptions& options) {
+CcdResult vertex_face_ccd_exact(const RationalQuery& query, const CcdOptions& options) {
+  const RationalQuery q = with_integer_coordinates(query);
   const auto& v = q.points;
   const auto p = moving(v[0], v[4]), a = moving(v[1], v[5]), b = moving(v[2], v[6]),
              c = moving(v[3], v[7]);
@@ -82,15 +100,17 @@ CcdResult vertex_face_ccd_exact(const RationalQuery& q, const CcdOptions& option
   };
   const Polynomial cubic(predicates::vertex_face_coplanarity_cubic(p, a, b, c));
   if (!cubic.is_zero())  // contact implies coplanarity: only the cubic's roots are candidates
-    return make_result(earliest_contact(cubic, false, t_max, contact_at), options);
+    return make_result(earliest_contact({cubic}, false, t_max, contact_at), options);
   // Coplanar throughout: the first contact after t = 0 lies on an edge of the triangle.
-  const Polynomial candidates = product_of_nonzero({vertex_edge_candidates(p, a, b),
-                                                    vertex_edge_candidates(p, b, c),
-                                                    vertex_edge_candidates(p, c, a)});
-  return make_result(earliest_contact(candidates, true, t_max, contact_at), options);
+  return make_result(earliest_contact({vertex_edge_candidates(p, a, b),
+                                       vertex_edge_candidates(p, b, c),
+                                       vertex_edge_candidates(p, c, a)},
+                                      true, t_max, contact_at),
+                     options);
 }
 
-CcdResult edge_edge_ccd_exact(const RationalQuery& q, const CcdOptions& options) {
+CcdResult edge_edge_ccd_exact(const RationalQuery& query, const CcdOptions& options) {
+  const RationalQuery q = with_integer_coordinates(query);
   const auto& v = q.points;
   const auto a0 = moving(v[0], v[4]), a1 = moving(v[1], v[5]), b0 = moving(v[2], v[6]),
              b1 = moving(v[3], v[7]);
@@ -100,12 +120,14 @@ CcdResult edge_edge_ccd_exact(const RationalQuery& q, const CcdOptions& options)
   };
   const Polynomial cubic(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1));
   if (!cubic.is_zero())
-    return make_result(earliest_contact(cubic, false, t_max, contact_at), options);
+    return make_result(earliest_contact({cubic}, false, t_max, contact_at), options);
   // Coplanar throughout: the first contact after t = 0 puts an endpoint on the other segment.
-  const Polynomial candidates = product_of_nonzero(
-      {vertex_edge_candidates(a0, b0, b1), vertex_edge_candidates(a1, b0, b1),
-       vertex_edge_candidates(b0, a0, a1), vertex_edge_candidates(b1, a0, a1)});
-  return make_result(earliest_contact(candidates, true, t_max, contact_at), options);
+  return make_result(earliest_contact({vertex_edge_candidates(a0, b0, b1),
+                                       vertex_edge_candidates(a1, b0, b1),
+                                       vertex_edge_candidates(b0, a0, a1),
+                                       vertex_edge_candidates(b1, a0, a1)},
+                                      true, t_max, contact_at),
+                     options);
 }
 
 }  // namespace exactccd::exact

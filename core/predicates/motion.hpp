@@ -64,6 +64,26 @@ FixedPoly<NT, D1 + D2> operator*(const FixedPoly<NT, D1>& a, const FixedPoly<NT,
   return r;
 }
 
+/// Horner evaluation at t (for an interval t: an enclosure of the range over t).
+template <class NT, int D, class T>
+NT evaluate(const FixedPoly<NT, D>& p, const T& t) {
+  NT r = p.c[D];
+  for (int i = D - 1; i >= 0; --i) r = r * t + p.c[i];
+  return r;
+}
+
+/// p'(t).
+template <class NT, int D>
+FixedPoly<NT, (D > 0 ? D - 1 : 0)> derivative(const FixedPoly<NT, D>& p) {
+  FixedPoly<NT, (D > 0 ? D - 1 : 0)> r{};
+  if constexpr (D == 0) {
+    r.c[0] = NT(0);
+  } else {
+    for (int i = 1; i <= D; ++i) r.c[i - 1] = p.c[i] * NT(i);
+  }
+  return r;
+}
+
 template <class T>
 struct Vec3 {
   T x, y, z;

@@ -4,15 +4,32 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
+#include "core/src/float_only_ccd.hpp"
 #include "exact/exact_ccd.hpp"
+#include "exact/integer_cubic.hpp"
+#include "filters/ccd_filters.hpp"
 #include "exactccd/rational_query.hpp"
 
 namespace exactccd {
 
 const char* to_string(Stage stage) noexcept {
   switch (stage) {
+    case Stage::culling: return "culling";
+    case Stage::filter: return "filter";
+    case Stage::filter_exact_toi: return "filter_exact_toi";
     case Stage::exact: return "exact";
+    case Stage::float_only: return "float_only";
+  }
+  return "unknown";
+}
+
+const char* to_string(Mode mode) noexcept {
+  switch (mode) {
+    case Mode::filtered: return "default";
+    case Mode::float_only: return "float_only";
+    case Mode::exact: return "exact";
   }
   return "unknown";
 }
@@ -60,14 +77,75 @@ CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
                                               : exact::edge_edge_ccd_exact(query, options);
 }
 
+namespace {
+
+/// The default pipeline: culling, filters, exact path. The culling and filter stages make no
+/// heap allocation; the exact stages do.
+template <class Query, class Culled, class Filter, class Exact>
+CcdResult filtered_ccd(const Query& q, const CcdOptions& options, Culled culled, Filter filter,
+                       Exact exact_path) {
+  CcdResult r;
+  if (culled(q)) {
+    r.decided_by = Stage::culling;
+    return r;
+  }
+  const filters::FilterOutcome f = filter(q, options);
+  switch (f.verdict) {
+    case filters::FilterOutcome::Verdict::no_contact:
+      r.decided_by = Stage::filter;
+      return r;
+    case filters::FilterOutcome::Verdict::contact:
+      r.collides = true;
+      if (f.toi_final) {
+        r.decided_by = Stage::filter;
+        r.toi_lo = f.toi_lo;
+        r.toi_hi = f.toi_hi;
+      } else {
+        r.decided_by = Stage::filter_exact_toi;
+        std::tie(r.toi_lo, r.toi_hi) =
+            exact::IntegerCubic(q).bisect_root(f.toi_lo, f.toi_hi, options.toi_width);
+      }
+      return r;
+    case filters::FilterOutcome::Verdict::uncertain: break;
+  }
+  return exact_path(to_rational(q), options);
+}
+
+bool all_finite(const VertexFaceQuery& q) {
+  return q.p_t0.allFinite() && q.a_t0.allFinite() && q.b_t0.allFinite() && q.c_t0.allFinite() &&
+         q.p_t1.allFinite() && q.a_t1.allFinite() && q.b_t1.allFinite() && q.c_t1.allFinite();
+}
+
+bool all_finite(const EdgeEdgeQuery& q) {
+  return q.ea0_t0.allFinite() && q.ea1_t0.allFinite() && q.eb0_t0.allFinite() &&
+         q.eb1_t0.allFinite() && q.ea0_t1.allFinite() && q.ea1_t1.allFinite() &&
+         q.eb0_t1.allFinite() && q.eb1_t1.allFinite();
+}
+
+}  // namespace
+
 CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& options) {
   validate(options);
-  return exact::vertex_face_ccd_exact(to_rational(query), options);
+  if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
+  switch (options.mode) {
+    case Mode::float_only: return float_only::vertex_face_ccd(query, options);
+    case Mode::exact: return exact::vertex_face_ccd_exact(to_rational(query), options);
+    case Mode::filtered: break;
+  }
+  return filtered_ccd(query, options, filters::vertex_face_culled, filters::vertex_face_filter,
+                      exact::vertex_face_ccd_exact);
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
   validate(options);
-  return exact::edge_edge_ccd_exact(to_rational(query), options);
+  if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
+  switch (options.mode) {
+    case Mode::float_only: return float_only::edge_edge_ccd(query, options);
+    case Mode::exact: return exact::edge_edge_ccd_exact(to_rational(query), options);
+    case Mode::filtered: break;
+  }
+  return filtered_ccd(query, options, filters::edge_edge_culled, filters::edge_edge_filter,
+                      exact::edge_edge_ccd_exact);
 }
 
 }  // namespace exactccd

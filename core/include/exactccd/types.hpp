@@ -24,12 +24,26 @@ struct EdgeEdgeQuery {
 
 /// Which path decides a query.
 enum class Mode : std::uint8_t {
-  exact,  ///< exact rational decision procedure only (reference oracle)
+  /// Certified: culling, then interval filters, then the exact path where they cannot decide.
+  /// Always the exact answer. The default.
+  filtered,
+  /// Uncertified classic cubic test in plain double arithmetic (Provot 1997; Redon et al.
+  /// 2002): for comparison and for the speed-versus-error report only. Can miss contacts and
+  /// report false ones, and its TOI is a single double (toi_lo == toi_hi) that may be late.
+  float_only,
+  /// The exact rational decision procedure only (reference oracle).
+  exact,
 };
+
+const char* to_string(Mode mode) noexcept;
 
 /// The stage that decided a query (for statistics and tests).
 enum class Stage : std::uint8_t {
-  exact,  ///< exact rational arithmetic and exact root isolation (exact/)
+  culling,           ///< disjoint swept bounding boxes (exact comparisons)
+  filter,            ///< interval filters decided the verdict and the TOI
+  filter_exact_toi,  ///< filters decided the verdict; exact arithmetic tightened the TOI
+  exact,             ///< exact rational arithmetic and exact root isolation (exact/)
+  float_only,        ///< the uncertified double-precision test (Mode::float_only)
 };
 
 const char* to_string(Stage stage) noexcept;
@@ -41,7 +55,7 @@ struct CcdOptions {
   /// doubles around the exact first contact time t*: toi_lo == toi_hi == t* when t* is a
   /// double, otherwise the two consecutive doubles that enclose t*. Must be >= 0 and finite.
   double toi_width = 0.0;
-  Mode mode = Mode::exact;
+  Mode mode = Mode::filtered;
 };
 
 struct CcdResult {

@@ -1,0 +1,18 @@
+// Certified floating-point decisions for vertex-face and edge-edge CCD: culling, then the
+// cubic filter. An `uncertain` outcome sends the query to the exact path.
+#pragma once
+
+#include "exactccd/types.hpp"
+#include "filters/cubic_filter.hpp"
+
+namespace exactccd::filters {
+
+/// Certain no-contact by disjoint swept boxes (exact comparisons).
+bool vertex_face_culled(const VertexFaceQuery& q);
+bool edge_edge_culled(const EdgeEdgeQuery& q);
+
+/// The cubic filter on finite input; options already validated.
+FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options);
+FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options);
+
+}  // namespace exactccd::filters

@@ -1,0 +1,40 @@
+// The certified floating-point search for the first contact: the coplanarity cubic's roots
+// are isolated by Bernstein subdivision with interval coefficients, each candidate interval is
+// excluded or confirmed by interval inclusion tests, and a confirmed root is refined by
+// certified bisection. Anything undecided is reported as uncertain, never guessed.
+// PROOF: proofs/filters.md#cubic-filter
+#pragma once
+
+#include <cstdint>
+
+#include "core/predicates/motion.hpp"
+#include "filters/interval.hpp"
+
+namespace exactccd::filters {
+
+struct FilterOutcome {
+  enum class Verdict : std::uint8_t { no_contact, contact, uncertain };
+  Verdict verdict = Verdict::uncertain;
+  /// For a contact: the exact first contact time t* is the only root of the coplanarity
+  /// cubic in [toi_lo, toi_hi], and the cubic is certainly non-zero, of opposite signs, at
+  /// both ends (or toi_lo == toi_hi == t*, a certified root).
+  double toi_lo = 0.0, toi_hi = 0.0;
+  /// The bracket meets the requested width (the tightest pair of doubles for width 0).
+  bool toi_final = false;
+};
+
+/// `Inclusion` provides, for a time interval T (an Interval inside [0, t_max]):
+///   bool excluded(const Interval& T)            -- certainly no contact at any t in T;
+///   bool certainly_included(const Interval& T)  -- contact at every coplanar t in T.
+/// Must be called with a RoundingGuard held.
+template <class Inclusion>
+FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
+                           double toi_width, const Inclusion& inclusion);
+
+/// True when all four Bernstein coefficients of the cubic on [0, t_max] are certainly
+/// non-zero with one sign: no coplanar instant, hence no contact. Needs a RoundingGuard.
+bool cubic_certainly_root_free(const predicates::FixedPoly<Interval, 3>& cubic, double t_max);
+
+}  // namespace exactccd::filters
+
+#include "filters/cubic_filter_impl.hpp"
