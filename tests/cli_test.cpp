@@ -1,0 +1,576 @@
+// Tests of the `exactccd` command (tools/): runs the built binary on files written into a fresh
+// temporary directory. Expected values come from the benchmark's truth column, read here with
+// a parser of this file's own, and from hand-made queries whose contact times are worked out
+// by hand; none from the command's or the library's code.
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int status = -1;  ///< exit status; -1 when the command did not exit normally (a crash)
+  std::string out, err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  if (!text.empty() && text.back() == separator) parts.emplace_back();
+  return parts;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::string shell_quote(const std::string& s) {
+  std::string quoted = "'";
+  for (const char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// The truth column of a benchmark CSV file, one value per query (8 rows each), read
+// independently of exactccd's reader.
+std::vector<bool> read_truth_column(const fs::path& path) {
+  std::vector<bool> truth;
+  std::size_t rows = 0;
+  for (const std::string& line : lines_of(read_text(path))) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const bool value = std::stoi(line.substr(line.rfind(',') + 1)) == 1;
+    if (rows++ % 8 == 0)
+      truth.push_back(value);
+    else
+      EXPECT_EQ(truth.back(), value) << path << " row " << rows;
+  }
+  EXPECT_EQ(rows % 8, 0u) << path;
+  return truth;
+}
+
+// Every query file of the sample set (key: the canonical path) with its truth column.
+std::map<std::string, std::vector<bool>> sample_truth() {
+  std::map<std::string, std::vector<bool>> files;
+  for (const auto& entry : fs::recursive_directory_iterator(EXACTCCD_SAMPLE_QUERIES)) {
+    const fs::path& p = entry.path();
+    const fs::path folder = p.parent_path().filename();
+    if (p.extension() == ".csv" && (folder == "vertex-face" || folder == "edge-edge"))
+      files[fs::weakly_canonical(p).string()] = read_truth_column(p);
+  }
+  return files;
+}
+
+const fs::path kSampleFile =
+    fs::path(EXACTCCD_SAMPLE_QUERIES) / "unit-tests" / "vertex-face" / "data_0_1.csv";
+
+// Hand-made vertex-face queries: the static triangle a=(0,0,0), b=(1,0,0), c=(0,1,0) and the
+// vertex p moving from (1/4,1/4,1) to (1/4,1/4,z1), so p_z(t) = 1 + t (z1 - 1): it crosses
+// the plane z=0 at t* = 1 / (1 - z1) at (1/4,1/4,0), inside the triangle. z1 = -1: t* = 1/2;
+// z1 = -2: t* = 1/3; z1 = 1: p stays at height 1, no contact.
+std::string falling_vertex_query(int z1, int truth) {
+  const std::string t = "," + std::to_string(truth) + "\n";
+  const std::string a = "0,1,0,1,0,1" + t, b = "1,1,0,1,0,1" + t, c = "0,1,1,1,0,1" + t;
+  return "1,4,1,4,1,1" + t + a + b + c + "1,4,1,4," + std::to_string(z1) + ",1" + t + a + b + c;
+}
+const std::string kHalfThirdNever =  // t* = 1/2, t* = 1/3, no contact (truth 1, 1, 0)
+    falling_vertex_query(-1, 1) + falling_vertex_query(-2, 1) + falling_vertex_query(1, 0);
+
+// `text` with its 1-based line `line_no` replaced by `replacement`.
+std::string replace_line(const std::string& text, std::size_t line_no,
+                         const std::string& replacement) {
+  std::vector<std::string> lines = lines_of(text);
+  lines.at(line_no - 1) = replacement;
+  std::string joined;
+  for (const std::string& line : lines) joined += line + "\n";
+  return joined;
+}
+
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::random_device random;
+    for (int attempt = 0; dir_.empty() && attempt < 100; ++attempt) {
+      const fs::path candidate =
+          fs::temp_directory_path() /
+          ("exactccd-cli-test-" + std::to_string(getpid()) + "-" + std::to_string(random()));
+      if (fs::create_directory(candidate)) dir_ = candidate;
+    }
+    ASSERT_FALSE(dir_.empty());
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    if (!dir_.empty()) fs::remove_all(dir_, ignored);
+  }
+
+  fs::path write_file(const std::string& relative, const std::string& text) {
+    const fs::path path = dir_ / relative;
+    fs::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  RunResult run(const std::vector<std::string>& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    std::string command = shell_quote(EXACTCCD_CLI);
+    for (const std::string& arg : args) command += " " + shell_quote(arg);
+    command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
+    const int raw = std::system(command.c_str());
+    RunResult result;
+    result.status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    result.out = read_text(out);
+    result.err = read_text(err);
+    return result;
+  }
+
+  // Bad input: exit status 2, nothing on stdout, one line on stderr naming `expected` parts.
+  static void expect_bad_input(const RunResult& r, const std::vector<std::string>& expected) {
+    EXPECT_EQ(r.status, 2) << "stderr: " << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("exactccd: ", 0), 0u) << r.err;
+    for (const std::string& part : expected)
+      EXPECT_NE(r.err.find(part), std::string::npos) << "missing '" << part << "' in: " << r.err;
+  }
+
+  // `check` on a vertex-face file holding `text`; the error must name bad.csv:line.
+  void expect_check_rejects(const std::string& text, std::size_t line) {
+    const fs::path file = write_file("vertex-face/bad.csv", text);
+    expect_bad_input(run({"check", file.string()}),
+                     {file.string() + ":" + std::to_string(line) + ":"});
+  }
+
+  // `grade` of `answers` for the three hand-made queries.
+  RunResult grade(const std::string& answers, const std::vector<std::string>& extra = {}) {
+    const fs::path queries = write_file("vertex-face/queries.csv", kHalfThirdNever);
+    const fs::path answers_file = write_file("answers.txt", answers);
+    std::vector<std::string> args = {"grade",          "--json",    "--queries",
+                                     queries.string(), "--answers", answers_file.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run(args);
+  }
+
+  fs::path dir_;
+};
+
+nlohmann::json parse_json(const RunResult& r) {
+  try {
+    return nlohmann::json::parse(r.out);
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "stdout is not JSON (" << e.what() << "): " << r.out << r.err;
+    return nlohmann::json::object();
+  }
+}
+
+std::vector<std::size_t> indices(const nlohmann::json& j, const char* key) {
+  return j.at(key).get<std::vector<std::size_t>>();
+}
+
+// ---- check: bad input ----------------------------------------------------------------------
+
+TEST_F(CliTest, CheckRejectsWrongColumnCount) {
+  expect_check_rejects(replace_line(kHalfThirdNever, 3, "1,1,0,1,0"), 3);
+}
+
+TEST_F(CliTest, CheckRejectsNonIntegerField) {
+  expect_check_rejects(replace_line(kHalfThirdNever, 5, "1,4,1.5,4,-1,1,1"), 5);
+}
+
+TEST_F(CliTest, CheckRejectsZeroDenominator) {
+  expect_check_rejects(replace_line(kHalfThirdNever, 2, "0,1,0,0,0,1,1"), 2);
+}
+
+TEST_F(CliTest, CheckRejectsQueryCutShort) {
+  // 12 rows: the second query stops after 4 of its 8 rows, at the file's last line.
+  const std::vector<std::string> lines = lines_of(kHalfThirdNever);
+  std::string text;
+  for (std::size_t i = 0; i < 12; ++i) text += lines[i] + "\n";
+  expect_check_rejects(text, 12);
+}
+
+TEST_F(CliTest, CheckRejectsTruthDifferingWithinQuery) {
+  expect_check_rejects(replace_line(kHalfThirdNever, 4, "0,1,1,1,0,1,0"), 4);
+}
+
+TEST_F(CliTest, CheckRejectsNanField) {
+  expect_check_rejects(replace_line(kHalfThirdNever, 6, "nan,1,0,1,0,1,1"), 6);
+}
+
+TEST_F(CliTest, CheckRejectsInfField) {
+  expect_check_rejects(replace_line(kHalfThirdNever, 7, "1,1,-inf,1,0,1,1"), 7);
+}
+
+TEST_F(CliTest, CheckRejectsMissingFile) {
+  const fs::path missing = dir_ / "vertex-face" / "missing.csv";
+  expect_bad_input(run({"check", missing.string()}), {missing.string()});
+}
+
+TEST_F(CliTest, CheckRejectsDirectoryWithoutCsvFiles) {
+  write_file("empty/vertex-face/notes.txt", "not a query file\n");
+  write_file("empty/misc/untyped.csv", falling_vertex_query(-1, 1));  // not in a typed folder
+  const fs::path dir = dir_ / "empty";
+  expect_bad_input(run({"check", dir.string()}), {dir.string()});
+}
+
+TEST_F(CliTest, CheckRejectsUnknownQueryTypeUnlessGiven) {
+  const fs::path file = write_file("misc/untyped.csv", falling_vertex_query(-1, 1));
+  expect_bad_input(run({"check", file.string()}), {file.string(), "type"});
+  const RunResult typed = run({"check", "--type", "vf", file.string()});
+  EXPECT_EQ(typed.status, 0) << typed.err;
+  expect_bad_input(run({"check", "--type", "triangle", file.string()}), {"--type"});
+}
+
+TEST_F(CliTest, RejectsTMaxOutsideUnitInterval) {
+  const fs::path file = write_file("vertex-face/q.csv", kHalfThirdNever);
+  const fs::path answers = write_file("answers.txt", "1\n1\n0\n");
+  for (const char* t_max : {"0", "-0.5", "1.5", "nan", "inf"}) {
+    SCOPED_TRACE(t_max);
+    expect_bad_input(run({"check", "--t-max", t_max, file.string()}), {"--t-max"});
+    expect_bad_input(
+        run({"grade", "--t-max", t_max, "--queries", file.string(), "--answers", answers.string()}),
+        {"--t-max"});
+  }
+}
+
+TEST_F(CliTest, RejectsBadCommandLine) {
+  expect_bad_input(run({}), {});
+  expect_bad_input(run({"frobnicate"}), {});
+  expect_bad_input(run({"check"}), {"PATH"});
+  expect_bad_input(run({"grade", "--queries", kSampleFile.string()}), {"--answers"});
+}
+
+TEST_F(CliTest, CheckRejectsUnwritableOutFile) {
+  const fs::path out = dir_ / "no-such-folder" / "out.txt";
+  expect_bad_input(run({"check", "--out", out.string(), kSampleFile.string()}), {out.string()});
+}
+
+// ---- grade: bad input ----------------------------------------------------------------------
+
+TEST_F(CliTest, GradeRejectsMalformedQueriesFile) {
+  const fs::path queries =
+      write_file("vertex-face/bad.csv", replace_line(kHalfThirdNever, 9, "1,4,1,4,x,1,1"));
+  const fs::path answers = write_file("answers.txt", "1\n1\n0\n");
+  expect_bad_input(run({"grade", "--queries", queries.string(), "--answers", answers.string()}),
+                   {queries.string() + ":9:"});
+}
+
+TEST_F(CliTest, GradeRejectsMalformedAnswerLine) {
+  const fs::path answers = dir_ / "answers.txt";
+  for (const char* bad : {"2", "yes", "", "1;0.5", "01", "1 0"}) {
+    SCOPED_TRACE(bad);
+    expect_bad_input(grade(std::string("1\n") + bad + "\n0\n"), {answers.string() + ":2:"});
+  }
+}
+
+TEST_F(CliTest, GradeRejectsToiThatIsNotANumber) {
+  const fs::path answers = dir_ / "answers.txt";
+  for (const char* bad : {"1,abc", "1,", "1,0.5x", "1,0.5,0.6"}) {
+    SCOPED_TRACE(bad);
+    expect_bad_input(grade(std::string(bad) + "\n1\n0\n"), {answers.string() + ":1:"});
+  }
+}
+
+TEST_F(CliTest, GradeRejectsNanOrInfToi) {
+  const fs::path answers = dir_ / "answers.txt";
+  for (const char* bad : {"1,nan", "1,NaN", "1,inf", "1,-inf", "1,infinity", "1,1e999"}) {
+    SCOPED_TRACE(bad);
+    expect_bad_input(grade(std::string("1\n") + bad + "\n0\n"), {answers.string() + ":2:"});
+  }
+}
+
+TEST_F(CliTest, GradeRejectsToiOnNoCollisionLine) {
+  expect_bad_input(grade("1\n1\n0,0.5\n"), {(dir_ / "answers.txt").string() + ":3:"});
+}
+
+TEST_F(CliTest, GradeRejectsTooFewAnswers) {
+  expect_bad_input(grade("1\n1\n"), {(dir_ / "answers.txt").string(), "queries.csv"});
+}
+
+TEST_F(CliTest, GradeRejectsTooManyAnswers) {
+  expect_bad_input(grade("1\n1\n0\n0\n"), {(dir_ / "answers.txt").string() + ":4:"});
+}
+
+TEST_F(CliTest, GradeRejectsMissingAnswersFile) {
+  const fs::path queries = write_file("vertex-face/queries.csv", kHalfThirdNever);
+  const fs::path missing = dir_ / "missing-answers.txt";
+  expect_bad_input(run({"grade", "--queries", queries.string(), "--answers", missing.string()}),
+                   {missing.string()});
+}
+
+// ---- check: results ------------------------------------------------------------------------
+
+TEST_F(CliTest, CheckOneSampleFilePrintsTruthTotals) {
+  const std::vector<bool> truth = read_truth_column(kSampleFile);
+  const std::size_t collide = std::count(truth.begin(), truth.end(), true);
+  ASSERT_GT(collide, 0u);
+  ASSERT_LT(collide, truth.size());  // both outcomes present
+
+  const RunResult r = run({"check", kSampleFile.string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");  // in particular no progress: stderr is not a terminal here
+  std::size_t total_rows = 0;
+  for (const std::string& line : lines_of(r.out)) {
+    // TOTAL and the file's row: queries, collisions, agree, disagree, false_pos, false_neg, µs.
+    std::istringstream fields(line);
+    std::string name;
+    fields >> name;
+    if (name != "TOTAL" && name != kSampleFile.string()) continue;
+    total_rows += name == "TOTAL";
+    std::size_t queries, collisions, agree, disagree, false_pos, false_neg;
+    double micros;
+    ASSERT_TRUE(fields >> queries >> collisions >> agree >> disagree >> false_pos >> false_neg >>
+                micros)
+        << line;
+    EXPECT_EQ(queries, truth.size()) << line;
+    EXPECT_EQ(collisions, collide) << line;
+    EXPECT_EQ(agree, truth.size()) << line;
+    EXPECT_EQ(disagree, 0u) << line;
+    EXPECT_EQ(false_pos, 0u) << line;
+    EXPECT_EQ(false_neg, 0u) << line;
+    EXPECT_GT(micros, 0.0) << line;
+  }
+  EXPECT_EQ(total_rows, 1u) << r.out;
+}
+
+TEST_F(CliTest, CheckJsonOnWholeSampleSetMatchesTruth) {
+  const auto truth = sample_truth();
+  std::size_t queries = 0, collide = 0;
+  for (const auto& [file, values] : truth) {
+    queries += values.size();
+    collide += std::count(values.begin(), values.end(), true);
+  }
+  // The sample set's README: 5,029 queries, 329 of them collide.
+  ASSERT_EQ(queries, 5029u);
+  ASSERT_EQ(collide, 329u);
+
+  const RunResult r = run({"check", "--json", EXACTCCD_SAMPLE_QUERIES});
+  EXPECT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = parse_json(r);
+  EXPECT_EQ(j.value("queries", 0u), queries);
+  EXPECT_EQ(j.value("collisions", 0u), collide);
+  EXPECT_EQ(j.value("false_positives", 1u), 0u);
+  EXPECT_EQ(j.value("false_negatives", 1u), 0u);
+  EXPECT_GT(j.value("seconds", 0.0), 0.0);
+  ASSERT_TRUE(j.contains("files") && j["files"].is_array()) << r.out;
+  EXPECT_EQ(j["files"].size(), truth.size());
+  for (const nlohmann::json& f : j["files"]) {
+    const std::string name = fs::weakly_canonical(f.value("file", "")).string();
+    ASSERT_EQ(truth.count(name), 1u) << name;
+    const std::vector<bool>& values = truth.at(name);
+    EXPECT_EQ(f.value("queries", 0u), values.size()) << name;
+    EXPECT_EQ(f.value("collisions", 0u),
+              static_cast<std::size_t>(std::count(values.begin(), values.end(), true)))
+        << name;
+    EXPECT_EQ(f.value("false_positives", 1u), 0u) << name;
+    EXPECT_EQ(f.value("false_negatives", 1u), 0u) << name;
+  }
+}
+
+TEST_F(CliTest, CheckOutWritesOneWellFormedLinePerQuery) {
+  const auto truth = sample_truth();
+  const fs::path out = dir_ / "results.csv";
+  const RunResult r = run({"check", "--out", out.string(), EXACTCCD_SAMPLE_QUERIES});
+  EXPECT_EQ(r.status, 0) << r.err;
+
+  const std::vector<std::string> lines = lines_of(read_text(out));
+  EXPECT_EQ(lines.size(), 5029u);
+  std::map<std::string, std::size_t> next_index;  // indices run 0, 1, ... within each file
+  std::size_t ones = 0;
+  for (const std::string& line : lines) {
+    const std::vector<std::string> f = split(line, ',');
+    ASSERT_EQ(f.size(), 5u) << line;
+    const std::string name = fs::weakly_canonical(f[0]).string();
+    ASSERT_EQ(truth.count(name), 1u) << line;
+    const std::size_t index = next_index[name]++;
+    ASSERT_EQ(f[1], std::to_string(index)) << line;
+    ASSERT_TRUE(f[2] == "0" || f[2] == "1") << line;
+    const bool collides = f[2] == "1";
+    EXPECT_EQ(collides, truth.at(name).at(index)) << line;
+    if (!collides) {
+      EXPECT_EQ(f[3], "") << line;
+      EXPECT_EQ(f[4], "") << line;
+      continue;
+    }
+    ++ones;
+    std::size_t used_lo = 0, used_hi = 0;
+    const double lo = std::stod(f[3], &used_lo), hi = std::stod(f[4], &used_hi);
+    EXPECT_EQ(used_lo, f[3].size()) << line;
+    EXPECT_EQ(used_hi, f[4].size()) << line;
+    EXPECT_TRUE(0.0 <= lo && lo <= hi && hi <= 1.0) << line;
+    // toi_width 0: the tightest enclosure, one double or two consecutive doubles.
+    EXPECT_TRUE(hi == lo || hi == std::nextafter(lo, 2.0)) << line;
+  }
+  EXPECT_EQ(ones, 329u);
+  for (const auto& [name, values] : truth) EXPECT_EQ(next_index[name], values.size()) << name;
+}
+
+TEST_F(CliTest, CheckReportsDisagreementsWithTruthColumn) {
+  // The falling vertex meets the triangle at t = 1/2 but is labelled 0; the resting one never
+  // does but is labelled 1.
+  const fs::path file = write_file("vertex-face/mislabelled.csv",
+                                   falling_vertex_query(-1, 0) + falling_vertex_query(1, 1));
+  const RunResult r = run({"check", "--json", file.string()});
+  EXPECT_EQ(r.status, 1) << r.err;
+  const nlohmann::json j = parse_json(r);
+  EXPECT_EQ(j.value("queries", 0u), 2u);
+  EXPECT_EQ(j.value("collisions", 0u), 1u);
+  EXPECT_EQ(j.value("false_positives", 0u), 1u);
+  EXPECT_EQ(j.value("false_negatives", 0u), 1u);
+}
+
+TEST_F(CliTest, CheckTMaxClosesTheIntervalAtTMax) {
+  // Contact at exactly t = 1/2 (labelled 0): outside [0, 1/4], inside the closed [0, 1/2].
+  const fs::path file = write_file("vertex-face/half.csv", falling_vertex_query(-1, 0));
+  const RunResult before = run({"check", "--json", "--t-max", "0.25", file.string()});
+  EXPECT_EQ(before.status, 0) << before.err;
+  EXPECT_EQ(parse_json(before).value("collisions", 1u), 0u);
+  const RunResult at = run({"check", "--json", "--t-max", "0.5", file.string()});
+  EXPECT_EQ(at.status, 1) << at.err;
+  EXPECT_EQ(parse_json(at).value("collisions", 0u), 1u);
+}
+
+TEST_F(CliTest, HelpDocumentsExitStatuses) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"--help"}, {"check", "--help"}, {"grade", "--help"}}) {
+    const RunResult r = run(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("Exit status"), std::string::npos) << r.out;
+  }
+}
+
+// ---- grade: results ------------------------------------------------------------------------
+
+TEST_F(CliTest, GradeAnswersFromTruthColumnAreAllCorrect) {
+  const std::vector<bool> truth = read_truth_column(kSampleFile);
+  std::string answers;
+  for (const bool t : truth) answers += t ? "1\n" : "0\n";
+  const fs::path answers_file = write_file("answers.txt", answers);
+  const RunResult r = run(
+      {"grade", "--json", "--queries", kSampleFile.string(), "--answers", answers_file.string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = parse_json(r);
+  EXPECT_EQ(j.value("queries", 0u), truth.size());
+  EXPECT_EQ(j.value("false_positives", 1u), 0u);
+  EXPECT_EQ(j.value("false_negatives", 1u), 0u);
+  EXPECT_EQ(j.value("non_conservative_tois", 1u), 0u);
+}
+
+TEST_F(CliTest, GradeReportsFlippedAnswerAtItsIndex) {
+  const std::vector<bool> truth = read_truth_column(kSampleFile);
+  for (const bool flipped_truth : {true, false}) {
+    SCOPED_TRACE(flipped_truth);
+    // Flip the last query whose truth is `flipped_truth` (not index 0: indices are 0-based).
+    const std::size_t k = truth.rend() - std::find(truth.rbegin(), truth.rend(), flipped_truth) - 1;
+    ASSERT_LT(k, truth.size());
+    std::string answers;
+    for (std::size_t i = 0; i < truth.size(); ++i) answers += truth[i] != (i == k) ? "1\n" : "0\n";
+    const fs::path answers_file = write_file("answers.txt", answers);
+    const RunResult r = run(
+        {"grade", "--json", "--queries", kSampleFile.string(), "--answers", answers_file.string()});
+    EXPECT_EQ(r.status, 1) << r.err;
+    const nlohmann::json j = parse_json(r);
+    const std::vector<std::size_t> expected = {k}, none = {};
+    EXPECT_EQ(indices(j, "false_negative_indices"), flipped_truth ? expected : none);
+    EXPECT_EQ(indices(j, "false_positive_indices"), flipped_truth ? none : expected);
+    EXPECT_EQ(j.value("false_negatives", 9u), flipped_truth ? 1u : 0u);
+    EXPECT_EQ(j.value("false_positives", 9u), flipped_truth ? 0u : 1u);
+    EXPECT_EQ(j.value("non_conservative_tois", 9u), 0u);
+  }
+}
+
+TEST_F(CliTest, GradeTextListsFirstTwentyIndicesAndCount) {
+  const std::vector<bool> truth = read_truth_column(kSampleFile);
+  std::vector<std::size_t> colliding;
+  for (std::size_t i = 0; i < truth.size(); ++i)
+    if (truth[i]) colliding.push_back(i);
+  ASSERT_GT(colliding.size(), 20u);
+  std::string all_zero;
+  for (std::size_t i = 0; i < truth.size(); ++i) all_zero += "0\n";
+  const fs::path answers_file = write_file("answers.txt", all_zero);
+  const RunResult r =
+      run({"grade", "--queries", kSampleFile.string(), "--answers", answers_file.string()});
+  EXPECT_EQ(r.status, 1) << r.err;
+  std::string expected = "false negatives: " + std::to_string(colliding.size()) + "  (queries";
+  for (std::size_t i = 0; i < 20; ++i) expected += " " + std::to_string(colliding[i]);
+  expected += " ... and " + std::to_string(colliding.size() - 20) + " more)";
+  EXPECT_NE(r.out.find(expected + "\n"), std::string::npos) << "want: " << expected << "\n"
+                                                            << r.out;
+}
+
+TEST_F(CliTest, GradeFlagsOnlyTheToiLaterThanContact) {
+  // t* = 1/2 exactly: a toi of 0.5 or 0.25 is conservative, 1 or the next double after 0.5 not.
+  for (const char* ok : {"1,0.5", "1,0.25", "1,0", "1,-0"}) {
+    SCOPED_TRACE(ok);
+    const RunResult r = grade(std::string(ok) + "\n1\n0\n");
+    EXPECT_EQ(r.status, 0) << r.err << r.out;
+    EXPECT_EQ(parse_json(r).value("non_conservative_tois", 9u), 0u);
+  }
+  char just_after_half[64];
+  std::snprintf(just_after_half, sizeof just_after_half, "1,%.17g", std::nextafter(0.5, 1.0));
+  for (const std::string late :
+       {std::string("1,1"), std::string("1,0.75"), std::string(just_after_half)}) {
+    SCOPED_TRACE(late);
+    const RunResult r = grade(late + "\n1\n0\n");
+    EXPECT_EQ(r.status, 1) << r.err;
+    const nlohmann::json j = parse_json(r);
+    EXPECT_EQ(indices(j, "non_conservative_toi_indices"), std::vector<std::size_t>{0});
+    EXPECT_EQ(j.value("false_positives", 9u), 0u);
+    EXPECT_EQ(j.value("false_negatives", 9u), 0u);
+  }
+}
+
+TEST_F(CliTest, GradeJudgesToiAroundNonDyadicContactExactly) {
+  // t* = 1/3 is no double: the largest double below it is conservative, the next one is not.
+  const mpq_class third(1, 3);
+  double below = 1.0 / 3.0;
+  if (mpq_class(below) > third) below = std::nextafter(below, 0.0);
+  const double above = std::nextafter(below, 1.0);
+  ASSERT_LT(mpq_class(below), third);
+  ASSERT_GT(mpq_class(above), third);
+  char below_line[64], above_line[64];
+  std::snprintf(below_line, sizeof below_line, "1,%.17g", below);
+  std::snprintf(above_line, sizeof above_line, "1,%.17g", above);
+
+  const RunResult ok = grade(std::string("1\n") + below_line + "\n0\n");
+  EXPECT_EQ(ok.status, 0) << ok.err << ok.out;
+  const RunResult late = grade(std::string("1\n") + above_line + "\n0\n");
+  EXPECT_EQ(late.status, 1) << late.err;
+  EXPECT_EQ(indices(parse_json(late), "non_conservative_toi_indices"), std::vector<std::size_t>{1});
+}
+
+TEST_F(CliTest, GradeUsesTMax) {
+  // With t_max = 0.4 the contact at 1/2 is out of range and the one at 1/3 still in.
+  const RunResult right = grade("0\n1,0.3\n0\n", {"--t-max", "0.4"});
+  EXPECT_EQ(right.status, 0) << right.err << right.out;
+  const RunResult wrong = grade("1\n1\n0\n", {"--t-max", "0.4"});
+  EXPECT_EQ(wrong.status, 1) << wrong.err;
+  EXPECT_EQ(indices(parse_json(wrong), "false_positive_indices"), std::vector<std::size_t>{0});
+}
+
+}  // namespace

@@ -1,0 +1,34 @@
+#include "cli_common.hpp"
+
+#include <cstdio>
+
+#include "exactccd/query_file.hpp"
+
+namespace exactccd::cli {
+
+std::optional<QueryType> parse_type_name(const std::string& name) {
+  if (name == "vf" || name == "vertex-face") return QueryType::vertex_face;
+  if (name == "ee" || name == "edge-edge") return QueryType::edge_edge;
+  return std::nullopt;
+}
+
+QueryType resolve_query_type(const std::string& file, const std::optional<QueryType>& forced) {
+  if (forced) return *forced;
+  if (const auto type = query_type_from_path(file)) return *type;
+  throw InputError(file, 0,
+                   "unknown query type: no 'vertex-face' or 'edge-edge' folder in the path "
+                   "(pass --type vf or --type ee)");
+}
+
+void validate_t_max(double t_max) {
+  if (!(t_max > 0.0 && t_max <= 1.0))
+    throw UsageError("--t-max must lie in (0, 1], got " + format_double(t_max));
+}
+
+std::string format_double(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+}  // namespace exactccd::cli

@@ -1,0 +1,39 @@
+// Pieces shared by the `exactccd` subcommands: exit statuses, usage errors, option checks.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "exactccd/rational_query.hpp"
+
+namespace exactccd::cli {
+
+/// Exit statuses of the `exactccd` command (documented in its --help text).
+enum ExitStatus : int {
+  kExitAgree = 0,     ///< everything ran and every answer / truth value is right
+  kExitDisagree = 1,  ///< some result disagrees (check: with the truth column; grade: answers)
+  kExitBadInput = 2,  ///< bad command line or malformed input file: nothing judged
+  kExitInternal = 3,  ///< unexpected failure (a bug or out of memory)
+};
+
+/// A bad command line (as opposed to a bad file, which is an exactccd::InputError).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// "vf" / "vertex-face" or "ee" / "edge-edge", as accepted by --type; nullopt otherwise.
+std::optional<QueryType> parse_type_name(const std::string& name);
+
+/// The type of the queries in `file`: `forced` when given (--type), else from the folder name.
+/// Throws InputError naming the file when neither tells.
+QueryType resolve_query_type(const std::string& file, const std::optional<QueryType>& forced);
+
+/// Throws UsageError unless t_max lies in (0, 1] (NaN rejected).
+void validate_t_max(double t_max);
+
+/// `value` with 17 significant digits (%.17g): reading it back gives the same double.
+std::string format_double(double value);
+
+}  // namespace exactccd::cli

@@ -1,0 +1,23 @@
+// `exactccd grade`: judge another CCD code's answers against the exact decision.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "exactccd/rational_query.hpp"
+
+namespace exactccd::cli {
+
+struct GradeOptions {
+  std::string queries_path;  ///< one benchmark CSV file
+  std::string answers_path;  ///< see answers_file.hpp
+  std::optional<QueryType> type;
+  double t_max = 1.0;
+  bool json = false;
+};
+
+/// Returns 0 when every answer is right and every toi conservative, 1 otherwise. Throws
+/// InputError / UsageError for bad input.
+int run_grade(const GradeOptions& options);
+
+}  // namespace exactccd::cli
