@@ -3,6 +3,7 @@
 #include "filters/ccd_filters.hpp"
 
 #include "core/predicates/coplanarity_cubic.hpp"
+#include "filters/coplanarity_semistatic.hpp"
 #include "filters/swept_box_culling.hpp"
 
 namespace exactccd::filters {
@@ -107,29 +108,39 @@ bool edge_edge_culled(const EdgeEdgeQuery& q) {
                               {&q.eb0_t0, &q.eb1_t0, &q.eb0_t1, &q.eb1_t1});
 }
 
+namespace {
+FilterOutcome no_contact() {
+  FilterOutcome none;
+  none.verdict = FilterOutcome::Verdict::no_contact;
+  return none;
+}
+}  // namespace
+
 FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options) {
+  // Semi-static stage (round to nearest, no guard needed): over [0, 1] only.
+  if (options.t_max == 1.0 &&
+      coplanarity_cubic_root_free_semistatic(q.b_t0 - q.a_t0, q.b_t1 - q.a_t1, q.c_t0 - q.a_t0,
+                                             q.c_t1 - q.a_t1, q.p_t0 - q.a_t0, q.p_t1 - q.a_t1))
+    return no_contact();
   RoundingGuard guard;
   const auto p = moving(q.p_t0, q.p_t1), a = moving(q.a_t0, q.a_t1), b = moving(q.b_t0, q.b_t1),
              c = moving(q.c_t0, q.c_t1);
   const auto cubic = predicates::vertex_face_coplanarity_cubic(p, a, b, c);
-  if (cubic_certainly_root_free(cubic, options.t_max)) {
-    FilterOutcome none;
-    none.verdict = FilterOutcome::Verdict::no_contact;
-    return none;
-  }
+  if (cubic_certainly_root_free(cubic, options.t_max)) return no_contact();
   return cubic_filter(cubic, options.t_max, options.toi_width, VertexFaceInclusion(p, a, b, c));
 }
 
 FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
+  if (options.t_max == 1.0 &&
+      coplanarity_cubic_root_free_semistatic(q.ea1_t0 - q.ea0_t0, q.ea1_t1 - q.ea0_t1,
+                                             q.eb0_t0 - q.ea0_t0, q.eb0_t1 - q.ea0_t1,
+                                             q.eb1_t0 - q.ea0_t0, q.eb1_t1 - q.ea0_t1))
+    return no_contact();
   RoundingGuard guard;
   const auto a0 = moving(q.ea0_t0, q.ea0_t1), a1 = moving(q.ea1_t0, q.ea1_t1),
              b0 = moving(q.eb0_t0, q.eb0_t1), b1 = moving(q.eb1_t0, q.eb1_t1);
   const auto cubic = predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1);
-  if (cubic_certainly_root_free(cubic, options.t_max)) {
-    FilterOutcome none;
-    none.verdict = FilterOutcome::Verdict::no_contact;
-    return none;
-  }
+  if (cubic_certainly_root_free(cubic, options.t_max)) return no_contact();
   return cubic_filter(cubic, options.t_max, options.toi_width, EdgeEdgeInclusion(a0, a1, b0, b1));
 }
 

@@ -6,6 +6,8 @@
 #include <string>
 #include <tuple>
 
+#include <CGAL/FPU.h>
+
 #include "core/src/float_only_ccd.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exact/integer_cubic.hpp"
@@ -124,7 +126,12 @@ bool all_finite(const EdgeEdgeQuery& q) {
 
 }  // namespace
 
+/// The float stages assume round-to-nearest (the semi-static bounds, float_only); the caller's
+/// mode is restored on every return. PROOF: proofs/filters.md#interval-enclosure
+using RoundToNearest = CGAL::Protect_FPU_rounding<true>;
+
 CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& options) {
+  const RoundToNearest nearest(CGAL_FE_TONEAREST);
   validate(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   switch (options.mode) {
@@ -137,6 +144,7 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& option
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
+  const RoundToNearest nearest(CGAL_FE_TONEAREST);
   validate(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   switch (options.mode) {
