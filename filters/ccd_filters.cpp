@@ -116,7 +116,8 @@ FilterOutcome no_contact() {
 }
 }  // namespace
 
-FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options) {
+FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options,
+                                 ExactAtDoubles& exact) {
   // Semi-static stage (round to nearest, no guard needed): over [0, 1] only.
   if (options.t_max == 1.0 &&
       coplanarity_cubic_root_free_semistatic(q.b_t0 - q.a_t0, q.b_t1 - q.a_t1, q.c_t0 - q.a_t0,
@@ -127,10 +128,12 @@ FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& opt
              c = moving(q.c_t0, q.c_t1);
   const auto cubic = predicates::vertex_face_coplanarity_cubic(p, a, b, c);
   if (cubic_certainly_root_free(cubic, options.t_max)) return no_contact();
-  return cubic_filter(cubic, options.t_max, options.toi_width, VertexFaceInclusion(p, a, b, c));
+  return cubic_filter(cubic, options.t_max, options.toi_width, VertexFaceInclusion(p, a, b, c),
+                      exact);
 }
 
-FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
+FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
+                               ExactAtDoubles& exact) {
   if (options.t_max == 1.0 &&
       coplanarity_cubic_root_free_semistatic(q.ea1_t0 - q.ea0_t0, q.ea1_t1 - q.ea0_t1,
                                              q.eb0_t0 - q.ea0_t0, q.eb0_t1 - q.ea0_t1,
@@ -141,7 +144,8 @@ FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options
              b0 = moving(q.eb0_t0, q.eb0_t1), b1 = moving(q.eb1_t0, q.eb1_t1);
   const auto cubic = predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1);
   if (cubic_certainly_root_free(cubic, options.t_max)) return no_contact();
-  return cubic_filter(cubic, options.t_max, options.toi_width, EdgeEdgeInclusion(a0, a1, b0, b1));
+  return cubic_filter(cubic, options.t_max, options.toi_width, EdgeEdgeInclusion(a0, a1, b0, b1),
+                      exact);
 }
 
 }  // namespace exactccd::filters

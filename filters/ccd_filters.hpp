@@ -11,8 +11,11 @@ namespace exactccd::filters {
 bool vertex_face_culled(const VertexFaceQuery& q);
 bool edge_edge_culled(const EdgeEdgeQuery& q);
 
-/// The cubic filter on finite input; options already validated.
-FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options);
-FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options);
+/// The semi-static and interval cubic filters on finite input; options already validated.
+/// `exact` is consulted only where the interval tests cannot decide.
+FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options,
+                                 ExactAtDoubles& exact);
+FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
+                               ExactAtDoubles& exact);
 
 }  // namespace exactccd::filters

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include "core/predicates/motion.hpp"
 #include "filters/interval.hpp"
@@ -21,6 +22,25 @@ struct FilterOutcome {
   double toi_lo = 0.0, toi_hi = 0.0;
   /// The bracket meets the requested width (the tightest pair of doubles for width 0).
   bool toi_final = false;
+  /// Exact answers at double times (ExactAtDoubles) were consulted.
+  bool exact_used = false;
+};
+
+/// Exact answers at double times, consulted only where the interval tests cannot decide
+/// (the default path implements it with exact integer arithmetic, exact/integer_query.hpp).
+/// Must not depend on the rounding mode.
+class ExactAtDoubles {
+ public:
+  /// The exact sign of the coplanarity cubic at the double t in [0, t_max].
+  virtual int cubic_sign_at(double t) = 0;
+  /// Exact contact test at a double t where the cubic vanishes.
+  virtual bool contact_at(double t) = 0;
+  /// The tightest pair of doubles around the only, simple root of the cubic in [lo, hi]
+  /// (certain opposite non-zero signs at lo and hi); equal when the root is a double.
+  virtual std::pair<double, double> bisect_root(double lo, double hi) = 0;
+
+ protected:
+  ~ExactAtDoubles() = default;
 };
 
 /// `Inclusion` provides, for a time interval T (an Interval inside [0, t_max]):
@@ -29,7 +49,7 @@ struct FilterOutcome {
 /// Must be called with a RoundingGuard held.
 template <class Inclusion>
 FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
-                           double toi_width, const Inclusion& inclusion);
+                           double toi_width, const Inclusion& inclusion, ExactAtDoubles& exact);
 
 /// True when all four Bernstein coefficients of the cubic on [0, t_max] are certainly
 /// non-zero with one sign: no coplanar instant, hence no contact. Needs a RoundingGuard.

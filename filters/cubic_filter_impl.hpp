@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <tuple>
 #include <limits>
 
 #include "filters/cubic_bernstein.hpp"
@@ -21,13 +22,17 @@ inline int strict_sign_of_all(const Bernstein3<Interval>& b) {
   return s;
 }
 
+/// The derivative's Bernstein coefficients (3 (b[i+1] - b[i])) all of one certain strict sign.
+inline bool certainly_monotone(const Bernstein3<Interval>& b) {
+  const int d = certain_strict_sign(b[1] - b[0]);
+  return d != 0 && certainly_has_sign(b[2] - b[1], d) && certainly_has_sign(b[3] - b[2], d);
+}
+
 /// Exactly one simple root in the parameter interval: certain opposite signs at its ends and
 /// a derivative (Bernstein coefficients b[i+1] - b[i]) of one certain strict sign.
 inline bool certainly_one_root(const Bernstein3<Interval>& b) {
   const int s0 = certain_strict_sign(b[0]);
-  if (s0 == 0 || !certainly_has_sign(b[3], -s0)) return false;
-  const int d = certain_strict_sign(b[1] - b[0]);
-  return d != 0 && certainly_has_sign(b[2] - b[1], d) && certainly_has_sign(b[3] - b[2], d);
+  return s0 != 0 && certainly_has_sign(b[3], -s0) && certainly_monotone(b);
 }
 
 /// [down(t_max * s0), up(t_max * s1)] under upward rounding.
@@ -86,8 +91,31 @@ inline bool cubic_certainly_root_free(const predicates::FixedPoly<Interval, 3>& 
 
 template <class Inclusion>
 FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
-                           double toi_width, const Inclusion& inclusion) {
+                           double toi_width, const Inclusion& inclusion, ExactAtDoubles& exact) {
   using detail::kMaxSubdivisionDepth;
+  FilterOutcome out;  // uncertain until decided
+  auto contact_at_double = [&](double t) {
+    out.verdict = FilterOutcome::Verdict::contact;
+    out.toi_lo = out.toi_hi = t;
+    out.toi_final = true;
+    return out;
+  };
+
+  // The ends of [0, t_max] as exact roots: a contact at t = 0 is the first one; a root at an
+  // end is excluded from the nodes' single-root test below, so it is decided here exactly.
+  bool zero_at_start = false, zero_at_end = false;
+  if (certain_strict_sign(cubic.c[0]) == 0) {
+    out.exact_used = true;
+    if (exact.cubic_sign_at(0.0) == 0) {
+      if (exact.contact_at(0.0)) return contact_at_double(0.0);
+      zero_at_start = true;
+    }
+  }
+  if (certain_strict_sign(predicates::evaluate(cubic, Interval(t_max))) == 0) {
+    out.exact_used = true;
+    zero_at_end = exact.cubic_sign_at(t_max) == 0;
+  }
+
   struct Node {
     Bernstein3<Interval> b;
     double s0, s1;
@@ -98,23 +126,53 @@ FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, doub
   Node stack[kMaxSubdivisionDepth + 2];
   int top = 0;
   stack[top++] = Node{cubic_bernstein(cubic, Interval(t_max)), 0.0, 1.0, 0};
-  FilterOutcome uncertain;
   while (top > 0) {
     const Node node = stack[--top];
     if (detail::strict_sign_of_all(node.b) != 0) continue;  // no coplanar instant here
     const Interval T = detail::time_enclosure(t_max, node.s0, node.s1);
     if (inclusion.excluded(T)) continue;
-    if (detail::certainly_one_root(node.b) && inclusion.certainly_included(T)) {
-      // Contact at the node's only root; earlier nodes were all excluded. Re-certify the
-      // bracket on the rounded-out time interval T in the power basis.
+    const bool root_at_start = zero_at_start && node.s0 == 0.0;
+    const bool root_at_end = zero_at_end && node.s1 == 1.0;
+    if (root_at_start || root_at_end) {
+      if (detail::certainly_monotone(node.b)) {
+        // The node's only root is its end point, whose contact is decided exactly.
+        if (root_at_start) continue;  // no contact at t = 0 (checked above)
+        if (exact.contact_at(t_max)) return contact_at_double(t_max);
+        continue;
+      }
+    } else if (detail::certainly_one_root(node.b)) {
+      // The node's only root r is its only coplanar instant; earlier nodes were all excluded.
+      // Re-certify the bracket on the rounded-out time interval T in the power basis.
       const double lo = T.inf(), hi = T.sup();
       const int s_lo = certain_strict_sign(predicates::evaluate(cubic, Interval(lo)));
       const int s_hi = certain_strict_sign(predicates::evaluate(cubic, Interval(hi)));
       const int d = certain_strict_sign(predicates::evaluate(predicates::derivative(cubic), T));
-      if (s_lo == 0 || s_hi != -s_lo || d == 0) return uncertain;
-      return detail::refine_bracket(cubic, lo, hi, s_hi, toi_width);
+      if (s_lo != 0 && s_hi == -s_lo && d != 0) {
+        if (inclusion.certainly_included(T)) {
+          const bool used = out.exact_used;
+          out = detail::refine_bracket(cubic, lo, hi, s_hi, toi_width);
+          out.exact_used = used;
+          return out;
+        }
+        // Undecided at r: narrow the bracket around r and try again, then decide exactly.
+        const FilterOutcome narrow = detail::refine_bracket(cubic, lo, hi, s_hi, 0.0);
+        const Interval R(narrow.toi_lo, narrow.toi_hi);
+        if (inclusion.excluded(R)) continue;
+        if (inclusion.certainly_included(R)) {
+          const bool used = out.exact_used;
+          out = detail::refine_bracket(cubic, narrow.toi_lo, narrow.toi_hi, s_hi, toi_width);
+          out.exact_used = used;
+          return out;
+        }
+        out.exact_used = true;
+        double r_lo = narrow.toi_lo, r_hi = narrow.toi_hi;
+        if (r_lo != r_hi) std::tie(r_lo, r_hi) = exact.bisect_root(r_lo, r_hi);
+        if (r_lo != r_hi) return out;  // r is not a double: uncertain
+        if (exact.contact_at(r_lo)) return contact_at_double(r_lo);
+        continue;  // the node's only coplanar instant is no contact
+      }
     }
-    if (node.depth == kMaxSubdivisionDepth) return uncertain;
+    if (node.depth == kMaxSubdivisionDepth) return out;  // uncertain
     Node left, right;
     de_casteljau_halves(node.b, left.b, right.b);
     const double mid = (node.s0 + node.s1) / 2;  // dyadic: exact
@@ -123,9 +181,8 @@ FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, doub
     stack[top++] = right;
     stack[top++] = left;
   }
-  FilterOutcome none;
-  none.verdict = FilterOutcome::Verdict::no_contact;
-  return none;
+  out.verdict = FilterOutcome::Verdict::no_contact;
+  return out;
 }
 
 }  // namespace exactccd::filters

@@ -1,6 +1,7 @@
 // Inclusion tests at one instant t of coplanar moving primitives, written once over the
-// number type. `sign_at(q)` returns the sign (-1, 0, +1) of the polynomial q (degree <= 2)
-// at the instant under test; the exact path evaluates it at an algebraic time exactly.
+// number type. A Point is a Vec3 of FixedPoly<NT, D> (a moving point, D = 1, or a position at
+// a fixed time, D = 0). `sign_at(q)` returns the sign (-1, 0, +1) of the polynomial q at the
+// instant under test; the exact path evaluates it at an algebraic time exactly.
 // PROOF: proofs/exact_ccd.md#inclusion-at-an-instant
 #pragma once
 
@@ -10,9 +11,9 @@ namespace exactccd::predicates {
 
 /// p on the closed segment [x, y] (x == y allowed): cross(y - x, p - x) = 0 and
 /// (p - x).(p - y) <= 0. PROOF: proofs/exact_ccd.md#lemma-point-on-segment
-template <class NT, class SignAt>
-bool point_on_segment_at(const MovingPoint<NT>& p, const MovingPoint<NT>& x,
-                         const MovingPoint<NT>& y, SignAt&& sign_at) {
+template <class Point, class SignAt>
+bool point_on_segment_at(const Point& p, const Point& x,
+                         const Point& y, SignAt&& sign_at) {
   const auto n = cross(y - x, p - x);
   if (sign_at(n.x) != 0 || sign_at(n.y) != 0 || sign_at(n.z) != 0) return false;
   return sign_at(dot(p - x, p - y)) <= 0;
@@ -22,9 +23,9 @@ bool point_on_segment_at(const MovingPoint<NT>& p, const MovingPoint<NT>& x,
 /// Non-degenerate triangle: exact orientation signs in a projection along an axis where the
 /// normal does not vanish. Degenerate triangle (a segment or a point): the union of its edges.
 /// PROOF: proofs/exact_ccd.md#lemma-point-in-triangle
-template <class NT, class SignAt>
-bool point_in_triangle_at(const MovingPoint<NT>& p, const MovingPoint<NT>& a,
-                          const MovingPoint<NT>& b, const MovingPoint<NT>& c, SignAt&& sign_at) {
+template <class Point, class SignAt>
+bool point_in_triangle_at(const Point& p, const Point& a,
+                          const Point& b, const Point& c, SignAt&& sign_at) {
   for (int k = 0; k < 3; ++k) {
     const int s = sign_at(orient2d_along_axis(k, a, b, c));
     if (s == 0) continue;
@@ -43,9 +44,9 @@ bool point_in_triangle_at(const MovingPoint<NT>& p, const MovingPoint<NT>& a,
 /// Non-parallel: each segment meets the other's line, in a projection where the directions'
 /// cross product does not vanish. Parallel or zero-length: an endpoint lies on the other.
 /// PROOF: proofs/exact_ccd.md#lemma-segments-intersect
-template <class NT, class SignAt>
-bool segments_intersect_at(const MovingPoint<NT>& a0, const MovingPoint<NT>& a1,
-                           const MovingPoint<NT>& b0, const MovingPoint<NT>& b1,
+template <class Point, class SignAt>
+bool segments_intersect_at(const Point& a0, const Point& a1,
+                           const Point& b0, const Point& b1,
                            SignAt&& sign_at) {
   const auto da = a1 - a0;
   const auto db = b1 - b0;

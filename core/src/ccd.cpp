@@ -4,13 +4,14 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <optional>
 #include <tuple>
 
 #include <CGAL/FPU.h>
 
 #include "core/src/float_only_ccd.hpp"
 #include "exact/exact_ccd.hpp"
-#include "exact/integer_cubic.hpp"
+#include "exact/integer_query.hpp"
 #include "filters/ccd_filters.hpp"
 #include "exactccd/rational_query.hpp"
 
@@ -21,6 +22,7 @@ const char* to_string(Stage stage) noexcept {
     case Stage::culling: return "culling";
     case Stage::filter: return "filter";
     case Stage::filter_exact_toi: return "filter_exact_toi";
+    case Stage::exact_at_double: return "exact_at_double";
     case Stage::exact: return "exact";
     case Stage::float_only: return "float_only";
   }
@@ -81,6 +83,28 @@ CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
 
 namespace {
 
+/// Exact answers at double times in integer arithmetic (exact/integer_query.hpp), built
+/// lazily: queries the float stages decide never touch GMP.
+/// PROOF: proofs/filters.md#exact-at-double-times
+template <class Query>
+class LazyExactAtDoubles final : public filters::ExactAtDoubles {
+ public:
+  explicit LazyExactAtDoubles(const Query& q) : query_(q) {}
+  int cubic_sign_at(double t) override { return integer().cubic_sign_at(t); }
+  bool contact_at(double t) override { return integer().contact_at(t); }
+  std::pair<double, double> bisect_root(double lo, double hi) override {
+    return integer().bisect_root(lo, hi, 0.0);
+  }
+  const exact::IntegerQuery& integer() {
+    if (!integer_) integer_.emplace(query_);
+    return *integer_;
+  }
+
+ private:
+  const Query& query_;
+  std::optional<exact::IntegerQuery> integer_;
+};
+
 /// The default pipeline: culling, filters, exact path. The culling and filter stages make no
 /// heap allocation; the exact stages do.
 template <class Query, class Culled, class Filter, class Exact>
@@ -91,21 +115,21 @@ CcdResult filtered_ccd(const Query& q, const CcdOptions& options, Culled culled,
     r.decided_by = Stage::culling;
     return r;
   }
-  const filters::FilterOutcome f = filter(q, options);
+  LazyExactAtDoubles<Query> exact_at_doubles(q);
+  const filters::FilterOutcome f = filter(q, options, exact_at_doubles);
   switch (f.verdict) {
     case filters::FilterOutcome::Verdict::no_contact:
-      r.decided_by = Stage::filter;
+      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
       return r;
     case filters::FilterOutcome::Verdict::contact:
       r.collides = true;
-      if (f.toi_final) {
-        r.decided_by = Stage::filter;
-        r.toi_lo = f.toi_lo;
-        r.toi_hi = f.toi_hi;
-      } else {
-        r.decided_by = Stage::filter_exact_toi;
+      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
+      r.toi_lo = f.toi_lo;
+      r.toi_hi = f.toi_hi;
+      if (!f.toi_final) {
+        if (r.decided_by == Stage::filter) r.decided_by = Stage::filter_exact_toi;
         std::tie(r.toi_lo, r.toi_hi) =
-            exact::IntegerCubic(q).bisect_root(f.toi_lo, f.toi_hi, options.toi_width);
+            exact_at_doubles.integer().bisect_root(r.toi_lo, r.toi_hi, options.toi_width);
       }
       return r;
     case filters::FilterOutcome::Verdict::uncertain: break;

@@ -10,10 +10,6 @@
 
 namespace exactccd {
 
-enum class QueryType : std::uint8_t { vertex_face, edge_edge };
-
-const char* to_string(QueryType type) noexcept;
-
 struct RationalPoint {
   mpq_class x, y, z;
 };

@@ -10,6 +10,10 @@
 
 namespace exactccd {
 
+enum class QueryType : std::uint8_t { vertex_face, edge_edge };
+
+const char* to_string(QueryType type) noexcept;
+
 /// Vertex p against triangle (a, b, c); fields named as the benchmark's CSV rows.
 struct VertexFaceQuery {
   Eigen::Vector3d p_t0, a_t0, b_t0, c_t0;
@@ -42,6 +46,8 @@ enum class Stage : std::uint8_t {
   culling,           ///< disjoint swept bounding boxes (exact comparisons)
   filter,            ///< interval filters decided the verdict and the TOI
   filter_exact_toi,  ///< filters decided the verdict; exact arithmetic tightened the TOI
+  exact_at_double,   ///< filters isolated the deciding root; exact integer arithmetic at that
+                     ///< double time decided it
   exact,             ///< exact rational arithmetic and exact root isolation (exact/)
   float_only,        ///< the uncertified double-precision test (Mode::float_only)
 };
