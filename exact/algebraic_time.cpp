@@ -78,11 +78,20 @@ void AlgebraicTime::refine_once() {
 int AlgebraicTime::sign_of(const Polynomial& g) {
   if (g.is_zero()) return 0;
   if (rational_) return g.sign_at(lo_);
+  // g(t) = rho(t) for rho = g mod f, since f(t) = 0: degree below deg f.
+  Polynomial rho;
+  divide(g, f_, nullptr, &rho);
+  if (rho.degree() <= 0) return rho.is_zero() ? 0 : sgn(rho.leading());
+  if (rho.degree() == 1) {
+    // rho = c1 t + c0 has the sign of c1 (t - q), q = -c0 / c1.
+    const Rational q = -rho.coefficients()[0] / rho.coefficients()[1];
+    return sgn(rho.coefficients()[1]) * compare(q);
+  }
   bool zero_checked = false;
   for (;;) {
-    // g keeps the sign of g(lo) on [lo, hi] when |g(lo)| > sum_k |g^(k)(lo)/k!| w^k.
+    // rho keeps the sign of rho(lo) on [lo, hi] when |rho(lo)| > sum_k |rho^(k)(lo)/k!| w^k.
     // PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time
-    const Polynomial shifted = g.taylor_shift(lo_);
+    const Polynomial shifted = rho.taylor_shift(lo_);
     const auto& d = shifted.coefficients();
     const Rational w = hi_ - lo_;
     Rational bound = 0, wk = 1;
@@ -90,29 +99,32 @@ int AlgebraicTime::sign_of(const Polynomial& g) {
       wk *= w;
       bound += abs(d[k]) * wk;
     }
-    const Rational g_lo = d.empty() ? Rational(0) : d[0];
-    if (cmp(abs(g_lo), bound) > 0) return sgn(g_lo);
+    const Rational rho_lo = d.empty() ? Rational(0) : d[0];
+    if (cmp(abs(rho_lo), bound) > 0) return sgn(rho_lo);
     if (!zero_checked) {
-      // g(t) = 0 iff gcd(f, g) vanishes at t; the gcd divides the square-free f, so its only
-      // possible root in (lo, hi) is t, simple, and shows as a sign change.
-      const Polynomial h = gcd(f_, g);
+      // rho(t) = 0 iff gcd(f, rho) vanishes at t; the gcd divides the square-free f, so its
+      // only possible root in (lo, hi) is t, simple, and shows as a sign change.
+      const Polynomial h = gcd(f_, rho);
       if (h.degree() >= 1 && h.sign_at(lo_) != h.sign_at(hi_)) return 0;
       zero_checked = true;
     }
-    refine_once();
-    if (rational_) return g.sign_at(lo_);
+    // Halve the interval's width before the next (costlier) Taylor test: across binades one
+    // bit-order split may shrink the width very little.
+    const Rational target = w / 2;
+    while (!rational_ && cmp(hi_ - lo_, target) > 0) refine_once();
+    if (rational_) return rho.sign_at(lo_);
   }
 }
 
 int AlgebraicTime::compare(const Rational& q) {
-  for (;;) {
-    if (rational_) return cmp(lo_, q);
-    if (cmp(q, lo_) <= 0) return 1;
-    if (cmp(q, hi_) >= 0) return -1;
-    const int s = f_.sign_at(q);
-    if (s == 0) return 0;  // q is a root of f in (lo, hi): it is this time
-    refine_once();
-  }
+  if (rational_) return cmp(lo_, q);
+  if (cmp(q, lo_) <= 0) return 1;
+  if (cmp(q, hi_) >= 0) return -1;
+  // q lies inside (lo, hi), which holds the single, simple root t of f: f(q) has the sign of
+  // f(lo) exactly when q lies between lo and t.
+  const int s = f_.sign_at(q);
+  if (s == 0) return 0;
+  return s == sign_f_lo_ ? 1 : -1;
 }
 
 int compare(AlgebraicTime& a, AlgebraicTime& b) {

@@ -64,6 +64,11 @@ std::vector<AlgebraicTime> real_roots_in(const Polynomial& p, const Rational& a,
   if (p.is_zero()) throw std::domain_error("exactccd: roots of the zero polynomial");
   if (p.degree() == 0) return out;
   const Polynomial f = square_free_part(p);
+  if (f.degree() == 1) {  // the root is rational: no isolation needed
+    const Rational root = -f.coefficients()[0] / f.coefficients()[1];
+    if (cmp(a, root) <= 0 && cmp(root, b) <= 0) out.push_back(AlgebraicTime::rational(root));
+    return out;
+  }
   if (f.sign_at(a) == 0) out.push_back(AlgebraicTime::rational(a));
   const SturmSequence sturm(f);
   Isolator{f, sturm, out}.isolate(a, b, sturm.count_roots(a, b));
