@@ -148,7 +148,8 @@ int compare(AlgebraicTime& a, AlgebraicTime& b) {
 std::pair<double, double> AlgebraicTime::enclosure(double width) {
   for (;;) {
     const double dl = round_down(lo_), dh = round_up(hi_);
-    if (rational_ || no_double_strictly_between(lo_, hi_) || (width > 0 && dh - dl <= width))
+    if (rational_ || no_double_strictly_between(lo_, hi_) ||
+        (width > 0 && difference_at_most(dh, dl, width)))
       return {dl, dh};
     refine_once();
   }

@@ -14,7 +14,8 @@ namespace exactccd::exact {
 class AlgebraicTime {
  public:
   static AlgebraicTime rational(Rational value);
-  /// f square-free, lo < hi, f(lo) and f(hi) non-zero of opposite signs.
+  /// f square-free, lo < hi, f(lo) and f(hi) non-zero of opposite signs, and the time the
+  /// ONLY root of f in (lo, hi) (compare and sign_of rely on it; real_roots_in ensures it).
   AlgebraicTime(Polynomial f, Rational lo, Rational hi);
 
   bool is_rational() const { return rational_; }

@@ -9,6 +9,7 @@
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
+#include "exact/rational.hpp"
 
 namespace exactccd::exact {
 
@@ -118,7 +119,7 @@ std::pair<double, double> IntegerQuery::bisect_root(double lo, double hi, double
   const int sign_lo = cubic_sign_at(lo);
   for (;;) {
     const double first = std::nextafter(lo, kInf), last = std::nextafter(hi, -kInf);
-    if (first > last || (width > 0 && hi - lo <= width)) return {lo, hi};
+    if (first > last || (width > 0 && difference_at_most(hi, lo, width))) return {lo, hi};
     std::uint64_t a, b;
     std::memcpy(&a, &first, sizeof a);
     std::memcpy(&b, &last, sizeof b);

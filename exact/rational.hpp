@@ -17,4 +17,9 @@ bool to_double_exactly(const Rational& q, double* d);
 
 inline int sign(const Rational& q) { return sgn(q); }
 
+/// hi - lo <= width, decided exactly (the double subtraction could round down).
+inline bool difference_at_most(double hi, double lo, double width) {
+  return cmp(Rational(hi) - Rational(lo), Rational(width)) <= 0;
+}
+
 }  // namespace exactccd::exact
