@@ -7,10 +7,10 @@ namespace exactccd::exact {
 
 using Rational = mpq_class;
 
-/// Largest double <= q (q of any magnitude; -inf / +inf-free: |q| beyond DBL_MAX saturates
-/// to -inf for negative q). Exact: GMP's mpq_get_d truncates towards zero.
+/// The largest double <= q, for q of any magnitude: -inf when q < -DBL_MAX, DBL_MAX when
+/// q > DBL_MAX. Exact: GMP's mpq_get_d truncates towards zero, then one exact comparison.
 double round_down(const Rational& q);
-/// Smallest double >= q.
+/// The smallest double >= q: +inf when q > DBL_MAX, -DBL_MAX when q < -DBL_MAX.
 double round_up(const Rational& q);
 /// True when q is exactly a finite double (and then sets *d to it).
 bool to_double_exactly(const Rational& q, double* d);
