@@ -457,11 +457,163 @@ TEST_F(CliTest, CheckTMaxClosesTheIntervalAtTMax) {
 
 TEST_F(CliTest, HelpDocumentsExitStatuses) {
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"--help"}, {"check", "--help"}, {"grade", "--help"}}) {
+       {std::vector<std::string>{"--help"}, {"check", "--help"}, {"grade", "--help"},
+        {"simulate", "--help"}, {"bench", "--help"}}) {
     const RunResult r = run(args);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("Exit status"), std::string::npos) << r.out;
   }
+}
+
+// ---- check --mode --------------------------------------------------------------------------
+
+// The stage counts of a JSON object, checked to add up to its queries and to match the
+// shares (count / queries).
+std::map<std::string, std::size_t> stage_counts(const nlohmann::json& j) {
+  std::map<std::string, std::size_t> counts;
+  std::size_t sum = 0;
+  for (const auto& [stage, count] : j.at("stage_counts").items()) {
+    counts[stage] = count.get<std::size_t>();
+    sum += counts[stage];
+    EXPECT_EQ(j.at("stage_share").at(stage).get<double>(),
+              static_cast<double>(counts[stage]) / j.at("queries").get<double>())
+        << stage;
+  }
+  EXPECT_EQ(sum, j.at("queries").get<std::size_t>());
+  EXPECT_EQ(j.at("stage_share").size(), j.at("stage_counts").size());
+  return counts;
+}
+
+TEST_F(CliTest, CheckEachModeOnOneSampleFile) {
+  const std::vector<bool> truth = read_truth_column(kSampleFile);
+  const std::size_t collide = std::count(truth.begin(), truth.end(), true);
+  for (const std::string mode : {"float_only", "default", "exact"}) {
+    SCOPED_TRACE(mode);
+    const RunResult r = run({"check", "--json", "--mode", mode, kSampleFile.string()});
+    const nlohmann::json j = parse_json(r);
+    EXPECT_EQ(j.value("mode", ""), mode);
+    EXPECT_EQ(j.value("queries", 0u), truth.size());
+    const std::size_t false_pos = j.value("false_positives", 0u);
+    const std::size_t false_neg = j.value("false_negatives", 0u);
+    // Reported collisions are the truth's, plus false positives, less false negatives.
+    EXPECT_EQ(j.value("collisions", 0u) + false_neg, collide + false_pos);
+    EXPECT_EQ(r.status, false_pos + false_neg == 0 ? 0 : 1) << r.err;
+    const auto counts = stage_counts(j);
+    if (mode == "float_only") {
+      EXPECT_EQ(counts.at("float_only"), truth.size());
+    } else {
+      // The certified modes are exact: the truth column's answer on every query.
+      EXPECT_EQ(false_pos, 0u);
+      EXPECT_EQ(false_neg, 0u);
+      EXPECT_EQ(counts.count("float_only"), 0u);
+      if (mode == "exact") EXPECT_EQ(counts.at("exact"), truth.size());
+    }
+  }
+}
+
+TEST_F(CliTest, CheckTableNamesModeAndStageColumns) {
+  const RunResult r = run({"check", "--mode", "exact", kSampleFile.string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  const std::vector<std::string> lines = lines_of(r.out);
+  ASSERT_GE(lines.size(), 3u) << r.out;
+  EXPECT_EQ(lines[0].rfind("mode: exact", 0), 0u) << r.out;
+  EXPECT_NE(lines[1].find(" exact"), std::string::npos) << r.out;  // the stage column
+  EXPECT_NE(lines.back().find("100.00%"), std::string::npos) << r.out;  // all by the exact stage
+}
+
+TEST_F(CliTest, CheckOnlyExactModeDecidesNonDoubleCoordinates) {
+  // The falling vertex (contact at t = 1/2) with p_t1.x = 1/3, which no double equals; at
+  // t = 1/2, p = (7/24, 1/4, 0) lies inside the triangle. A blank line after the second row
+  // puts the fifth row (p_t1) on line 6.
+  std::vector<std::string> rows = lines_of(falling_vertex_query(-1, 1));
+  rows[4] = "1,3,1,4,-1,1,1";
+  std::string text;
+  for (std::size_t i = 0; i < rows.size(); ++i) text += rows[i] + (i == 1 ? "\n\n" : "\n");
+  const fs::path file = write_file("vertex-face/third.csv", text);
+  for (const char* mode : {"default", "float_only"}) {
+    SCOPED_TRACE(mode);
+    expect_bad_input(run({"check", "--mode", mode, file.string()}), {file.string() + ":6:"});
+  }
+  const RunResult exact = run({"check", "--json", "--mode", "exact", file.string()});
+  EXPECT_EQ(exact.status, 0) << exact.err;
+  const nlohmann::json j = parse_json(exact);
+  EXPECT_EQ(j.value("collisions", 0u), 1u);
+  EXPECT_EQ(j.value("false_negatives", 1u), 0u);
+  // The bench times the double API, so it rejects the file too.
+  expect_bad_input(run({"bench", "--repetitions", "1", file.string()}), {file.string() + ":6:"});
+}
+
+TEST_F(CliTest, CheckRejectsUnknownMode) {
+  expect_bad_input(run({"check", "--mode", "fast", kSampleFile.string()}), {"--mode"});
+}
+
+// ---- bench ---------------------------------------------------------------------------------
+
+// The keys every bench JSON object has, with their types.
+void expect_bench_object(const nlohmann::json& j) {
+  EXPECT_TRUE(j.at("dataset").is_string());
+  EXPECT_TRUE(j.at("mode").is_string());
+  EXPECT_TRUE(j.at("queries").is_number_unsigned());
+  EXPECT_TRUE(j.at("mean_ns").is_number());
+  EXPECT_TRUE(j.at("median_ns").is_number());
+  EXPECT_TRUE(j.at("false_positives").is_number_unsigned());
+  EXPECT_TRUE(j.at("false_negatives").is_number_unsigned());
+  EXPECT_TRUE(j.at("stage_share").is_object());
+  EXPECT_GT(j.at("mean_ns").get<double>(), 0.0);
+  stage_counts(j);
+}
+
+TEST_F(CliTest, BenchJsonOnOneFileHasOneObjectPerMode) {
+  const std::vector<bool> truth = read_truth_column(kSampleFile);
+  const RunResult r = run({"bench", "--json", "--repetitions", "1", kSampleFile.string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = parse_json(r);
+  ASSERT_TRUE(j.is_array()) << r.out;
+  ASSERT_EQ(j.size(), 3u) << r.out;
+  const std::vector<std::string> modes = {"float_only", "default", "exact"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    SCOPED_TRACE(modes[k]);
+    expect_bench_object(j[k]);
+    EXPECT_EQ(j[k].value("dataset", ""), kSampleFile.string());
+    EXPECT_EQ(j[k].value("mode", ""), modes[k]);
+    EXPECT_EQ(j[k].value("queries", 0u), truth.size());
+    if (modes[k] != "float_only") {
+      EXPECT_EQ(j[k].value("false_positives", 1u), 0u);
+      EXPECT_EQ(j[k].value("false_negatives", 1u), 0u);
+    }
+  }
+  EXPECT_EQ(j[0].at("stage_share").value("float_only", 0.0), 1.0);
+  EXPECT_EQ(j[2].at("stage_share").value("exact", 0.0), 1.0);
+}
+
+TEST_F(CliTest, BenchSimulationIsDecidedExactlyByTheDefaultMode) {
+  const RunResult r = run({"bench", "--json", "--repetitions", "1", "--modes", "default",
+                           "--simulation", "--resolution", "4", "--steps", "8"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = parse_json(r);
+  ASSERT_TRUE(j.is_array() && j.size() == 1u) << r.out;
+  expect_bench_object(j[0]);
+  EXPECT_EQ(j[0].value("dataset", ""), "simulation");
+  EXPECT_EQ(j[0].value("mode", ""), "default");
+  EXPECT_GT(j[0].value("queries", 0u), 0u);
+  EXPECT_EQ(j[0].value("false_positives", 1u), 0u);
+  EXPECT_EQ(j[0].value("false_negatives", 1u), 0u);
+}
+
+TEST_F(CliTest, BenchWithoutPathRunsTheSampleQueries) {
+  const RunResult r = run({"bench", "--repetitions", "1", "--modes", "exact"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  const std::string sample_line = std::string(EXACTCCD_SAMPLE_QUERIES) + ": 5029 queries";
+  EXPECT_NE(r.out.find(sample_line), std::string::npos) << r.out;
+}
+
+TEST_F(CliTest, BenchRejectsBadCommandLine) {
+  expect_bad_input(run({"bench", "--modes", "fast", kSampleFile.string()}), {"--modes"});
+  expect_bad_input(run({"bench", "--repetitions", "0", kSampleFile.string()}), {"--repetitions"});
+  expect_bad_input(run({"bench", "--resolution", "8", kSampleFile.string()}),
+                   {"--resolution", "--simulation"});
+  const fs::path missing = dir_ / "missing";
+  expect_bad_input(run({"bench", missing.string()}), {missing.string()});
 }
 
 // ---- grade: results ------------------------------------------------------------------------

@@ -1,16 +1,96 @@
 #include "check.hpp"
 
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <utility>
 
 #include "check_report.hpp"
 #include "cli_common.hpp"
-#include "exactccd/query_file.hpp"
+#include "exact/rational.hpp"
+#include "exactccd/ccd.hpp"
 #include "progress.hpp"
 
 namespace exactccd::cli {
+
+// ---- Shared pieces ----------------------------------------------------------------------------
+
+std::optional<Mode> parse_mode_name(const std::string& name) {
+  for (const Mode m : {Mode::float_only, Mode::filtered, Mode::exact})
+    if (name == to_string(m)) return m;
+  return std::nullopt;
+}
+
+const std::vector<std::string>& mode_names() {
+  static const std::vector<std::string> names = {
+      to_string(Mode::float_only), to_string(Mode::filtered), to_string(Mode::exact)};
+  return names;
+}
+
+const std::vector<Stage>& all_stages() {
+  static const std::vector<Stage> stages = [] {
+    std::vector<Stage> found;
+    for (int k = 0; k < 256; ++k) {
+      const Stage s = static_cast<Stage>(k);
+      if (std::strcmp(to_string(s), "unknown") == 0) break;
+      found.push_back(s);
+    }
+    return found;
+  }();
+  return stages;
+}
+
+std::vector<Stage> stages_of(Mode mode) {
+  switch (mode) {
+    case Mode::float_only: return {Stage::float_only};
+    case Mode::exact: return {Stage::exact};
+    case Mode::filtered: break;
+  }
+  std::vector<Stage> stages;
+  for (const Stage s : all_stages())
+    if (s != Stage::float_only) stages.push_back(s);
+  return stages;
+}
+
+std::optional<QueryPoints> exact_doubles(const RationalQuery& query, std::size_t* bad_row) {
+  QueryPoints points;
+  for (std::size_t row = 0; row < 8; ++row) {
+    const RationalPoint& p = query.points[row];
+    double x, y, z;
+    if (!exact::to_double_exactly(p.x, &x) || !exact::to_double_exactly(p.y, &y) ||
+        !exact::to_double_exactly(p.z, &z)) {
+      *bad_row = row;
+      return std::nullopt;
+    }
+    points[row] = {x, y, z};
+  }
+  return points;
+}
+
+std::size_t line_of_row(const std::string& path, std::size_t first_line, std::size_t row) {
+  std::ifstream in(path);
+  std::string line;
+  std::size_t line_no = 0, data_rows = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line_no < first_line) continue;
+    // The reader's blank line: nothing but spaces, tabs and a carriage return.
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (data_rows++ == row) return line_no;
+  }
+  return first_line + row;
+}
+
+VertexFaceQuery vertex_face_query(const QueryPoints& p) {
+  return {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]};
+}
+
+EdgeEdgeQuery edge_edge_query(const QueryPoints& p) {
+  return {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]};
+}
+
+// ---- The subcommand ---------------------------------------------------------------------------
 
 namespace {
 
@@ -35,6 +115,29 @@ void write_result_line(std::ostream& out, const std::string& file, std::size_t i
   out << '\n';
 }
 
+// Decides one query of `file` with the chosen mode, through the public double API when every
+// coordinate is a double. Otherwise only the exact mode can decide it (on the rationals).
+CcdResult decide(const QueryFile& file, const QueryRecord& record, const CcdOptions& options,
+                 double* seconds) {
+  std::size_t bad_row = 0;
+  const std::optional<QueryPoints> points = exact_doubles(record.query, &bad_row);
+  if (!points && options.mode != Mode::exact)
+    throw InputError(file.path, line_of_row(file.path, record.first_line, bad_row),
+                     std::string("a coordinate is not exactly a double: only --mode exact "
+                                 "decides such queries (--mode ") +
+                         to_string(options.mode) + ")");
+  const auto start = std::chrono::steady_clock::now();
+  CcdResult result;
+  if (!points)
+    result = exact_ccd(record.query, options);
+  else if (file.type == QueryType::vertex_face)
+    result = vertex_face_ccd(vertex_face_query(*points), options);
+  else
+    result = edge_edge_ccd(edge_edge_query(*points), options);
+  *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
 }  // namespace
 
 int run_check(const CheckOptions& options) {
@@ -49,6 +152,7 @@ int run_check(const CheckOptions& options) {
 
   CcdOptions ccd_options;
   ccd_options.t_max = options.t_max;
+  ccd_options.mode = options.mode;
   Progress progress;
   std::vector<CheckTally> tallies;
   CheckTally total;
@@ -59,14 +163,12 @@ int run_check(const CheckOptions& options) {
     tally.file = input.path;
     for (std::size_t i = 0; i < input.queries.size(); ++i) {
       const QueryRecord& record = input.queries[i];
-      const auto start = std::chrono::steady_clock::now();
-      const CcdResult result = exact_ccd(record.query, ccd_options);
-      tally.seconds +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const CcdResult result = decide(input, record, ccd_options, &tally.seconds);
       ++tally.queries;
       tally.collisions += result.collides;
       tally.false_positives += result.collides && !record.truth;
       tally.false_negatives += !result.collides && record.truth;
+      tally.count_stage(result.decided_by);
       if (out_file.is_open()) write_result_line(out_file, input.path, i, result);
       progress.update(k, files.size(), input.path, i + 1, input.queries.size());
     }
@@ -80,9 +182,9 @@ int run_check(const CheckOptions& options) {
     if (!out_file) throw UsageError(options.out_path + ": write failed (--out)");
   }
   if (options.json)
-    print_check_json(std::cout, tallies, total, options.t_max);
+    print_check_json(std::cout, options.mode, tallies, total, options.t_max);
   else
-    print_check_table(std::cout, tallies, total);
+    print_check_table(std::cout, options.mode, tallies, total);
   return total.disagreements() == 0 ? kExitAgree : kExitDisagree;
 }
 

@@ -1,14 +1,19 @@
-// `exactccd`: the command-line oracle. `check` decides benchmark CSV files exactly and compares
-// with their truth column; `grade` judges another code's answers (and TOIs) exactly.
+// `exactccd`: the command-line oracle. `check` decides benchmark CSV files (exactly by default)
+// and compares with their truth column; `grade` judges another code's answers (and TOIs)
+// exactly; `simulate` writes simulation-like queries; `bench` times the modes.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
 #include <string>
+#include <tuple>
+#include <vector>
 
+#include "bench_command.hpp"
 #include "check.hpp"
 #include "cli_common.hpp"
 #include "exactccd/query_file.hpp"
 #include "grade.hpp"
+#include "simulate_command.hpp"
 
 namespace {
 
@@ -16,10 +21,12 @@ using namespace exactccd::cli;
 
 constexpr const char* kExitStatusHelp =
     "Exit status:\n"
-    "  0  all ran and everything agrees (check: every exact decision equals the truth\n"
-    "     column; grade: every answer is correct and every toi conservative)\n"
-    "  1  some disagreement (check: an exact decision differs from the truth column;\n"
-    "     grade: a false positive, a false negative or a toi later than the exact one)\n"
+    "  0  all ran and everything agrees (check: every decision equals the truth column;\n"
+    "     grade: every answer is correct and every toi conservative; bench: the certified\n"
+    "     modes (default, exact) agree with the truth; simulate: always)\n"
+    "  1  some disagreement (check: a decision differs from the truth column; grade: a\n"
+    "     false positive, a false negative or a toi later than the exact one; bench: a\n"
+    "     certified mode disagrees with the truth)\n"
     "  2  bad command line or malformed input; one line on stderr:\n"
     "     'exactccd: FILE:LINE: what'\n"
     "  3  internal error (a bug in exactccd, or out of memory)\n";
@@ -39,9 +46,30 @@ void add_type_option(CLI::App* command, std::string& type_name) {
       ->check(CLI::IsMember({"vf", "ee", "vertex-face", "edge-edge"}));
 }
 
+constexpr const char* kModeHelp =
+    "The path that decides: default (culling, certified interval filters, exact fallback: "
+    "always exact), float_only (uncertified double-precision cubic test, for comparison), "
+    "exact (the exact rational procedure only)";
+
 void add_t_max_option(CLI::App* command, double& t_max) {
   command->add_option("--t-max", t_max, "End of the time interval [0, T]; T in (0, 1]")
       ->capture_default_str();
+}
+
+// --resolution, --steps, --seed of the simulation-like set.
+std::tuple<CLI::Option*, CLI::Option*, CLI::Option*> add_simulation_options(
+    CLI::App* command, exactccd::sim::SimulationConfig& config) {
+  CLI::Option* resolution =
+      command->add_option("--resolution", config.sheet_resolution, "Sheet vertices per side")
+          ->check(CLI::Range(2, 1024))
+          ->capture_default_str();
+  CLI::Option* steps = command->add_option("--steps", config.steps, "Time steps")
+                           ->check(CLI::Range(1, 100000))
+                           ->capture_default_str();
+  CLI::Option* seed =
+      command->add_option("--seed", config.seed, "Seed of the placement and initial wrinkles")
+          ->capture_default_str();
+  return {resolution, steps, seed};
 }
 
 }  // namespace
@@ -58,12 +86,20 @@ int main(int argc, char** argv) {
   std::string check_type;
   CLI::App* check = app.add_subcommand(
       "check",
-      "Decide every query of benchmark CSV files exactly and compare with their truth "
-      "column (table per file and TOTAL on stdout).");
+      "Decide every query of benchmark CSV files and compare with their truth column "
+      "(table per file and TOTAL on stdout, with the share of queries each stage decided).");
   check->footer(kExitStatusHelp);
   check->add_flag("--json", check_options.json,
-                  "Print one JSON object (queries, collisions, false_positives, "
-                  "false_negatives, seconds, files[...]) instead of the table");
+                  "Print one JSON object (mode, queries, collisions, false_positives, "
+                  "false_negatives, seconds, stage_counts, stage_share, files[...]) instead of "
+                  "the table");
+  std::string check_mode = "default";
+  check->add_option("--mode", check_mode,
+                    std::string(kModeHelp) +
+                        ". Coordinates must be doubles, except with --mode exact, which decides "
+                        "any rational query exactly")
+      ->check(CLI::IsMember(mode_names()))
+      ->capture_default_str();
   check->add_option("--out", check_options.out_path,
                     "Write one line per query: file,index,collides,toi_lo,toi_hi (index 0-based "
                     "in its file, TOI with 17 significant digits, empty when no contact)");
@@ -91,6 +127,60 @@ int main(int argc, char** argv) {
   add_type_option(grade, grade_type);
   add_t_max_option(grade, grade_options.t_max);
 
+  SimulateOptions simulate_options;
+  std::string simulate_truth = "exact";
+  CLI::App* simulate = app.add_subcommand(
+      "simulate",
+      "Write simulation-like queries (a sheet draping over a sphere, two rigid bodies passing "
+      "each other: every pair whose swept boxes overlap) as benchmark CSV files, each "
+      "coordinate as its exact fraction, to DIR/simulation/{vertex-face,edge-edge}/data_K.csv "
+      "(at most 100000 queries per file; old data_K.csv files there are removed).");
+  simulate->footer(kExitStatusHelp);
+  simulate->add_option("--out", simulate_options.out_dir, "The output folder DIR")->required();
+  add_simulation_options(simulate, simulate_options.config);
+  simulate
+      ->add_option("--truth", simulate_truth,
+                   "exact: the truth column from the exact path (in parallel); none: all 0")
+      ->check(CLI::IsMember({"exact", "none"}))
+      ->capture_default_str();
+
+  BenchOptions bench_options;
+  bench_options.default_path = EXACTCCD_SAMPLE_QUERIES;
+  std::string bench_type;
+  std::vector<std::string> bench_modes = mode_names();
+  CLI::App* bench = app.add_subcommand(
+      "bench",
+      "Time each mode on data sets (single thread) and count its false positives and false "
+      "negatives against the truth: mean and median ns per query, share of queries decided by "
+      "each stage. Each PATH (a CSV file or a folder) is one data set; with none and no "
+      "--simulation, the shipped sample queries.");
+  bench->footer(
+      "mean_ns: the median over the repetitions of (time of one pass over all queries / "
+      "queries). median_ns: the median of the queries' single timed calls, less the median "
+      "cost of an empty timed region (reported).\n\n" +
+      std::string(kExitStatusHelp));
+  bench->add_flag("--json", bench_options.json,
+                  "Print a JSON array, one object per data set and mode (dataset, mode, queries, "
+                  "mean_ns, median_ns, false_positives, false_negatives, stage_share, ...)");
+  bench->add_option("--modes", bench_modes, "Comma-separated modes: float_only,default,exact")
+      ->delimiter(',')
+      ->check(CLI::IsMember(mode_names()))
+      ->capture_default_str();
+  bench
+      ->add_option("--repetitions", bench_options.repetitions,
+                   "Timed passes per data set and mode")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  bench->add_flag("--simulation", bench_options.simulation,
+                  "Add the simulation-like set, generated in memory (truth: the exact path)");
+  CLI::Option* bench_resolution = nullptr;
+  CLI::Option* bench_steps = nullptr;
+  CLI::Option* bench_seed = nullptr;
+  std::tie(bench_resolution, bench_steps, bench_seed) =
+      add_simulation_options(bench, bench_options.simulation_config);
+  add_type_option(bench, bench_type);
+  bench->add_option("PATH", bench_options.paths, "CSV files or folders, one data set each");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -102,7 +192,22 @@ int main(int argc, char** argv) {
   try {
     if (check->parsed()) {
       check_options.type = parse_type_name(check_type);
+      check_options.mode = *parse_mode_name(check_mode);
       return run_check(check_options);
+    }
+    if (simulate->parsed()) {
+      simulate_options.exact_truth = simulate_truth == "exact";
+      return run_simulate(simulate_options);
+    }
+    if (bench->parsed()) {
+      for (CLI::Option* option : {bench_resolution, bench_steps, bench_seed})
+        if (option->count() > 0 && !bench_options.simulation)
+          throw UsageError(option->get_name() + " needs --simulation");
+      bench_options.type = parse_type_name(bench_type);
+      bench_options.modes.clear();
+      for (const std::string& name : bench_modes)
+        bench_options.modes.push_back(*parse_mode_name(name));
+      return run_bench(bench_options);
     }
     grade_options.type = parse_type_name(grade_type);
     return run_grade(grade_options);

@@ -1,0 +1,228 @@
+// The culling and filter stages of the default path make no heap allocation: this program
+// replaces every global operator new / delete with counting versions and routes GMP's memory
+// functions through counters as well, then checks that every query decided by Stage::culling or
+// Stage::filter allocated nothing. The exact stages (filter_exact_toi, exact_at_double, exact)
+// do allocate (GMP numbers, polynomials): their counts are reported, and a test asserts that the
+// rational exact path is seen allocating, which proves the counters see the library's
+// allocations.
+#include <gmp.h>
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "exact/rational.hpp"
+#include "exactccd/query_file.hpp"
+#include "tests/random_queries.hpp"
+
+// ---------------------------------------------------------------------------------------------
+// Counting allocators (per thread: a query's allocations are those of the calling thread)
+
+namespace {
+thread_local std::uint64_t g_allocations = 0;
+
+void* counted_malloc(std::size_t size) {
+  ++g_allocations;
+  if (size == 0) size = 1;
+  return std::malloc(size);
+}
+
+void* counted_aligned(std::size_t size, std::size_t alignment) {
+  ++g_allocations;
+  if (alignment < sizeof(void*)) alignment = sizeof(void*);
+  void* p = nullptr;
+  if (posix_memalign(&p, alignment, size ? size : 1) != 0) return nullptr;
+  return p;
+}
+
+void* throwing(void* p) {
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+
+// GMP's memory functions (GMP allocates with malloc, not operator new).
+void* gmp_allocate(std::size_t size) { return throwing(counted_malloc(size)); }
+void* gmp_reallocate(void* p, std::size_t, std::size_t size) {
+  ++g_allocations;
+  return throwing(std::realloc(p, size));
+}
+void gmp_free(void* p, std::size_t) { std::free(p); }
+
+// Installed before main (and before any test); GMP numbers made earlier were allocated with
+// malloc, which gmp_free releases correctly.
+const bool g_gmp_counting_installed = [] {
+  mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
+  return true;
+}();
+}  // namespace
+
+void* operator new(std::size_t size) { return throwing(counted_malloc(size)); }
+void* operator new[](std::size_t size) { return throwing(counted_malloc(size)); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return counted_malloc(size); }
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return counted_malloc(size); }
+void* operator new(std::size_t size, std::align_val_t a) {
+  return throwing(counted_aligned(size, static_cast<std::size_t>(a)));
+}
+void* operator new[](std::size_t size, std::align_val_t a) {
+  return throwing(counted_aligned(size, static_cast<std::size_t>(a)));
+}
+void* operator new(std::size_t size, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return counted_aligned(size, static_cast<std::size_t>(a));
+}
+void* operator new[](std::size_t size, std::align_val_t a, const std::nothrow_t&) noexcept {
+  return counted_aligned(size, static_cast<std::size_t>(a));
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
+
+namespace exactccd::test {
+namespace {
+
+constexpr std::uint64_t kDefaultSeed = 0xa110c;
+
+/// Allocations per stage of the default path.
+struct StageAllocations {
+  std::uint64_t queries[kStageCount] = {};
+  std::uint64_t allocating_queries[kStageCount] = {};
+  std::uint64_t allocations[kStageCount] = {};
+  std::vector<std::string> offenders;  // culling / filter queries that allocated (first few)
+
+  void record(const DoubleQuery& q, const CcdResult& r, std::uint64_t n) {
+    const int s = static_cast<int>(r.decided_by);
+    ++queries[s];
+    allocations[s] += n;
+    if (n == 0) return;
+    ++allocating_queries[s];
+    if ((r.decided_by == Stage::culling || r.decided_by == Stage::filter) && offenders.size() < 5)
+      offenders.push_back(std::to_string(n) + " allocation(s), " + describe(r) + ", " +
+                          describe(q));
+  }
+  std::uint64_t of(Stage s) const { return queries[static_cast<int>(s)]; }
+  std::uint64_t allocating(Stage s) const { return allocating_queries[static_cast<int>(s)]; }
+
+  void print(const char* what) const {
+    std::printf("%s\n", what);
+    for (Stage s : default_path_stages()) {
+      const int i = static_cast<int>(s);
+      std::printf("  %-17s %7llu queries, %7llu allocating, %8.1f allocations/query\n", to_string(s),
+                  static_cast<unsigned long long>(queries[i]),
+                  static_cast<unsigned long long>(allocating_queries[i]),
+                  queries[i] ? double(allocations[i]) / double(queries[i]) : 0.0);
+    }
+  }
+};
+
+/// Runs the default path on q and counts its allocations. The query and the options are built
+/// before the counter is read, so only the call itself is measured.
+CcdResult decide_counting(const DoubleQuery& q, const CcdOptions& options, std::uint64_t* n) {
+  const VertexFaceQuery vf = q.vertex_face();
+  const EdgeEdgeQuery ee = q.edge_edge();
+  const std::uint64_t before = g_allocations;
+  const CcdResult r = q.type == QueryType::vertex_face ? vertex_face_ccd(vf, options)
+                                                       : edge_edge_ccd(ee, options);
+  *n = g_allocations - before;
+  return r;
+}
+
+void expect_no_allocation_in_float_stages(const StageAllocations& a, const char* what) {
+  a.print(what);
+  EXPECT_EQ(a.allocating(Stage::culling), 0u) << what;
+  EXPECT_EQ(a.allocating(Stage::filter), 0u) << what;
+  for (const auto& o : a.offenders) ADD_FAILURE() << what << ": " << o;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+/// The counters see allocations made by the library: the exact path (Mode::exact) on a
+/// colliding query builds GMP rationals and polynomials.
+TEST(Allocation, CounterSeesLibraryAllocations) {
+  ASSERT_TRUE(g_gmp_counting_installed);
+  // p falls through the unit triangle in the plane z = 0 at t = 1/2.
+  DoubleQuery q;
+  q.type = QueryType::vertex_face;
+  q.v = {Eigen::Vector3d(0.25, 0.25, 1), Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+         Eigen::Vector3d(0, 1, 0),       Eigen::Vector3d(0.25, 0.25, -1), Eigen::Vector3d(0, 0, 0),
+         Eigen::Vector3d(1, 0, 0),       Eigen::Vector3d(0, 1, 0)};
+  CcdOptions exact_mode;
+  exact_mode.mode = Mode::exact;
+  std::uint64_t n = 0;
+  const CcdResult r = decide_counting(q, exact_mode, &n);
+  EXPECT_TRUE(r.collides);
+  EXPECT_EQ(r.toi_lo, 0.5);
+  EXPECT_GT(n, 0u) << "the counting allocators missed the exact path's allocations";
+
+  // And a plain operator new in this thread is counted.
+  const std::uint64_t before = g_allocations;
+  auto* volatile probe = new int(1);
+  delete probe;
+  EXPECT_EQ(g_allocations - before, 1u);
+}
+
+TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnRandomQueries) {
+  const std::uint64_t seed = seed_from_environment(kDefaultSeed);
+  std::printf("[ seed     ] EXACTCCD_TEST_SEED=%llu\n", static_cast<unsigned long long>(seed));
+  const std::uint64_t n = scaled_count(1500, scale_from_environment());
+  for (QueryType type : {QueryType::vertex_face, QueryType::edge_edge}) {
+    StageAllocations a;
+    for (Family family : kAllFamilies) {
+      const Generator g{family, type};
+      for (std::uint64_t i = 0; i < n; ++i) {
+        std::mt19937_64 rng;
+        const DoubleQuery q = generate(g, seed, i, rng);
+        // Over [0, 1] (semi-static stage enabled) and over [0, t_max < 1] with a coarse width.
+        for (const CcdOptions& options : {CcdOptions{}, CcdOptions{0.75, 1e-6, Mode::filtered}}) {
+          std::uint64_t count = 0;
+          const CcdResult r = decide_counting(q, options, &count);
+          a.record(q, r, count);
+        }
+      }
+    }
+    const char* what = type == QueryType::vertex_face ? "vertex-face" : "edge-edge";
+    expect_no_allocation_in_float_stages(a, what);
+    // The generators must reach the stages under test, or this test proves nothing.
+    EXPECT_GT(a.of(Stage::culling), 1000u) << what;
+    EXPECT_GT(a.of(Stage::filter), 1000u) << what;
+    // The rational exact path allocates (reported above); it must be seen doing so.
+    EXPECT_GT(a.allocating(Stage::exact), 0u) << what;
+  }
+}
+
+TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnSampleQueries) {
+  StageAllocations a;
+  for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
+    const auto type = query_type_from_path(path);
+    ASSERT_TRUE(type) << path;
+    for (const QueryRecord& r : read_query_file(path, *type).queries) {
+      DoubleQuery q;
+      q.type = *type;
+      for (int i = 0; i < 8; ++i)
+        ASSERT_TRUE(exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) &&
+                    exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) &&
+                    exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()));
+      for (const CcdOptions& options : {CcdOptions{}, CcdOptions{1.0, 1e-3, Mode::filtered}}) {
+        std::uint64_t count = 0;
+        const CcdResult res = decide_counting(q, options, &count);
+        a.record(q, res, count);
+      }
+    }
+  }
+  expect_no_allocation_in_float_stages(a, "sample");
+  EXPECT_GT(a.of(Stage::culling) + a.of(Stage::filter), 1000u);
+}
+
+}  // namespace
+}  // namespace exactccd::test

@@ -1,0 +1,271 @@
+// Differential tests: the default path (Mode::filtered: culling, semi-static and interval
+// filters, exact fallback) must give exactly the exact path's answer (Mode::exact) on every
+// double query: the same verdict, the identical tightest TOI pair for toi_width = 0, and for a
+// coarse toi_width an enclosure of t* no wider than asked. The exact path is an independent
+// decision procedure (rational arithmetic, Sturm root isolation; exact/), so any difference is
+// a bug in one of them.
+//
+// EXACTCCD_TEST_SEED overrides the seed, EXACTCCD_TEST_SCALE multiplies the query counts.
+#include <gtest/gtest.h>
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "exact/rational.hpp"
+#include "exactccd/query_file.hpp"
+#include "bench/simulation/simulation_queries.hpp"
+#include "tests/random_queries.hpp"
+
+namespace exactccd::test {
+namespace {
+
+constexpr std::uint64_t kDefaultSeed = 0x5eed0fd1ffULL;
+constexpr std::size_t kMaxReported = 10;
+
+/// Collects the first disagreements from worker threads.
+class DisagreementLog {
+ public:
+  void add(const std::string& where, const Disagreement& d) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++count_;
+    if (reports_.size() < kMaxReported) reports_.push_back(where + ": " + d.report());
+  }
+  std::uint64_t count() const { return count_; }
+  void print() const {
+    for (const auto& r : reports_) ADD_FAILURE() << r;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::uint64_t count_ = 0;
+  std::vector<std::string> reports_;
+};
+
+std::string percent(std::uint64_t part, std::uint64_t whole) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%6.2f%%", whole ? 100.0 * double(part) / double(whole) : 0.0);
+  return buf;
+}
+
+void print_header() {
+  std::printf("%-26s %9s %9s", "generator", "queries", "collide");
+  for (Stage st : default_path_stages()) std::printf(" %16s", to_string(st));
+  std::printf(" %9s %8s\n", "fallback", "seconds");
+}
+
+/// Stage shares of the default path; "fallback" counts the queries it sent to the rational
+/// exact path (Stage::exact).
+void print_row(const std::string& name, const DifferentialStats& s, double seconds) {
+  std::printf("%-26s %9llu %9llu", name.c_str(), static_cast<unsigned long long>(s.queries),
+              static_cast<unsigned long long>(s.collisions));
+  for (Stage st : default_path_stages())
+    std::printf(" %16s", percent(s.stage[static_cast<int>(st)], s.queries).c_str());
+  std::printf(" %9llu %8.2f\n",
+              static_cast<unsigned long long>(s.stage[static_cast<int>(Stage::exact)]), seconds);
+  std::fflush(stdout);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// ---------------------------------------------------------------------------------------------
+// (a) The sample queries of the public benchmark
+
+TEST(Differential, SampleQueriesDefaultEqualsExact) {
+  struct Sample {
+    std::string where;
+    DoubleQuery query;
+  };
+  std::vector<Sample> samples;
+  for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
+    const auto type = query_type_from_path(path);
+    ASSERT_TRUE(type) << path;
+    for (const QueryRecord& r : read_query_file(path, *type).queries) {
+      Sample s{path + ":" + std::to_string(r.first_line), {}};
+      s.query.type = *type;
+      for (int i = 0; i < 8; ++i) {
+        const RationalPoint& p = r.query.points[i];
+        // The benchmark's coordinates are doubles written as exact fractions.
+        ASSERT_TRUE(exact::to_double_exactly(p.x, &s.query.v[i].x()) &&
+                    exact::to_double_exactly(p.y, &s.query.v[i].y()) &&
+                    exact::to_double_exactly(p.z, &s.query.v[i].z()))
+            << s.where << ": coordinate is not a double";
+      }
+      samples.push_back(std::move(s));
+    }
+  }
+  ASSERT_GT(samples.size(), 5000u);  // the shipped set has 5,029 queries
+
+  const auto start = std::chrono::steady_clock::now();
+  DisagreementLog log;
+  tbb::combinable<DifferentialStats> stats;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), 16), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      std::mt19937_64 rng(mix64(i));  // picks the coarse toi_width and t_max
+      const Disagreement d = differential_check(samples[i].query, rng, stats.local());
+      if (!d.what.empty()) log.add(samples[i].where, d);
+    }
+  });
+  const DifferentialStats total = stats.combine(
+      [](DifferentialStats a, const DifferentialStats& b) { return a += b; });
+  print_header();
+  print_row("sample-queries", total, seconds_since(start));
+  log.print();
+  EXPECT_EQ(total.queries, samples.size());
+  EXPECT_EQ(log.count(), 0u);
+  EXPECT_EQ(total.disagreements, 0u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// (b) Seeded random queries from every generator
+
+/// Queries per generator; the near-degenerate generators, where the filters give up most often
+/// and the exact path is slowest, get fewer. The total is 1,000,000 at scale 1.
+std::uint64_t base_count(const Generator& g) {
+  switch (g.family) {
+    case Family::uniform_box: return 100000;
+    case Family::small_integer_grid: return 50000;
+    case Family::short_motion: return 100000;
+    case Family::planted_contact: return 50000;
+    case Family::planted_contact_ulps: return 50000;
+    case Family::contact_at_endpoints: return 50000;
+    case Family::coplanar_throughout: return 50000;
+    case Family::degenerate_primitives: return 50000;
+  }
+  return 0;
+}
+
+TEST(Differential, RandomQueriesDefaultEqualsExact) {
+  const std::uint64_t seed = seed_from_environment(kDefaultSeed);
+  const double scale = scale_from_environment();
+  std::printf("[ seed     ] EXACTCCD_TEST_SEED=%llu EXACTCCD_TEST_SCALE=%g\n",
+              static_cast<unsigned long long>(seed), scale);
+  const auto start = std::chrono::steady_clock::now();
+  DifferentialStats total;
+  std::uint64_t total_disagreements = 0;
+  print_header();
+  for (const Generator& g : all_generators()) {
+    const auto gen_start = std::chrono::steady_clock::now();
+    const std::uint64_t n = scaled_count(base_count(g), scale);
+    DisagreementLog log;
+    tbb::combinable<DifferentialStats> stats;
+    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, n, 64), [&](const auto& r) {
+      for (std::uint64_t i = r.begin(); i != r.end(); ++i) {
+        std::mt19937_64 rng;
+        const DoubleQuery q = generate(g, seed, i, rng);
+        const Disagreement d = differential_check(q, rng, stats.local());
+        if (!d.what.empty()) log.add(g.name() + " #" + std::to_string(i), d);
+      }
+    });
+    const DifferentialStats s = stats.combine(
+        [](DifferentialStats a, const DifferentialStats& b) { return a += b; });
+    print_row(g.name(), s, seconds_since(gen_start));
+    log.print();
+    EXPECT_EQ(s.queries, n) << g.name();
+    total += s;
+    total_disagreements += log.count();
+  }
+  print_row("total", total, seconds_since(start));
+  std::printf("coarse-width checks %llu, t_max < 1 checks %llu\n",
+              static_cast<unsigned long long>(total.width_checks),
+              static_cast<unsigned long long>(total.t_max_checks));
+  EXPECT_EQ(total_disagreements, 0u);
+  if (scale >= 1) {
+    EXPECT_GE(total.queries, 1000000u);
+  }
+  // The mix must reach every stage of the default path, or a stage could go untested.
+  for (Stage st : default_path_stages())
+    EXPECT_GT(total.stage[static_cast<int>(st)], 0u) << to_string(st);
+}
+
+/// The generators must produce what they promise, or the differential test would be weaker
+/// than it claims: the planted degeneracies are exact (the four points are coplanar at the
+/// planted time, checked in rational arithmetic) whenever no perturbation or inexact scaling
+/// followed.
+TEST(Differential, GeneratorsPlantWhatTheyClaim) {
+  const std::uint64_t seed = seed_from_environment(kDefaultSeed);
+  for (const Generator& g : all_generators()) {
+    if (g.family != Family::planted_contact && g.family != Family::contact_at_endpoints) continue;
+    int planted = 0, coplanar_at_planted_time = 0;
+    for (std::uint64_t i = 0; i < 4000; ++i) {
+      const DoubleQuery q = generate(g, seed, i);
+      if (!(q.planted_time >= 0)) continue;  // perturbed or inexactly scaled
+      ++planted;
+      // The four points at the planted time tc, in exact rationals, are coplanar: the
+      // construction places them in a common plane (or on a line, or at a point) at tc.
+      const mpq_class tc(q.planted_time);
+      std::array<std::array<mpq_class, 3>, 4> x;
+      for (int i2 = 0; i2 < 4; ++i2)
+        for (int k = 0; k < 3; ++k)
+          x[i2][k] = (1 - tc) * mpq_class(q.v[i2][k]) + tc * mpq_class(q.v[i2 + 4][k]);
+      mpq_class m[3][3];
+      for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k) m[r][k] = x[r + 1][k] - x[0][k];
+      const mpq_class det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                            m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                            m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+      if (sgn(det) == 0) ++coplanar_at_planted_time;
+    }
+    EXPECT_GT(planted, 200) << g.name();
+    EXPECT_EQ(coplanar_at_planted_time, planted) << g.name();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// (c) Simulation-like queries
+
+/// At least 50,000 queries of the simulation-like generator (a sheet draping over a sphere, two
+/// rigid bodies passing close): the queries a broad phase hands to a narrow phase, with
+/// resting and sliding contact, shared planes and tiny gaps.
+TEST(Differential, SimulationQueriesDefaultEqualsExact) {
+  const sim::SimulationConfig config = sim::small_simulation_config();
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<sim::SimulationQuery> queries = sim::generate_simulation_queries(config);
+  std::printf("generated %zu simulation queries in %.2f s (sheet %d, steps %d, seed %llu)\n",
+              queries.size(), seconds_since(start), config.sheet_resolution, config.steps,
+              static_cast<unsigned long long>(config.seed));
+  ASSERT_GE(queries.size(), 50000u);
+
+  print_header();
+  for (sim::PairKind kind :
+       {sim::PairKind::sheet_sphere, sim::PairKind::sheet_self, sim::PairKind::body_body}) {
+    for (QueryType type : {QueryType::vertex_face, QueryType::edge_edge}) {
+      std::vector<std::size_t> indices;
+      for (std::size_t i = 0; i < queries.size(); ++i)
+        if (queries[i].kind == kind && queries[i].type == type) indices.push_back(i);
+      const auto part_start = std::chrono::steady_clock::now();
+      const std::string name = std::string(type == QueryType::vertex_face ? "vf/" : "ee/") +
+                               "sim_" + sim::to_string(kind);
+      DisagreementLog log;
+      tbb::combinable<DifferentialStats> stats;
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, indices.size(), 64),
+                        [&](const auto& r) {
+                          for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                            const std::size_t i = indices[k];
+                            DoubleQuery q;
+                            q.type = queries[i].type;
+                            q.v = queries[i].points;
+                            std::mt19937_64 rng(mix64(i));
+                            const Disagreement d = differential_check(q, rng, stats.local());
+                            if (!d.what.empty()) log.add(name + " #" + std::to_string(i), d);
+                          }
+                        });
+      const DifferentialStats s = stats.combine(
+          [](DifferentialStats a, const DifferentialStats& b) { return a += b; });
+      print_row(name, s, seconds_since(part_start));
+      log.print();
+      EXPECT_EQ(s.queries, indices.size());
+      EXPECT_EQ(log.count(), 0u) << name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace exactccd::test

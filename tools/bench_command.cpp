@@ -1,0 +1,287 @@
+#include "bench_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "check.hpp"
+#include "cli_common.hpp"
+#include "exactccd/ccd.hpp"
+#include "exactccd/query_file.hpp"
+#include "simulate_command.hpp"
+
+namespace exactccd::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The queries of one data set as the double API takes them, with their truth.
+struct Dataset {
+  std::string label;
+  std::string truth_source;  // "truth column" or "exact path"
+  std::vector<VertexFaceQuery> vertex_face;
+  std::vector<std::uint8_t> vertex_face_truth;
+  std::vector<EdgeEdgeQuery> edge_edge;
+  std::vector<std::uint8_t> edge_edge_truth;
+
+  std::size_t size() const { return vertex_face.size() + edge_edge.size(); }
+};
+
+Dataset load_path(const std::string& path, const std::optional<QueryType>& type) {
+  Dataset d;
+  d.label = path;
+  d.truth_source = "truth column";
+  for (const std::string& file : find_query_files(path)) {
+    const QueryFile input = read_query_file(file, resolve_query_type(file, type));
+    for (const QueryRecord& record : input.queries) {
+      std::size_t bad_row = 0;
+      const std::optional<QueryPoints> points = exact_doubles(record.query, &bad_row);
+      if (!points)
+        throw InputError(file, line_of_row(file, record.first_line, bad_row),
+                         "a coordinate is not exactly a double: bench times the double API "
+                         "(check --mode exact decides such queries)");
+      if (input.type == QueryType::vertex_face) {
+        d.vertex_face.push_back(vertex_face_query(*points));
+        d.vertex_face_truth.push_back(record.truth);
+      } else {
+        d.edge_edge.push_back(edge_edge_query(*points));
+        d.edge_edge_truth.push_back(record.truth);
+      }
+    }
+  }
+  return d;
+}
+
+Dataset simulation_dataset(const sim::SimulationConfig& config, double* truth_seconds) {
+  std::vector<sim::SimulationQuery> queries;
+  try {
+    queries = sim::generate_simulation_queries(config);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const auto start = Clock::now();
+  const std::vector<std::uint8_t> truth = exact_truth(queries);
+  *truth_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  Dataset d;
+  d.label = "simulation";
+  d.truth_source = "exact path";
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    if (queries[i].type == QueryType::vertex_face) {
+      d.vertex_face.push_back(vertex_face_query(queries[i].points));
+      d.vertex_face_truth.push_back(truth[i]);
+    } else {
+      d.edge_edge.push_back(edge_edge_query(queries[i].points));
+      d.edge_edge_truth.push_back(truth[i]);
+    }
+  }
+  return d;
+}
+
+// Median of `values` (the mean of the two middle ones for an even count); reorders them.
+double median(std::vector<double>& values) {
+  if (values.empty()) return 0.0;
+  const std::size_t mid = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + mid, values.end());
+  const double upper = values[mid];
+  if (values.size() % 2 == 1) return upper;
+  const double lower = *std::max_element(values.begin(), values.begin() + mid);
+  return 0.5 * (lower + upper);
+}
+
+double nanoseconds(Clock::duration d) {
+  return static_cast<double>(std::chrono::duration_cast<std::chrono::nanoseconds>(d).count());
+}
+
+// The median cost of an empty timed region: two consecutive clock readings.
+double timer_overhead_ns() {
+  constexpr int kSamples = 100001;
+  std::vector<double> samples(kSamples);
+  for (double& s : samples) {
+    const auto start = Clock::now();
+    const auto stop = Clock::now();
+    s = nanoseconds(stop - start);
+  }
+  return median(samples);
+}
+
+volatile std::size_t g_sink;  // keeps the batch passes' results observable
+
+struct Measurement {
+  std::string dataset;
+  Mode mode = Mode::filtered;
+  std::size_t queries = 0, collisions = 0, false_positives = 0, false_negatives = 0;
+  double mean_ns = 0.0, median_ns = 0.0;
+  std::vector<std::size_t> stage_counts;  // indexed by Stage value
+
+  std::size_t stage_count(Stage s) const {
+    const auto k = static_cast<std::size_t>(s);
+    return k < stage_counts.size() ? stage_counts[k] : 0;
+  }
+  double stage_share(Stage s) const {
+    return queries == 0 ? 0.0 : static_cast<double>(stage_count(s)) / queries;
+  }
+};
+
+Measurement measure(const Dataset& d, Mode mode, int repetitions, double overhead_ns) {
+  CcdOptions options;
+  options.mode = mode;
+  Measurement m;
+  m.dataset = d.label;
+  m.mode = mode;
+  m.queries = d.size();
+  m.stage_counts.assign(all_stages().size(), 0);
+  auto tally = [&m](const CcdResult& r, bool truth) {
+    m.collisions += r.collides;
+    m.false_positives += r.collides && !truth;
+    m.false_negatives += !r.collides && truth;
+    const auto k = static_cast<std::size_t>(r.decided_by);
+    if (k >= m.stage_counts.size()) m.stage_counts.resize(k + 1, 0);
+    ++m.stage_counts[k];
+  };
+
+  // One pass timing each query on its own; it also gives the verdicts.
+  std::vector<double> per_query;
+  per_query.reserve(d.size());
+  for (std::size_t i = 0; i < d.vertex_face.size(); ++i) {
+    const auto start = Clock::now();
+    const CcdResult r = vertex_face_ccd(d.vertex_face[i], options);
+    const auto stop = Clock::now();
+    per_query.push_back(nanoseconds(stop - start));
+    tally(r, d.vertex_face_truth[i]);
+  }
+  for (std::size_t i = 0; i < d.edge_edge.size(); ++i) {
+    const auto start = Clock::now();
+    const CcdResult r = edge_edge_ccd(d.edge_edge[i], options);
+    const auto stop = Clock::now();
+    per_query.push_back(nanoseconds(stop - start));
+    tally(r, d.edge_edge_truth[i]);
+  }
+  m.median_ns = median(per_query) - overhead_ns;
+
+  // Batch passes: one clock reading around all queries, so no timer cost per query.
+  std::vector<double> per_pass;
+  for (int rep = 0; rep < repetitions; ++rep) {
+    std::size_t collisions = 0;
+    const auto start = Clock::now();
+    for (const VertexFaceQuery& q : d.vertex_face)
+      collisions += vertex_face_ccd(q, options).collides;
+    for (const EdgeEdgeQuery& q : d.edge_edge) collisions += edge_edge_ccd(q, options).collides;
+    const auto stop = Clock::now();
+    g_sink = collisions;
+    if (d.size() > 0) per_pass.push_back(nanoseconds(stop - start) / static_cast<double>(d.size()));
+  }
+  m.mean_ns = median(per_pass);
+  return m;
+}
+
+bool certified(Mode mode) { return mode != Mode::float_only; }
+
+void print_table(const std::vector<Measurement>& results) {
+  std::size_t width = 7;
+  for (const Measurement& m : results) width = std::max(width, m.dataset.size());
+  std::printf("%-*s %-10s %9s %10s %10s %9s %9s", static_cast<int>(width), "dataset", "mode",
+              "queries", "mean_ns", "median_ns", "false_pos", "false_neg");
+  const std::vector<Stage>& stages = all_stages();
+  std::vector<int> widths;
+  for (const Stage s : stages) {
+    widths.push_back(std::max(8, static_cast<int>(std::char_traits<char>::length(to_string(s)))));
+    std::printf(" %*s", widths.back(), to_string(s));
+  }
+  std::printf("\n");
+  for (const Measurement& m : results) {
+    std::printf("%-*s %-10s %9zu %10.1f %10.1f %9zu %9zu", static_cast<int>(width),
+                m.dataset.c_str(), to_string(m.mode), m.queries, m.mean_ns, m.median_ns,
+                m.false_positives, m.false_negatives);
+    for (std::size_t k = 0; k < stages.size(); ++k)
+      std::printf(" %*.2f%%", widths[k] - 1, 100.0 * m.stage_share(stages[k]));
+    std::printf("\n");
+  }
+}
+
+void print_json(const std::vector<Measurement>& results, const std::vector<Dataset>& datasets,
+                int repetitions, double overhead_ns) {
+  nlohmann::ordered_json all = nlohmann::ordered_json::array();
+  for (const Measurement& m : results) {
+    nlohmann::ordered_json j;
+    j["dataset"] = m.dataset;
+    j["mode"] = to_string(m.mode);
+    j["queries"] = m.queries;
+    j["mean_ns"] = m.mean_ns;
+    j["median_ns"] = m.median_ns;
+    j["false_positives"] = m.false_positives;
+    j["false_negatives"] = m.false_negatives;
+    nlohmann::ordered_json shares = nlohmann::ordered_json::object();
+    nlohmann::ordered_json counts = nlohmann::ordered_json::object();
+    for (const Stage s : all_stages()) {
+      shares[to_string(s)] = m.stage_share(s);
+      counts[to_string(s)] = m.stage_count(s);
+    }
+    j["stage_share"] = std::move(shares);
+    j["stage_counts"] = std::move(counts);
+    j["collisions"] = m.collisions;
+    for (const Dataset& d : datasets)
+      if (d.label == m.dataset) j["truth"] = d.truth_source;
+    j["repetitions"] = repetitions;
+    j["timer_overhead_ns"] = overhead_ns;
+    all.push_back(std::move(j));
+  }
+  std::cout << all.dump(2) << '\n';
+}
+
+}  // namespace
+
+int run_bench(const BenchOptions& options) {
+  if (options.repetitions < 1) throw UsageError("--repetitions must be at least 1");
+  if (options.modes.empty()) throw UsageError("--modes names no mode");
+
+  std::vector<Dataset> datasets;
+  std::vector<std::string> notes;
+  std::vector<std::string> paths = options.paths;
+  if (paths.empty() && !options.simulation) paths.push_back(options.default_path);
+  for (const std::string& path : paths) datasets.push_back(load_path(path, options.type));
+  if (options.simulation) {
+    double truth_seconds = 0.0;
+    datasets.push_back(simulation_dataset(options.simulation_config, &truth_seconds));
+    char note[256];
+    const sim::SimulationConfig& c = options.simulation_config;
+    std::snprintf(note, sizeof note,
+                  "simulation: sheet %dx%d, %d steps, seed %llu; truth from the exact path "
+                  "(parallel) in %.1f s",
+                  c.sheet_resolution, c.sheet_resolution, c.steps,
+                  static_cast<unsigned long long>(c.seed), truth_seconds);
+    notes.push_back(note);
+  }
+
+  const double overhead_ns = timer_overhead_ns();
+  std::vector<Measurement> results;
+  for (const Dataset& d : datasets)
+    for (const Mode mode : options.modes)
+      results.push_back(measure(d, mode, options.repetitions, overhead_ns));
+
+  if (options.json) {
+    print_json(results, datasets, options.repetitions, overhead_ns);
+  } else {
+    std::printf(
+        "single thread; mean_ns: median over %d passes of (pass time / queries); median_ns: "
+        "median of single-query times minus the empty timed region (%.1f ns, median of "
+        "100001 steady_clock pairs)\n",
+        options.repetitions, overhead_ns);
+    for (const Dataset& d : datasets)
+      std::printf("%s: %zu queries (%zu vertex-face, %zu edge-edge), truth: %s\n",
+                  d.label.c_str(), d.size(), d.vertex_face.size(), d.edge_edge.size(),
+                  d.truth_source.c_str());
+    for (const std::string& note : notes) std::printf("%s\n", note.c_str());
+    std::printf("last columns: share of queries decided by each stage\n");
+    print_table(results);
+  }
+  for (const Measurement& m : results)
+    if (certified(m.mode) && m.false_positives + m.false_negatives > 0) return kExitDisagree;
+  return kExitAgree;
+}
+
+}  // namespace exactccd::cli

@@ -1,0 +1,31 @@
+// `exactccd bench`: time per query and errors of each mode (float_only, default, exact) on
+// benchmark CSV data sets and on the simulation-like set (bench/simulation).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exactccd/types.hpp"
+#include "simulation_queries.hpp"
+
+namespace exactccd::cli {
+
+struct BenchOptions {
+  std::vector<std::string> paths;  ///< each a data set: a CSV file or a folder of them
+  std::optional<QueryType> type;   ///< --type: overrides the type from the folder name
+  std::vector<Mode> modes = {Mode::float_only, Mode::filtered, Mode::exact};
+  int repetitions = 5;             ///< batch passes; mean_ns is their median
+  bool simulation = false;         ///< add the simulation-like set (truth: the exact path)
+  sim::SimulationConfig simulation_config;
+  bool json = false;
+  /// Used when `paths` is empty and `simulation` false.
+  std::string default_path;
+};
+
+/// Runs the subcommand. Exit status 1 when a certified mode (default, exact) disagrees with
+/// the truth (a wrong truth column, or a bug), else 0; float_only's errors are only reported.
+/// Throws InputError / UsageError for bad input.
+int run_bench(const BenchOptions& options);
+
+}  // namespace exactccd::cli

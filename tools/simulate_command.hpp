@@ -1,0 +1,33 @@
+// `exactccd simulate`: writes the simulation-like queries (bench/simulation) as benchmark CSV
+// files, every coordinate as its exact fraction, with the exact path's truth column.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "simulation_queries.hpp"
+
+namespace exactccd::cli {
+
+struct SimulateOptions {
+  std::string out_dir;           ///< files go to out_dir/simulation/{vertex-face,edge-edge}/
+  sim::SimulationConfig config;
+  bool exact_truth = true;       ///< --truth exact; false (--truth none): truth column all 0
+};
+
+/// Runs the subcommand (exit status 0). Throws UsageError for a bad configuration or an
+/// output folder that cannot be written.
+int run_simulate(const SimulateOptions& options);
+
+/// Most queries per written file.
+constexpr std::size_t kQueriesPerFile = 100000;
+
+/// The exact path's verdict (exact_ccd on the query's exact rationals) for every query,
+/// computed in parallel (TBB); the result does not depend on the number of threads.
+std::vector<std::uint8_t> exact_truth(const std::vector<sim::SimulationQuery>& queries);
+
+/// `value` as the exact fraction "num,den" (den a power of two, in lowest terms; 0 as "0,1").
+void append_exact_fraction(std::string& out, double value);
+
+}  // namespace exactccd::cli
