@@ -1,15 +1,16 @@
 // A double-precision query in exact integer arithmetic, for fast exact decisions at double
 // times: every input double is an integer times a common power of two 2^E, and scaling space
 // by 2^-E (a positive constant) changes no contact, no contact time and no sign used here.
-// No rational normalisation (gcd) is ever needed. PROOF: proofs/filters.md#exact-at-double-times
+// No rational normalisation (gcd) is ever needed, and the temporaries live in a per-thread
+// workspace, so that a warm thread allocates only the four coefficients.
+// PROOF: proofs/filters.md#exact-at-double-times
 #pragma once
 
 #include <gmpxx.h>
 
-#include <array>
+#include <cstdint>
 #include <utility>
 
-#include "core/predicates/motion.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::exact {
@@ -27,13 +28,22 @@ class IntegerQuery {
   /// (0: the tightest pair; toi_lo == toi_hi when the root is a double).
   std::pair<double, double> bisect_root(double lo, double hi, double width) const;
 
-  /// Exact contact test at the double t >= 0, where the cubic vanishes (coplanar instant).
+  /// Exact contact test at the double t in [0, 1], where the cubic vanishes (coplanar).
   bool contact_at(double t) const;
 
+  /// x = mantissa * 2^exponent with an integer mantissa of at most 53 bits.
+  struct Dyadic {
+    std::int64_t mantissa = 0;
+    int exponent = 0;
+  };
+
  private:
+  void compute_cubic();
+
   QueryType type_;
-  std::array<predicates::Vec3<mpz_class>, 8> points_;  // benchmark row order, scaled to integers
-  mpz_class cubic_[4];                                  // c_[i] of t^i, scaled by 2^(-3E)
+  Dyadic coords_[8][3];  // benchmark row order
+  int common_exponent_ = 0;
+  mpz_class cubic_[4];   // cubic_[i] of t^i, scaled by 2^(-3E)
 };
 
 }  // namespace exactccd::exact

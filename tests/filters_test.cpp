@@ -216,13 +216,23 @@ TEST(CubicFilter, ContactBracketHoldsExactly) {
   EXPECT_GT(contacts, 4000);
 }
 
+// The integer cubic (expanded by hand for in-place GMP arithmetic) against the predicate
+// template evaluated over exact rationals, for both query types, at scattered magnitudes.
 TEST(IntegerQuery, SignsMatchRationalEvaluation) {
   std::mt19937_64 rng(seed());
-  std::uniform_real_distribution<double> uni(-1e3, 1e3), t01(0.0, 1.0);
-  for (int i = 0; i < 2000; ++i) {
-    auto r = [&] { return Vector3d(uni(rng), uni(rng), uni(rng)); };
-    const VertexFaceQuery qv{r(), r(), r(), r(), r(), r(), r(), r()};
-    const RationalQuery rq = to_rational(qv);
+  std::uniform_real_distribution<double> uni(-1.0, 1.0), t01(0.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-60, 60);
+  for (int i = 0; i < 4000; ++i) {
+    // Per-coordinate magnitudes differ, so the common exponent and the shifts vary.
+    auto r = [&]() -> Vector3d {
+      return Vector3d(std::ldexp(uni(rng), exponent(rng)), std::ldexp(uni(rng), exponent(rng)),
+                      uni(rng));
+    };
+    const Vector3d pts[8] = {r(), r(), r(), r(), r(), r(), r(), r()};
+    const bool vf = i % 2 == 0;
+    const VertexFaceQuery qv{pts[0], pts[1], pts[2], pts[3], pts[4], pts[5], pts[6], pts[7]};
+    const EdgeEdgeQuery qe{pts[0], pts[1], pts[2], pts[3], pts[4], pts[5], pts[6], pts[7]};
+    const RationalQuery rq = vf ? to_rational(qv) : to_rational(qe);
     using predicates::linear_motion;
     using predicates::Vec3;
     auto mv = [&](int k) {
@@ -230,11 +240,12 @@ TEST(IntegerQuery, SignsMatchRationalEvaluation) {
       const auto& b = rq.points[k + 4];
       return linear_motion(Vec3<mpq_class>{a.x, a.y, a.z}, Vec3<mpq_class>{b.x, b.y, b.z});
     };
-    const auto f = predicates::vertex_face_coplanarity_cubic(mv(0), mv(1), mv(2), mv(3));
-    const exact::IntegerQuery cubic(qv);
+    const auto f = vf ? predicates::vertex_face_coplanarity_cubic(mv(0), mv(1), mv(2), mv(3))
+                      : predicates::edge_edge_coplanarity_cubic(mv(0), mv(1), mv(2), mv(3));
+    const exact::IntegerQuery cubic = vf ? exact::IntegerQuery(qv) : exact::IntegerQuery(qe);
     for (double t : {0.0, 1.0, t01(rng), std::ldexp(t01(rng), -60)}) {
       const mpq_class value = predicates::evaluate(f, mpq_class(t));
-      ASSERT_EQ(cubic.cubic_sign_at(t), sgn(value)) << "t = " << t;
+      ASSERT_EQ(cubic.cubic_sign_at(t), sgn(value)) << "t = " << t << (vf ? " vf" : " ee");
     }
   }
 }
