@@ -1,6 +1,8 @@
 // `exactccd`: the command-line oracle. `check` decides benchmark CSV files (exactly by default)
 // and compares with their truth column; `grade` judges another code's answers (and TOIs)
-// exactly; `simulate` writes simulation-like queries; `bench` times the modes.
+// exactly; `simulate` writes simulation-like queries; `generate` the degenerate families;
+// `bench` times the modes; `study` measures the uncertified methods' errors against the exact
+// truth.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
@@ -12,8 +14,10 @@
 #include "check.hpp"
 #include "cli_common.hpp"
 #include "exactccd/query_file.hpp"
+#include "generate_command.hpp"
 #include "grade.hpp"
 #include "simulate_command.hpp"
+#include "study_command.hpp"
 
 namespace {
 
@@ -181,6 +185,100 @@ int main(int argc, char** argv) {
   add_type_option(bench, bench_type);
   bench->add_option("PATH", bench_options.paths, "CSV files or folders, one data set each");
 
+  StudyOptions study_options;
+  std::string study_type;
+  CLI::App* study = app.add_subcommand(
+      "study",
+      "Numerical-stability study: each method or setting (float_only; the tolerance method, "
+      "distance <= eps at a cubic root, at each eps; the default path at each TOI width; exact) "
+      "against the exact truth on each data set: false positives, false negatives, late "
+      "(non-conservative) TOIs, TOI error, mean time per query (single thread). A folder with "
+      "a manifest.json (exactccd generate) is also broken down per family and per coordinate "
+      "scale.");
+  study->footer(
+      "Verdicts: the truth column (the exact path for --simulation). Exact TOIs: a data_K.csv "
+      "file's toi_K.csv sidecar when present, else the exact path. TOI error: the reported toi "
+      "(toi_lo of an enclosure) minus t*, as the signed distance to the exact tightest pair "
+      "[lo, hi]; late: toi > lo.\n\nExit status: 0 the certified methods (default, exact) show "
+      "no false positive, false negative or late TOI; 1 one of them does; 2 bad command line "
+      "or input; 3 internal error.");
+  study->add_flag("--json", study_options.json,
+                  "Print one JSON document (datasets[...] with methods[...], and for a suite "
+                  "families[...] and scales[...]) instead of Markdown tables");
+  study->add_option("--out-md", study_options.out_md, "Also write the Markdown tables to FILE");
+  // One comma-separated argument each, so that a PATH after them stays a PATH.
+  study->add_option("--widths", study_options.widths, "The default path's TOI widths")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->capture_default_str();
+  study->add_option("--eps", study_options.tolerances,
+                    "The tolerance method's absolute distance tolerances")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->capture_default_str();
+  study
+      ->add_option("--repetitions", study_options.repetitions,
+                   "Timed samples per group and method; mean_ns is their median")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  study->add_flag("--simulation", study_options.simulation,
+                  "Add the simulation-like set, generated in memory (verdicts and TOIs: the "
+                  "exact path); default size: about 50,000 queries");
+  CLI::Option* study_resolution = nullptr;
+  CLI::Option* study_steps = nullptr;
+  CLI::Option* study_seed = nullptr;
+  std::tie(study_resolution, study_steps, study_seed) =
+      add_simulation_options(study, study_options.simulation_config);
+  add_type_option(study, study_type);
+  study->add_option("PATH", study_options.paths,
+                    "CSV files, folders of them, or generated suites; one data set each");
+
+  GenerateOptions generate_options;
+  CLI::App* generate = app.add_subcommand(
+      "generate",
+      "Write reproducible families of hard and degenerate queries with exact truth and TOI "
+      "(from the exact path): DIR/manifest.json and, per family, "
+      "DIR/<family>/<vertex-face|edge-edge>/data_0.csv (benchmark CSV, exact fractions) and "
+      "toi_0.csv (index,collides,toi_lo,toi_hi). Each family has colliding members and near "
+      "misses 1 ulp and 2^-k away.");
+  {
+    std::string bases;
+    for (const std::string& name : exactccd::families::base_family_names())
+      bases += (bases.empty() ? "" : ", ") + name;
+    std::string suffixes;
+    for (const auto& v : exactccd::families::variants())
+      suffixes += (suffixes.empty() ? "" : ", ") + std::string(v.suffix);  // "@s1e-12, ..."
+    generate->footer("Families: " + bases + "; and each of them scaled or translated in "
+                     "double arithmetic, named <family>" + suffixes + ".\n\nExit "
+                     "status: 0 written, every member as constructed; 1 written, but some "
+                     "member's exact verdict or TOI contradicts its construction (listed on "
+                     "stderr); 2 bad command line or unwritable folder; 3 internal error.");
+  }
+  generate->add_option("--out", generate_options.out_dir, "The output folder DIR")->required();
+  generate->add_option("--seed", generate_options.seed, "Seed of the constructions")
+      // Digits only, below 2^64: CLI11 would wrap a negative number around and saturate a
+      // large one.
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            const bool digits =
+                !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+            const bool fits =
+                text.size() < 20 || (text.size() == 20 && text <= "18446744073709551615");
+            return digits && fits ? std::string()
+                                  : "must be an integer in [0, 2^64 - 1], got " + text;
+          },
+          ""))
+      ->capture_default_str();
+  generate
+      ->add_option("--per-family", generate_options.per_family,
+                   "Queries per family (groups of a boundary contact and its near misses)")
+      ->check(CLI::Range(exactccd::families::kMinPerFamily, exactccd::families::kMaxPerFamily))
+      ->capture_default_str();
+  generate
+      ->add_option("--families", generate_options.families,
+                   "Comma-separated family names (default: all)")
+      ->delimiter(',');
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -209,6 +307,14 @@ int main(int argc, char** argv) {
         bench_options.modes.push_back(*parse_mode_name(name));
       return run_bench(bench_options);
     }
+    if (study->parsed()) {
+      for (CLI::Option* option : {study_resolution, study_steps, study_seed})
+        if (option->count() > 0 && !study_options.simulation)
+          throw UsageError(option->get_name() + " needs --simulation");
+      study_options.type = parse_type_name(study_type);
+      return run_study(study_options);
+    }
+    if (generate->parsed()) return run_generate(generate_options);
     grade_options.type = parse_type_name(grade_type);
     return run_grade(grade_options);
   } catch (const exactccd::InputError& e) {

@@ -24,6 +24,8 @@ MovingPoint<double> moving(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1)
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
+}  // namespace
+
 /// Roots of the cubic in [0, t_max], ascending (at most 3; an identically zero cubic gives
 /// the two ends, the classic codes' usual answer).
 int cubic_roots(const FixedPoly<double, 3>& f, double t_max, double roots[3]) {
@@ -79,6 +81,8 @@ int cubic_roots(const FixedPoly<double, 3>& f, double t_max, double roots[3]) {
     roots[n++] = t_max;
   return n;
 }
+
+namespace {
 
 template <class ContactAt>
 CcdResult first_contact(const FixedPoly<double, 3>& f, double t_max, ContactAt&& contact_at) {

@@ -129,6 +129,8 @@ std::vector<std::string> find_query_files(const std::string& path) {
        it.increment(ec)) {
     const fs::path& p = it->path();
     if (!it->is_regular_file() || p.extension() != ".csv") continue;
+    // toi_K.csv: the TOI sidecars of `exactccd generate`, not queries.
+    if (p.filename().string().rfind("toi_", 0) == 0) continue;
     const auto parent = p.parent_path().filename();
     if (parent == "vertex-face" || parent == "edge-edge") files.push_back(p.string());
   }

@@ -47,8 +47,9 @@ std::optional<QueryType> query_type_from_path(const std::string& path);
 QueryFile read_query_file(const std::string& path, QueryType type);
 
 /// `path` itself when it is a file; for a directory, every `vertex-face/*.csv` and
-/// `edge-edge/*.csv` below it, sorted. Throws InputError when the path does not exist or a
-/// directory holds no such file.
+/// `edge-edge/*.csv` below it, sorted, except files whose name starts with `toi_` (the TOI
+/// sidecars `toi_K.csv` that `exactccd generate` writes next to its `data_K.csv`). Throws
+/// InputError when the path does not exist or a directory holds no such file.
 std::vector<std::string> find_query_files(const std::string& path);
 
 }  // namespace exactccd

@@ -1,0 +1,62 @@
+// The degenerate-query corpus that `exactccd generate` writes (and tests/data/degenerate-suite
+// ships): the families of families.hpp with the exact path's verdict and tightest TOI for
+// every member, serialised as
+//   DIR/manifest.json
+//   DIR/<family>/<vertex-face|edge-edge>/data_0.csv  benchmark CSV, 8 rows per query,
+//       x_num,x_den,y_num,y_den,z_num,z_den,truth; every coordinate its exact lowest-terms
+//       fraction; truth from the exact path
+//   DIR/<family>/<vertex-face|edge-edge>/toi_0.csv   one line per query,
+//       index,collides,toi_lo,toi_hi (%.17g, the exact path's tightest pair; toi fields empty
+//       without contact), no header
+// The texts depend only on the seed, per_family and the family list (not on threads).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "exactccd/types.hpp"
+#include "families.hpp"
+
+namespace exactccd::families {
+
+struct GeneratedFamily {
+  Family family;
+  std::vector<CcdResult> exact;  ///< the exact path (exact_ccd, toi_width 0), per member
+  /// Variants: members whose exact verdict equals that of the base member they round.
+  std::size_t kept_verdict = 0;
+  std::size_t collisions() const;
+};
+
+struct Corpus {
+  std::uint64_t seed = 1;
+  int per_family = kDefaultPerFamily;
+  std::vector<GeneratedFamily> families;
+};
+
+/// Generates the named families (all when empty) and decides every member with the exact
+/// path, in parallel (TBB). Throws std::invalid_argument for an unknown family or a bad
+/// per_family.
+Corpus generate_corpus(std::uint64_t seed, int per_family,
+                       const std::vector<std::string>& names = {});
+
+/// Base families: one line per member whose exact verdict or TOI contradicts the construction
+/// (collides; toi_lo <= t* <= toi_hi with the tightest pair: lo == hi == t* when t* is a
+/// double, else consecutive doubles around it). Empty when all agree; variants: empty.
+std::vector<std::string> claim_mismatches(const GeneratedFamily& family);
+
+/// "<family>/<vertex-face|edge-edge>"
+std::string family_folder(const Family& family);
+std::string data_csv_text(const GeneratedFamily& family);
+std::string toi_csv_text(const GeneratedFamily& family);
+std::string manifest_text(const Corpus& corpus);
+
+/// Writes the corpus under `dir` (created if needed). Files of a previous run in folders named
+/// after a family (data_*.csv, toi_*.csv) are removed first. Throws std::runtime_error when a
+/// file cannot be written.
+void write_corpus(const Corpus& corpus, const std::string& dir);
+
+/// `value` as its exact lowest-terms fraction "num,den" (0 as "0,1").
+std::string exact_fraction(double value);
+
+}  // namespace exactccd::families

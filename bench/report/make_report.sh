@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# The speed-versus-error report, in one command (from anywhere in the repository):
+#
+#   bash bench/report/make_report.sh
+#
+# Builds the `exactccd` command if needed (Release, in build/ or $EXACTCCD_BUILD_DIR), runs
+# `exactccd study` on the shipped sample queries, the generated degenerate suite
+# (tests/data/degenerate-suite, when present) and the simulation-like set, and writes
+# bench/report/REPORT.md, bench/report/speed_vs_error_<dataset>.png and bench/report/toi_error.png
+# (the study's raw JSON too when $EXACTCCD_STUDY_JSON names a file). Plots need Debian's
+# python3-matplotlib (.ci/install-deps.sh --with-plots installs it). About 6 minutes on a
+# 2-core machine, mostly the exact path timed on the 1.2 million simulation-like queries.
+# Exit status: the study's (0: the certified methods showed no false positive, false negative
+# or late TOI); 2 when matplotlib is missing or the study could not run.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+cd "$root"
+build=${EXACTCCD_BUILD_DIR:-build}
+out=bench/report
+# The simulation-like set: the full default configuration (README: about 1.2 million queries).
+simulation_args=(--simulation --resolution 36 --steps 120 --seed 1)
+
+if ! /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+  echo "make_report: python3-matplotlib is missing: run 'bash .ci/install-deps.sh --with-plots'" >&2
+  exit 2
+fi
+
+if [[ ! -f "$build/CMakeCache.txt" ]]; then
+  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$build" --target exactccd_cli -j "$(nproc)"
+exactccd="$build/tools/exactccd"
+
+paths=(tests/data/sample-queries)
+if [[ -f tests/data/degenerate-suite/manifest.json ]]; then
+  paths+=(tests/data/degenerate-suite)
+fi
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+command=("$exactccd" study --json --out-md "$tmp/tables.md" "${simulation_args[@]}" "${paths[@]}")
+echo "make_report: ${command[*]}" >&2
+status=0
+"${command[@]}" > "$tmp/study.json" || status=$?
+if [[ $status -gt 1 ]]; then
+  echo "make_report: exactccd study failed (exit status $status)" >&2
+  exit "$status"
+fi
+
+compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
+compiler_version=$("${compiler:-c++}" --version | head -n 1)
+commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [[ -n $(git status --porcelain 2>/dev/null) ]]; then commit="$commit (with uncommitted changes)"; fi
+
+if [[ -n ${EXACTCCD_STUDY_JSON:-} ]]; then cp "$tmp/study.json" "$EXACTCCD_STUDY_JSON"; fi
+/usr/bin/python3 "$out/plot_report.py" --json "$tmp/study.json" --tables "$tmp/tables.md" \
+  --out-dir "$out" --command "bash bench/report/make_report.sh" \
+  --study-command "exactccd study --json --out-md TABLES ${simulation_args[*]} ${paths[*]}" \
+  --compiler "$compiler_version" --commit "$commit" --study-status "$status"
+echo "make_report: wrote $out/REPORT.md and its plots" >&2
+exit "$status"
