@@ -51,7 +51,11 @@ fi
 compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
 compiler_version=$("${compiler:-c++}" --version | head -n 1)
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [[ -n $(git status --porcelain 2>/dev/null) ]]; then commit="$commit (with uncommitted changes)"; fi
+# Changes other than this report's own outputs (from an earlier run) mark the source as modified.
+if [[ -n $(git status --porcelain -- . ':!bench/report/REPORT.md' ':!bench/report/*.png' \
+  2>/dev/null) ]]; then
+  commit="$commit (with uncommitted changes)"
+fi
 
 if [[ -n ${EXACTCCD_STUDY_JSON:-} ]]; then cp "$tmp/study.json" "$EXACTCCD_STUDY_JSON"; fi
 /usr/bin/python3 "$out/plot_report.py" --json "$tmp/study.json" --tables "$tmp/tables.md" \
