@@ -118,9 +118,9 @@ FilterOutcome no_contact() {
 
 FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options,
                                  ExactAtDoubles& exact) {
-  // Semi-static stage (round to nearest, no guard needed): over [0, 1] only.
-  if (options.t_max == 1.0 &&
-      coplanarity_cubic_root_free_semistatic(q.b_t0 - q.a_t0, q.b_t1 - q.a_t1, q.c_t0 - q.a_t0,
+  // Semi-static stage (round to nearest, no guard needed): root-free on [0, 1] implies
+  // root-free on [0, t_max] for every t_max <= 1.
+  if (coplanarity_cubic_root_free_semistatic(q.b_t0 - q.a_t0, q.b_t1 - q.a_t1, q.c_t0 - q.a_t0,
                                              q.c_t1 - q.a_t1, q.p_t0 - q.a_t0, q.p_t1 - q.a_t1))
     return no_contact();
   RoundingGuard guard;
@@ -134,8 +134,7 @@ FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& opt
 
 FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
                                ExactAtDoubles& exact) {
-  if (options.t_max == 1.0 &&
-      coplanarity_cubic_root_free_semistatic(q.ea1_t0 - q.ea0_t0, q.ea1_t1 - q.ea0_t1,
+  if (coplanarity_cubic_root_free_semistatic(q.ea1_t0 - q.ea0_t0, q.ea1_t1 - q.ea0_t1,
                                              q.eb0_t0 - q.ea0_t0, q.eb0_t1 - q.ea0_t1,
                                              q.eb1_t0 - q.ea0_t0, q.eb1_t1 - q.ea0_t1))
     return no_contact();

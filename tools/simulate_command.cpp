@@ -5,17 +5,16 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <gmpxx.h>
 #include <iostream>
 #include <regex>
 #include <stdexcept>
 
 #include "check.hpp"
 #include "cli_common.hpp"
+#include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
 
 namespace exactccd::cli {
@@ -36,47 +35,6 @@ std::vector<std::uint8_t> exact_truth(const std::vector<sim::SimulationQuery>& q
                       }
                     });
   return truth;
-}
-
-void append_exact_fraction(std::string& out, double value) {
-  if (!std::isfinite(value)) throw std::invalid_argument("non-finite coordinate");
-  if (value == 0.0) {
-    out += "0,1";
-    return;
-  }
-  // value = fraction * 2^exponent with 1/2 <= |fraction| < 1, so fraction * 2^53 is an
-  // integer of at most 53 bits (subnormals included): value = mantissa * 2^(exponent - 53).
-  int exponent = 0;
-  const double fraction = std::frexp(value, &exponent);
-  const auto mantissa = static_cast<std::int64_t>(std::ldexp(fraction, 53));
-  std::uint64_t m = mantissa < 0 ? static_cast<std::uint64_t>(-mantissa)
-                                 : static_cast<std::uint64_t>(mantissa);
-  exponent -= 53;
-  while ((m & 1u) == 0) {  // lowest terms: the denominator is a power of two
-    m >>= 1;
-    ++exponent;
-  }
-  if (mantissa < 0) out += '-';
-  if (exponent >= 0) {
-    if (exponent <= 10) {  // m < 2^53, so m * 2^10 < 2^63
-      out += std::to_string(m << exponent);
-    } else {
-      mpz_class numerator(static_cast<unsigned long>(m));
-      mpz_mul_2exp(numerator.get_mpz_t(), numerator.get_mpz_t(), exponent);
-      out += numerator.get_str();
-    }
-    out += ",1";
-    return;
-  }
-  out += std::to_string(m);
-  out += ',';
-  if (-exponent <= 63) {
-    out += std::to_string(std::uint64_t{1} << -exponent);
-  } else {
-    mpz_class denominator;
-    mpz_setbit(denominator.get_mpz_t(), -exponent);
-    out += denominator.get_str();
-  }
 }
 
 namespace {
@@ -107,17 +65,8 @@ void write_chunk(const FileChunk& chunk, const std::vector<sim::SimulationQuery>
                  const std::vector<std::uint8_t>& truth) {
   std::string text;
   text.reserve(chunk.indices.size() * 8 * 128);
-  for (const std::size_t i : chunk.indices) {
-    const char* truth_field = truth[i] ? ",1\n" : ",0\n";
-    for (const Eigen::Vector3d& p : queries[i].points) {
-      append_exact_fraction(text, p.x());
-      text += ',';
-      append_exact_fraction(text, p.y());
-      text += ',';
-      append_exact_fraction(text, p.z());
-      text += truth_field;
-    }
-  }
+  for (const std::size_t i : chunk.indices)
+    append_query_rows(text, queries[i].points, truth[i] != 0);
   std::ofstream out(chunk.path, std::ios::binary);
   out << text;
   out.close();

@@ -27,7 +27,4 @@ constexpr std::size_t kQueriesPerFile = 100000;
 /// computed in parallel (TBB); the result does not depend on the number of threads.
 std::vector<std::uint8_t> exact_truth(const std::vector<sim::SimulationQuery>& queries);
 
-/// `value` as the exact fraction "num,den" (den a power of two, in lowest terms; 0 as "0,1").
-void append_exact_fraction(std::string& out, double value);
-
 }  // namespace exactccd::cli

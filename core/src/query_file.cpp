@@ -1,8 +1,11 @@
 #include "exactccd/query_file.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <string_view>
 
 namespace exactccd {
@@ -139,6 +142,91 @@ std::vector<std::string> find_query_files(const std::string& path) {
     throw InputError(path, 0, "no vertex-face/*.csv or edge-edge/*.csv files below this directory");
   std::sort(files.begin(), files.end());
   return files;
+}
+
+// ---- Writing ----------------------------------------------------------------------------------
+
+void append_exact_fraction(std::string& out, double value) {
+  if (!std::isfinite(value)) throw std::invalid_argument("exactccd: non-finite coordinate");
+  if (value == 0.0) {
+    out += "0,1";
+    return;
+  }
+  // value = fraction * 2^exponent with 1/2 <= |fraction| < 1, so fraction * 2^53 is an
+  // integer of at most 53 bits (subnormals included): value = mantissa * 2^(exponent - 53).
+  int exponent = 0;
+  const double fraction = std::frexp(value, &exponent);
+  const auto mantissa = static_cast<std::int64_t>(std::ldexp(fraction, 53));
+  std::uint64_t m = mantissa < 0 ? static_cast<std::uint64_t>(-mantissa)
+                                 : static_cast<std::uint64_t>(mantissa);
+  exponent -= 53;
+  while ((m & 1u) == 0) {  // lowest terms: the denominator is a power of two
+    m >>= 1;
+    ++exponent;
+  }
+  if (mantissa < 0) out += '-';
+  if (exponent >= 0) {
+    if (exponent <= 10) {  // m < 2^53, so m * 2^10 < 2^63
+      out += std::to_string(m << exponent);
+    } else {
+      mpz_class numerator(static_cast<unsigned long>(m));
+      mpz_mul_2exp(numerator.get_mpz_t(), numerator.get_mpz_t(), exponent);
+      out += numerator.get_str();
+    }
+    out += ",1";
+    return;
+  }
+  out += std::to_string(m);
+  out += ',';
+  if (-exponent <= 63) {
+    out += std::to_string(std::uint64_t{1} << -exponent);
+  } else {
+    mpz_class denominator;
+    mpz_setbit(denominator.get_mpz_t(), -exponent);
+    out += denominator.get_str();
+  }
+}
+
+void append_query_rows(std::string& out, const std::array<Eigen::Vector3d, 8>& rows, bool truth) {
+  for (const Eigen::Vector3d& p : rows)
+    if (!p.allFinite()) throw std::invalid_argument("exactccd: non-finite coordinate");
+  const char* truth_field = truth ? ",1\n" : ",0\n";
+  for (const Eigen::Vector3d& p : rows) {
+    append_exact_fraction(out, p.x());
+    out += ',';
+    append_exact_fraction(out, p.y());
+    out += ',';
+    append_exact_fraction(out, p.z());
+    out += truth_field;
+  }
+}
+
+void write_query_rows(std::ostream& out, const std::array<Eigen::Vector3d, 8>& rows, bool truth) {
+  std::string text;
+  append_query_rows(text, rows, truth);
+  out << text;
+}
+
+void append_query(std::string& out, const VertexFaceQuery& q, bool truth) {
+  append_query_rows(out, {q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1, q.c_t1}, truth);
+}
+
+void append_query(std::string& out, const EdgeEdgeQuery& q, bool truth) {
+  append_query_rows(
+      out, {q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1},
+      truth);
+}
+
+void write_query(std::ostream& out, const VertexFaceQuery& q, bool truth) {
+  std::string text;
+  append_query(text, q, truth);
+  out << text;
+}
+
+void write_query(std::ostream& out, const EdgeEdgeQuery& q, bool truth) {
+  std::string text;
+  append_query(text, q, truth);
+  out << text;
 }
 
 }  // namespace exactccd

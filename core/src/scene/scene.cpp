@@ -1,0 +1,500 @@
+// Scene-level CCD (core/include/exactccd/scene.hpp): meshes, their hierarchies, the broad
+// phase and the parallel narrow phase. PROOF: proofs/scene.md
+#include "exactccd/scene.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
+
+#include "core/src/scene/bvh.hpp"
+#include "core/src/scene/time_window.hpp"
+#include "exactccd/ccd.hpp"
+
+namespace exactccd {
+
+bool operator<(const ScenePair& a, const ScenePair& b) {
+  return std::tie(a.type, a.first_mesh, a.first_index, a.second_mesh, a.second_index) <
+         std::tie(b.type, b.first_mesh, b.first_index, b.second_mesh, b.second_index);
+}
+
+const char* to_string(BroadPhase broad_phase) noexcept {
+  switch (broad_phase) {
+    case BroadPhase::swept_bvh: return "swept_bvh";
+    case BroadPhase::static_bvh: return "static_bvh";
+  }
+  return "unknown";
+}
+
+namespace {
+
+using scene::Box;
+using scene::Bvh;
+
+/// Which positions a hierarchy bounds.
+enum class Span : int { swept = 0, start = 1, end = 2 };
+
+/// The three hierarchies (vertices, edges, triangles) of one mesh over one span.
+struct Hierarchies {
+  Bvh vertices, edges, faces;
+  bool built = false;
+  bool stale = false;  ///< positions changed since the last refit
+};
+
+struct Mesh {
+  bool is_static = false;
+  Positions start, end;
+  Triangles triangles;
+  Edges edges;
+  Hierarchies spans[3];
+};
+
+Edges edges_of(const Triangles& triangles) {
+  std::vector<std::pair<std::int32_t, std::int32_t>> sides;
+  sides.reserve(static_cast<std::size_t>(triangles.rows()) * 3);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = triangles(f, k), b = triangles(f, (k + 1) % 3);
+      sides.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(sides.begin(), sides.end());
+  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+  Edges edges(static_cast<Eigen::Index>(sides.size()), 2);
+  for (std::size_t e = 0; e < sides.size(); ++e) {
+    edges(static_cast<Eigen::Index>(e), 0) = sides[e].first;
+    edges(static_cast<Eigen::Index>(e), 1) = sides[e].second;
+  }
+  return edges;
+}
+
+void check_positions(const Positions& x, const char* what) {
+  if (!x.allFinite())
+    throw std::invalid_argument(std::string("exactccd: non-finite coordinate in ") + what);
+}
+
+void check_triangles(const Triangles& triangles, Eigen::Index vertex_count) {
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k)
+      if (triangles(f, k) < 0 || triangles(f, k) >= vertex_count)
+        throw std::invalid_argument("exactccd: triangle " + std::to_string(f) +
+                                    " has a vertex index out of range");
+    if (triangles(f, 0) == triangles(f, 1) || triangles(f, 1) == triangles(f, 2) ||
+        triangles(f, 0) == triangles(f, 2))
+      throw std::invalid_argument("exactccd: triangle " + std::to_string(f) +
+                                  " repeats a vertex");
+  }
+  if (vertex_count > std::numeric_limits<std::int32_t>::max())
+    throw std::invalid_argument("exactccd: too many vertices in one mesh");
+}
+
+void check_options(const SceneOptions& o) {
+  if (!(o.ccd.t_max > 0.0 && o.ccd.t_max <= 1.0))
+    throw std::invalid_argument("exactccd: t_max must lie in (0, 1]");
+  if (!(o.ccd.toi_width >= 0.0) || !std::isfinite(o.ccd.toi_width))
+    throw std::invalid_argument("exactccd: toi_width must be finite and >= 0");
+  if (o.max_threads < 0) throw std::invalid_argument("exactccd: max_threads must be >= 0");
+}
+
+Eigen::Vector3d row(const Positions& x, std::int32_t i) { return x.row(i).transpose(); }
+
+/// Vertex `k` of primitive `p`: the vertex itself (Indices == void) or a row of an index matrix.
+template <int K>
+using IndexRows = Eigen::Matrix<std::int32_t, Eigen::Dynamic, K, Eigen::RowMajor>;
+
+/// Boxes of a mesh's primitives over a span: min/max of input doubles only, so exact. A moving
+/// primitive stays in the box of its start and end positions (proofs/scene.md#swept-boxes).
+template <int K>
+std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* indices,
+                                 Eigen::Index count) {
+  std::vector<Box> boxes(static_cast<std::size_t>(count));
+  const bool use_start = span != Span::end || m.is_static;
+  const bool use_end = span != Span::start && !m.is_static;
+  const Positions& first = use_start ? m.start : m.end;
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      for (Eigen::Index p = r.begin(); p != r.end(); ++p) {
+                        const auto vertex = [&](int k) {
+                          return indices ? (*indices)(p, k) : static_cast<std::int32_t>(p);
+                        };
+                        Box box = scene::point_box(first.row(vertex(0)));
+                        for (int k = 0; k < K; ++k) {
+                          if (use_start) scene::grow(box, m.start.row(vertex(k)));
+                          if (use_end) scene::grow(box, m.end.row(vertex(k)));
+                        }
+                        boxes[static_cast<std::size_t>(p)] = box;
+                      }
+                    });
+  return boxes;
+}
+
+void update(Bvh& bvh, const std::vector<Box>& boxes, bool built, SceneStats& stats) {
+  if (built) {
+    bvh.refit(boxes);
+    ++stats.hierarchies_refitted;
+    if (!bvh.degraded()) return;
+  }
+  bvh.build(boxes);
+  ++stats.hierarchies_built;
+}
+
+/// Builds, refits or rebuilds (when degraded) the hierarchies of one mesh over one span.
+Hierarchies& prepare(Mesh& m, Span span, SceneStats& stats) {
+  // A static mesh has one set of positions: one set of hierarchies serves every span.
+  Hierarchies& h = m.spans[m.is_static ? 0 : static_cast<int>(span)];
+  if (h.built && !h.stale) return h;
+  update(h.vertices, primitive_boxes<1>(m, span, nullptr, m.start.rows()), h.built, stats);
+  update(h.edges, primitive_boxes<2>(m, span, &m.edges, m.edges.rows()), h.built, stats);
+  update(h.faces, primitive_boxes<3>(m, span, &m.triangles, m.triangles.rows()), h.built, stats);
+  h.built = true;
+  h.stale = false;
+  return h;
+}
+
+bool triangle_has_vertex(const Triangles& t, std::uint32_t f, std::int32_t v) {
+  const auto fi = static_cast<Eigen::Index>(f);
+  return t(fi, 0) == v || t(fi, 1) == v || t(fi, 2) == v;
+}
+
+bool edges_share_vertex(const Edges& e, std::uint32_t i, std::uint32_t j) {
+  const auto a = static_cast<Eigen::Index>(i), b = static_cast<Eigen::Index>(j);
+  return e(a, 0) == e(b, 0) || e(a, 0) == e(b, 1) || e(a, 1) == e(b, 0) || e(a, 1) == e(b, 1);
+}
+
+/// The ordered mesh pairs a call visits: vertex-face (A, B) for A != B unless both are static,
+/// and (A, A) for a moving mesh with self-collision; edge-edge the same with A <= B.
+template <class F>
+void for_each_mesh_pair(const std::vector<Mesh>& meshes, bool self, bool ordered, F&& f) {
+  for (std::size_t a = 0; a < meshes.size(); ++a)
+    for (std::size_t b = ordered ? 0 : a; b < meshes.size(); ++b) {
+      if (meshes[a].is_static && meshes[b].is_static) continue;
+      if (a == b && !self) continue;
+      f(static_cast<MeshId>(a), static_cast<MeshId>(b));
+    }
+}
+
+}  // namespace
+
+struct Scene::Impl {
+  std::vector<Mesh> meshes;
+
+  const Mesh& mesh(MeshId id) const {
+    if (id >= meshes.size()) throw std::invalid_argument("exactccd: no mesh " + std::to_string(id));
+    return meshes[id];
+  }
+
+  VertexFaceQuery vertex_face(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& b = mesh(p.second_mesh);
+    const auto v = static_cast<std::int32_t>(p.first_index);
+    const auto f = static_cast<Eigen::Index>(p.second_index);
+    return {row(a.start, v), row(b.start, b.triangles(f, 0)), row(b.start, b.triangles(f, 1)),
+            row(b.start, b.triangles(f, 2)), row(a.end, v), row(b.end, b.triangles(f, 0)),
+            row(b.end, b.triangles(f, 1)), row(b.end, b.triangles(f, 2))};
+  }
+
+  EdgeEdgeQuery edge_edge(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& b = mesh(p.second_mesh);
+    const auto i = static_cast<Eigen::Index>(p.first_index);
+    const auto j = static_cast<Eigen::Index>(p.second_index);
+    return {row(a.start, a.edges(i, 0)), row(a.start, a.edges(i, 1)),
+            row(b.start, b.edges(j, 0)), row(b.start, b.edges(j, 1)),
+            row(a.end, a.edges(i, 0)),   row(a.end, a.edges(i, 1)),
+            row(b.end, b.edges(j, 0)),   row(b.end, b.edges(j, 1))};
+  }
+
+  /// The candidate pairs of the swept hierarchies (in no particular order): every pair of
+  /// primitives whose swept boxes overlap, pairs within a mesh sharing a vertex excluded.
+  std::vector<ScenePair> swept_candidates(const SceneOptions& o, SceneStats& stats) {
+    for (Mesh& m : meshes) prepare(m, Span::swept, stats);
+    tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+    for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
+      const Mesh& mb = meshes[b];
+      meshes[a].spans[0].vertices.parallel_for_each_overlap(
+          mb.spans[0].faces, [&](std::uint32_t v, std::uint32_t f) {
+            if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v)))
+              return;
+            found.local().push_back({QueryType::vertex_face, a, v, b, f});
+          });
+    });
+    for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
+      const Mesh& ma = meshes[a];
+      if (a == b) {
+        ma.spans[0].edges.parallel_for_each_self_overlap([&](std::uint32_t i, std::uint32_t j) {
+          if (edges_share_vertex(ma.edges, i, j)) return;
+          found.local().push_back({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)});
+        });
+      } else {
+        ma.spans[0].edges.parallel_for_each_overlap(
+            meshes[b].spans[0].edges, [&](std::uint32_t i, std::uint32_t j) {
+              found.local().push_back({QueryType::edge_edge, a, i, b, j});
+            });
+      }
+    });
+    return concatenate(found);
+  }
+
+  static std::vector<ScenePair> concatenate(
+      tbb::enumerable_thread_specific<std::vector<ScenePair>>& parts) {
+    std::size_t total = 0;
+    for (const auto& part : parts) total += part.size();
+    std::vector<ScenePair> all;
+    all.reserve(total);
+    for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+    return all;
+  }
+
+  /// The candidates of the older scheme: pairs whose boxes overlap at the start or at the end.
+  std::vector<ScenePair> static_candidates(const SceneOptions& o, SceneStats& stats) {
+    tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+    for (Span span : {Span::start, Span::end}) {
+      for (Mesh& m : meshes) prepare(m, span, stats);
+      const auto& at = [&](const Mesh& m) -> const Hierarchies& {
+        return m.spans[m.is_static ? 0 : static_cast<int>(span)];
+      };
+      for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
+        const Mesh& mb = meshes[b];
+        at(meshes[a]).vertices.parallel_for_each_overlap(
+            at(mb).faces, [&](std::uint32_t v, std::uint32_t f) {
+              if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v)))
+                return;
+              found.local().push_back({QueryType::vertex_face, a, v, b, f});
+            });
+      });
+      for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
+        const Mesh& ma = meshes[a];
+        if (a == b) {
+          at(ma).edges.parallel_for_each_self_overlap([&](std::uint32_t i, std::uint32_t j) {
+            if (edges_share_vertex(ma.edges, i, j)) return;
+            found.local().push_back({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)});
+          });
+        } else {
+          at(ma).edges.parallel_for_each_overlap(at(meshes[b]).edges,
+                                                 [&](std::uint32_t i, std::uint32_t j) {
+                                                   found.local().push_back(
+                                                       {QueryType::edge_edge, a, i, b, j});
+                                                 });
+        }
+      });
+    }
+    std::vector<ScenePair> all = concatenate(found);
+    tbb::parallel_sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    return all;
+  }
+
+  /// The pair's test over [0, options.t_max].
+  CcdResult test(const ScenePair& p, const CcdOptions& options) const {
+    return p.type == QueryType::vertex_face ? vertex_face_ccd(vertex_face(p), options)
+                                            : edge_edge_ccd(edge_edge(p), options);
+  }
+
+  SceneResult find_contacts(const SceneOptions& o) {
+    SceneResult result;
+    std::vector<ScenePair> candidates = o.broad_phase == BroadPhase::swept_bvh
+                                            ? swept_candidates(o, result.stats)
+                                            : static_candidates(o, result.stats);
+    // The narrow phase over a flat list: work stealing balances clusters of costly pairs.
+    tbb::enumerable_thread_specific<std::vector<SceneContact>> found;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        auto& local = found.local();
+                        for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                          const CcdResult c = test(candidates[k], o.ccd);
+                          if (c.collides) local.push_back({candidates[k], c.toi_lo, c.toi_hi});
+                        }
+                      });
+    for (const auto& part : found)
+      result.contacts.insert(result.contacts.end(), part.begin(), part.end());
+    count(candidates, result.stats);
+    result.stats.narrow_phase_tests = candidates.size();
+    // Sorted output: the same whatever the number of threads and the order they ran in.
+    const auto by_pair = [](const SceneContact& a, const SceneContact& b) { return a.pair < b.pair; };
+    tbb::parallel_sort(result.contacts.begin(), result.contacts.end(), by_pair);
+    if (o.record_candidates) {
+      tbb::parallel_sort(candidates.begin(), candidates.end());
+      result.candidates = std::move(candidates);
+    }
+    if (!result.contacts.empty()) result.earliest = earliest_of(result.contacts);
+    return result;
+  }
+
+  static void count(const std::vector<ScenePair>& candidates, SceneStats& stats) {
+    for (const ScenePair& p : candidates)
+      ++(p.type == QueryType::vertex_face ? stats.vertex_face_candidates
+                                          : stats.edge_edge_candidates);
+  }
+
+  /// Smallest toi_lo, ties broken by pair order; `contacts` sorted by pair.
+  static SceneContact earliest_of(const std::vector<SceneContact>& contacts) {
+    const SceneContact* best = &contacts.front();
+    for (const SceneContact& c : contacts)
+      if (c.toi_lo < best->toi_lo) best = &c;
+    return *best;
+  }
+
+  EarliestContact earliest_contact(const SceneOptions& o);
+};
+
+/// The earliest contact with pruning. A shared bound T only decreases; every pair is tested
+/// over [0, T] only (after a certified cull over that window). When a test finds contact with
+/// interval [lo, hi], T becomes the double just above hi + toi_width: any pair whose contact time
+/// exceeds that bound has a toi_lo strictly above the found pair's, so it cannot be the earliest
+/// (proofs/scene.md#earliest-contact). Pairs found along the way are decided again with the
+/// caller's options at the end, so the answer is exactly find_contacts' earliest, whatever the
+/// order in which threads met the pairs.
+EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
+  EarliestContact out;
+  const double t_max = o.ccd.t_max;
+  std::atomic<double> bound{t_max};
+  const std::vector<ScenePair> candidates = swept_candidates(o, out.stats);
+  count(candidates, out.stats);
+  struct Found {
+    std::vector<SceneContact> contacts;
+    std::uint64_t tests = 0;
+  };
+  tbb::enumerable_thread_specific<Found> locals;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64), [&](const tbb::blocked_range<std::size_t>& range) {
+    Found& local = locals.local();
+    for (std::size_t k = range.begin(); k != range.end(); ++k) {
+      const ScenePair& p = candidates[k];
+      const double window = bound.load(std::memory_order_relaxed);
+      if (window < t_max) {
+        const bool disjoint = p.type == QueryType::vertex_face
+                                  ? scene::disjoint_over_window(vertex_face(p), window)
+                                  : scene::disjoint_over_window(edge_edge(p), window);
+        if (disjoint) continue;
+      }
+      ++local.tests;
+      CcdOptions options = o.ccd;
+      options.t_max = window;
+      const CcdResult r = test(p, options);
+      if (!r.collides) continue;
+      local.contacts.push_back({p, r.toi_lo, r.toi_hi});
+      const double next = std::min(
+          t_max,
+          std::nextafter(r.toi_hi + o.ccd.toi_width, std::numeric_limits<double>::infinity()));
+      double current = bound.load(std::memory_order_relaxed);
+      while (next < current && !bound.compare_exchange_weak(current, next)) {
+      }
+    }
+  });
+  const double final_bound = bound.load();
+  std::vector<SceneContact> found;
+  for (Found& local : locals) {
+    out.stats.narrow_phase_tests += local.tests;
+    for (const SceneContact& c : local.contacts)
+      if (c.toi_lo <= final_bound) found.push_back(c);
+  }
+  if (found.empty()) return out;
+  // Decide the survivors again over the caller's window: their intervals are then exactly
+  // those find_contacts reports.
+  for (SceneContact& c : found) {
+    const CcdResult r = test(c.pair, o.ccd);
+    c.toi_lo = r.toi_lo;
+    c.toi_hi = r.toi_hi;
+  }
+  std::sort(found.begin(), found.end(),
+            [](const SceneContact& a, const SceneContact& b) { return a.pair < b.pair; });
+  out.collides = true;
+  out.contact = earliest_of(found);
+  return out;
+}
+
+Scene::Scene() : impl_(std::make_unique<Impl>()) {}
+Scene::~Scene() = default;
+Scene::Scene(Scene&&) noexcept = default;
+Scene& Scene::operator=(Scene&&) noexcept = default;
+
+MeshId Scene::add_mesh(const Positions& positions, const Triangles& triangles) {
+  check_positions(positions, "the mesh's positions");
+  check_triangles(triangles, positions.rows());
+  Mesh m;
+  m.start = positions;
+  m.end = positions;
+  m.triangles = triangles;
+  m.edges = edges_of(triangles);
+  impl_->meshes.push_back(std::move(m));
+  return static_cast<MeshId>(impl_->meshes.size() - 1);
+}
+
+MeshId Scene::add_static_mesh(const Positions& positions, const Triangles& triangles) {
+  const MeshId id = add_mesh(positions, triangles);
+  impl_->meshes[id].is_static = true;
+  return id;
+}
+
+void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) {
+  impl_->mesh(id);
+  Mesh& m = impl_->meshes[id];
+  if (m.is_static) throw std::invalid_argument("exactccd: set_motion on a static mesh");
+  if (start.rows() != m.start.rows() || end.rows() != m.start.rows())
+    throw std::invalid_argument("exactccd: set_motion needs one row per vertex of the mesh");
+  check_positions(start, "the start positions");
+  check_positions(end, "the end positions");
+  m.start = start;
+  m.end = end;
+  for (Hierarchies& h : m.spans) h.stale = true;
+}
+
+std::size_t Scene::mesh_count() const { return impl_->meshes.size(); }
+bool Scene::is_static(MeshId id) const { return impl_->mesh(id).is_static; }
+const Triangles& Scene::triangles(MeshId id) const { return impl_->mesh(id).triangles; }
+const Edges& Scene::edges(MeshId id) const { return impl_->mesh(id).edges; }
+const Positions& Scene::start_positions(MeshId id) const { return impl_->mesh(id).start; }
+const Positions& Scene::end_positions(MeshId id) const { return impl_->mesh(id).end; }
+
+namespace {
+
+/// Runs f in an arena of at most max_threads threads (0: the caller's arena).
+template <class F>
+auto with_threads(int max_threads, F&& f) {
+  if (max_threads == 0) return f();
+  tbb::task_arena arena(max_threads);
+  return arena.execute(f);
+}
+
+}  // namespace
+
+SceneResult Scene::find_contacts(const SceneOptions& options) {
+  check_options(options);
+  return with_threads(options.max_threads, [&] { return impl_->find_contacts(options); });
+}
+
+EarliestContact Scene::earliest_contact(const SceneOptions& options) {
+  check_options(options);
+  if (options.broad_phase != BroadPhase::swept_bvh)
+    throw std::invalid_argument("exactccd: earliest_contact needs the swept_bvh broad phase");
+  return with_threads(options.max_threads, [&] { return impl_->earliest_contact(options); });
+}
+
+VertexFaceQuery Scene::vertex_face_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::vertex_face)
+    throw std::invalid_argument("exactccd: vertex_face_query of an edge-edge pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (pair.first_index >= a.start.rows() || pair.second_index >= b.triangles.rows())
+    throw std::invalid_argument("exactccd: pair index out of range");
+  return impl_->vertex_face(pair);
+}
+
+EdgeEdgeQuery Scene::edge_edge_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::edge_edge)
+    throw std::invalid_argument("exactccd: edge_edge_query of a vertex-face pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (pair.first_index >= a.edges.rows() || pair.second_index >= b.edges.rows())
+    throw std::invalid_argument("exactccd: pair index out of range");
+  return impl_->edge_edge(pair);
+}
+
+}  // namespace exactccd
