@@ -25,7 +25,11 @@ class IntegerQuery {
 
   /// Doubles around the only root of the cubic in [lo, hi] (0 <= lo < hi; the cubic non-zero
   /// with opposite signs at lo and hi, and a single simple root between them), meeting `width`
-  /// (0: the tightest pair; toi_lo == toi_hi when the root is a double).
+  /// (0: the tightest pair; toi_lo == toi_hi when the root is a double). The result is the
+  /// one of bit-order bisection (an exact sign at the middle double of what is left, until
+  /// no double is left inside or hi - lo <= width exactly), which for width > 0 fixes which
+  /// pair is returned; it is reached with exact signs at points chosen by Newton's method,
+  /// usually two or three evaluations, at most 73 (bisection alone: up to 65).
   std::pair<double, double> bisect_root(double lo, double hi, double width) const;
 
   /// Exact contact test at the double t in [0, 1], where the cubic vanishes (coplanar).
