@@ -5,7 +5,8 @@
 #
 # Builds the `exactccd` command if needed (Release, in build/ or $EXACTCCD_BUILD_DIR), runs
 # `exactccd study` on the shipped sample queries, the generated degenerate suite
-# (tests/data/degenerate-suite, when present) and the simulation-like set, and writes
+# (tests/data/degenerate-suite, when present), the scene queries (tests/data/scene-queries) and
+# the simulation-like set, and writes
 # bench/report/REPORT.md, bench/report/speed_vs_error_<dataset>.png and bench/report/toi_error.png
 # (the study's raw JSON too when $EXACTCCD_STUDY_JSON names a file). Plots need Debian's
 # python3-matplotlib (.ci/install-deps.sh --with-plots installs it). About 6 minutes on a
@@ -35,6 +36,10 @@ exactccd="$build/tools/exactccd"
 paths=(tests/data/sample-queries)
 if [[ -f tests/data/degenerate-suite/manifest.json ]]; then
   paths+=(tests/data/degenerate-suite)
+fi
+# The queries of the demonstration scenes (bench/scenes/export_queries.py).
+if [[ -d tests/data/scene-queries ]]; then
+  paths+=(tests/data/scene-queries)
 fi
 
 tmp=$(mktemp -d)
