@@ -45,6 +45,7 @@
 #include <vector>
 
 #include "bench/scenes/meshes.hpp"
+#include "bench/scenes/scene_cli.hpp"
 #include "exactccd/discrete.hpp"
 #include "exactccd/scene.hpp"
 
@@ -442,25 +443,7 @@ int main(int argc, char** argv) {
                  "Clearance per side c = 2^-BITS of the hole's side")
       ->capture_default_str()
       ->check(CLI::Range(2, 39));
-  app.add_option("--threads", c.threads, "At most this many threads (0: all)")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
-  app.add_option("--mode", c.mode,
-                 "Each pair's test: filtered (certified, the default), exact, or float_only "
-                 "(uncertified doubles, for comparison: the self-check may fail)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, Mode>{{"filtered", Mode::filtered},
-                                      {"exact", Mode::exact},
-                                      {"float_only", Mode::float_only}},
-          CLI::ignore_case))
-      ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
-  try {
-    return run_scene(c);
-  } catch (const CLI::Error& e) {
-    return app.exit(e);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "exactccd_peg_in_hole: %s\n", e.what());
-    return 3;
-  }
+  exactccd::scenes::add_threads_and_mode_options(app, c.threads, c.mode);
+  return exactccd::scenes::parse_and_run(app, argc, argv, "exactccd_peg_in_hole",
+                                          [&] { return run_scene(c); });
 }

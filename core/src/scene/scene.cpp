@@ -212,15 +212,15 @@ struct Scene::Impl {
             row(b.end, b.edges(j, 0)),   row(b.end, b.edges(j, 1))};
   }
 
-  /// The candidate pairs of the swept hierarchies (in no particular order): every pair of
-  /// primitives whose swept boxes overlap, pairs within a mesh sharing a vertex excluded.
-  std::vector<ScenePair> swept_candidates(const SceneOptions& o, SceneStats& stats) {
-    for (Mesh& m : meshes) prepare(m, Span::swept, stats);
-    tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+  /// Appends every candidate pair of the hierarchies `at(mesh)` (one span) to `found`: pairs
+  /// of primitives whose boxes overlap, pairs within a mesh sharing a vertex excluded.
+  template <class At>
+  void gather_candidates(const SceneOptions& o, const At& at,
+                         tbb::enumerable_thread_specific<std::vector<ScenePair>>& found) const {
     for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
       const Mesh& mb = meshes[b];
-      meshes[a].spans[0].vertices.parallel_for_each_overlap(
-          mb.spans[0].faces, [&](std::uint32_t v, std::uint32_t f) {
+      at(meshes[a]).vertices.parallel_for_each_overlap(
+          at(mb).faces, [&](std::uint32_t v, std::uint32_t f) {
             if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v)))
               return;
             found.local().push_back({QueryType::vertex_face, a, v, b, f});
@@ -229,17 +229,24 @@ struct Scene::Impl {
     for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
       const Mesh& ma = meshes[a];
       if (a == b) {
-        ma.spans[0].edges.parallel_for_each_self_overlap([&](std::uint32_t i, std::uint32_t j) {
+        at(ma).edges.parallel_for_each_self_overlap([&](std::uint32_t i, std::uint32_t j) {
           if (edges_share_vertex(ma.edges, i, j)) return;
           found.local().push_back({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)});
         });
       } else {
-        ma.spans[0].edges.parallel_for_each_overlap(
-            meshes[b].spans[0].edges, [&](std::uint32_t i, std::uint32_t j) {
+        at(ma).edges.parallel_for_each_overlap(
+            at(meshes[b]).edges, [&](std::uint32_t i, std::uint32_t j) {
               found.local().push_back({QueryType::edge_edge, a, i, b, j});
             });
       }
     });
+  }
+
+  /// The candidate pairs of the swept hierarchies, in no particular order.
+  std::vector<ScenePair> swept_candidates(const SceneOptions& o, SceneStats& stats) {
+    for (Mesh& m : meshes) prepare(m, Span::swept, stats);
+    tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+    gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, found);
     return concatenate(found);
   }
 
@@ -253,38 +260,18 @@ struct Scene::Impl {
     return all;
   }
 
-  /// The candidates of the older scheme: pairs whose boxes overlap at the start or at the end.
+  /// The candidates of the older scheme: pairs whose boxes overlap at the start or at the end,
+  /// sorted, each once.
   std::vector<ScenePair> static_candidates(const SceneOptions& o, SceneStats& stats) {
     tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
     for (Span span : {Span::start, Span::end}) {
       for (Mesh& m : meshes) prepare(m, span, stats);
-      const auto& at = [&](const Mesh& m) -> const Hierarchies& {
-        return m.spans[m.is_static ? 0 : static_cast<int>(span)];
-      };
-      for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
-        const Mesh& mb = meshes[b];
-        at(meshes[a]).vertices.parallel_for_each_overlap(
-            at(mb).faces, [&](std::uint32_t v, std::uint32_t f) {
-              if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v)))
-                return;
-              found.local().push_back({QueryType::vertex_face, a, v, b, f});
-            });
-      });
-      for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
-        const Mesh& ma = meshes[a];
-        if (a == b) {
-          at(ma).edges.parallel_for_each_self_overlap([&](std::uint32_t i, std::uint32_t j) {
-            if (edges_share_vertex(ma.edges, i, j)) return;
-            found.local().push_back({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)});
-          });
-        } else {
-          at(ma).edges.parallel_for_each_overlap(at(meshes[b]).edges,
-                                                 [&](std::uint32_t i, std::uint32_t j) {
-                                                   found.local().push_back(
-                                                       {QueryType::edge_edge, a, i, b, j});
-                                                 });
-        }
-      });
+      gather_candidates(
+          o,
+          [span](const Mesh& m) -> const Hierarchies& {
+            return m.spans[m.is_static ? 0 : static_cast<int>(span)];
+          },
+          found);
     }
     std::vector<ScenePair> all = concatenate(found);
     tbb::parallel_sort(all.begin(), all.end());
@@ -365,6 +352,9 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
   tbb::enumerable_thread_specific<Found> locals;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64), [&](const tbb::blocked_range<std::size_t>& range) {
     Found& local = locals.local();
+    // Upward rounding for the window culls (time_window.hpp); each pair's test sets and restores
+    // its own mode, and the bound below only gets larger under upward rounding (still valid).
+    const filters::RoundingGuard upward;
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const ScenePair& p = candidates[k];
       const double window = bound.load(std::memory_order_relaxed);

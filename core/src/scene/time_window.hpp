@@ -3,7 +3,9 @@
 // Over [0, T] a vertex moving from x0 to x1 stays on the segment from x0 to x(T) = x0 +
 // T (x1 - x0), so in the box of those two points. x(T) is not a double in general: it is
 // enclosed by interval arithmetic with directed rounding, and the box is widened to the
-// enclosure, so a pair reported disjoint is disjoint at every t in [0, T].
+// enclosure, so a pair reported disjoint is disjoint at every t in [0, T]. The caller holds
+// rounding towards +infinity (filters::RoundingGuard), which Interval_nt<false> needs: one guard
+// for a whole batch of pairs, not a mode switch per pair.
 // PROOF: proofs/scene.md#time-window
 #pragma once
 
@@ -36,7 +38,6 @@ template <std::size_t NA, std::size_t NB>
 bool disjoint(const Eigen::Vector3d* const (&a0)[NA], const Eigen::Vector3d* const (&a1)[NA],
               const Eigen::Vector3d* const (&b0)[NB], const Eigen::Vector3d* const (&b1)[NB],
               double window) {
-  const filters::RoundingGuard upward;  // Interval_nt<false> needs rounding towards +infinity
   const filters::Interval t(window);
   for (int k = 0; k < 3; ++k) {
     double lo_a, hi_a, lo_b, hi_b;
@@ -49,7 +50,8 @@ bool disjoint(const Eigen::Vector3d* const (&a0)[NA], const Eigen::Vector3d* con
 
 }  // namespace detail
 
-/// True when the vertex and the triangle cannot meet at any t in [0, window].
+/// True when the vertex and the triangle cannot meet at any t in [0, window]. Needs upward
+/// rounding (see above).
 inline bool disjoint_over_window(const VertexFaceQuery& q, double window) {
   const Eigen::Vector3d* const a0[] = {&q.p_t0};
   const Eigen::Vector3d* const a1[] = {&q.p_t1};
@@ -58,7 +60,7 @@ inline bool disjoint_over_window(const VertexFaceQuery& q, double window) {
   return detail::disjoint(a0, a1, b0, b1, window);
 }
 
-/// True when the two edges cannot meet at any t in [0, window].
+/// True when the two edges cannot meet at any t in [0, window]. Needs upward rounding.
 inline bool disjoint_over_window(const EdgeEdgeQuery& q, double window) {
   const Eigen::Vector3d* const a0[] = {&q.ea0_t0, &q.ea1_t0};
   const Eigen::Vector3d* const a1[] = {&q.ea0_t1, &q.ea1_t1};
