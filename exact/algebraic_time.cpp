@@ -2,23 +2,16 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
+
+#include "core/predicates/double_bits.hpp"
 
 namespace exactccd::exact {
 
 namespace {
-std::uint64_t bits_of(double d) {
-  std::uint64_t u;
-  std::memcpy(&u, &d, sizeof u);
-  return u;
-}
-double double_of(std::uint64_t u) {
-  double d;
-  std::memcpy(&d, &u, sizeof d);
-  return d;
-}
+using predicates::bits_of;
+using predicates::double_of;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <type_traits>
 
+#include "core/predicates/double_bits.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "exact/rational.hpp"
 
@@ -212,18 +212,9 @@ bool width_at_most(double hi, double lo, double width) {
 /// The bit pattern of the double x >= 0, with -0 read as +0: for non-negative doubles the
 /// patterns are ordered as the values and consecutive doubles have consecutive patterns, so
 /// next_up(x) has pattern order_bits(x) + 1 and, for x > 0, next_down(x) order_bits(x) - 1.
-std::uint64_t order_bits(double x) {
-  if (x == 0) return 0;
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  return bits;
-}
+std::uint64_t order_bits(double x) { return x == 0 ? 0 : predicates::bits_of(x); }
 
-double from_order_bits(std::uint64_t bits) {
-  double x;
-  std::memcpy(&x, &bits, sizeof x);
-  return x;
-}
+double from_order_bits(std::uint64_t bits) { return predicates::double_of(bits); }
 
 /// One step of the reference loop on [lo, hi] (lo, hi >= 0 finite): false when it stops
 /// there (no double strictly inside, or width > 0 met), else true with *mid the middle

@@ -2,10 +2,10 @@
 #pragma once
 
 #include <cmath>
-#include <cstring>
 #include <tuple>
 #include <limits>
 
+#include "core/predicates/double_bits.hpp"
 #include "filters/cubic_bernstein.hpp"
 
 namespace exactccd::filters {
@@ -42,16 +42,8 @@ inline Interval time_enclosure(double t_max, double s0, double s1) {
   return Interval(lo, hi);
 }
 
-inline std::uint64_t bits_of(double d) {
-  std::uint64_t u;
-  std::memcpy(&u, &d, sizeof u);
-  return u;
-}
-inline double double_of(std::uint64_t u) {
-  double d;
-  std::memcpy(&d, &u, sizeof d);
-  return d;
-}
+using predicates::bits_of;
+using predicates::double_of;
 
 /// Certified bisection of a bracket [lo, hi] (0 <= lo < hi) of the only root of the cubic,
 /// whose signs at lo and hi are certainly -s_hi and s_hi. Splits at the middle double in bit
