@@ -5,7 +5,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
@@ -16,6 +15,7 @@
 
 #include <CGAL/FPU.h>
 
+#include "core/predicates/double_bits.hpp"
 #include "core/src/scene/bvh.hpp"
 #include "exact/rational.hpp"
 #include "exact/triangle_intersection.hpp"
@@ -41,9 +41,7 @@ double nearest_double(const exact::Rational& q) {
   if (c != 0) return c < 0 ? lo : hi;
   // A tie between two consecutive doubles: exactly one has an even significand, i.e. an even
   // bit pattern (consecutive doubles of one sign have consecutive bit patterns).
-  std::uint64_t bits;
-  std::memcpy(&bits, &lo, sizeof bits);
-  return (bits & 1u) == 0 ? lo : hi;
+  return (predicates::bits_of(lo) & 1u) == 0 ? lo : hi;
 }
 
 /// The double nearest to (1 - t) a + t b = a + t (b - a), for 0 <= t <= 1 (ties to even); a at
@@ -120,8 +118,7 @@ class Probe {
                           }
                         });
       if (mesh.built) {
-        mesh.bvh.refit(boxes);
-        if (mesh.bvh.degraded()) mesh.bvh.build(boxes);
+        mesh.bvh.refit_or_rebuild(boxes);
       } else {
         mesh.bvh.build(boxes);
         mesh.built = true;

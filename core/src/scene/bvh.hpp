@@ -78,28 +78,18 @@ class Bvh {
   /// doubled since the last build. (A speed heuristic only: any tree gives exact answers.)
   bool degraded() const;
 
-  std::size_t primitive_count() const { return boxes_.size(); }
+  /// refit, then build afresh when that left the tree degraded. Returns true when it rebuilt.
+  bool refit_or_rebuild(const std::vector<Box>& boxes) {
+    refit(boxes);
+    if (!degraded()) return false;
+    build(boxes);
+    return true;
+  }
+
   bool empty() const { return nodes_.empty(); }
-  const Box& primitive_box(std::uint32_t i) const { return boxes_[i]; }
-  const Box& root_box() const { return nodes_.front().box; }
 
   /// Calls f(i, j) for every primitive i of `*this` and j of `other` whose boxes overlap, each
-  /// pair once.
-  template <class F>
-  void for_each_overlap(const Bvh& other, F&& f) const {
-    if (empty() || other.empty()) return;
-    overlap_nodes(other, 0, 0, f);
-  }
-
-  /// Calls f(i, j), i != j, once for every unordered pair of primitives whose boxes overlap
-  /// (in some order of i and j).
-  template <class F>
-  void for_each_self_overlap(F&& f) const {
-    if (empty()) return;
-    self_nodes(0, f);
-  }
-
-  /// As for_each_overlap, with node pairs spread over TBB tasks: f is called concurrently.
+  /// pair once. Node pairs are spread over TBB tasks: f is called concurrently.
   template <class F>
   void parallel_for_each_overlap(const Bvh& other, F&& f) const {
     if (empty() || other.empty()) return;
@@ -108,7 +98,8 @@ class Bvh {
     run_tasks(other, tasks, f);
   }
 
-  /// As for_each_self_overlap, with node pairs spread over TBB tasks: f is called concurrently.
+  /// Calls f(i, j), i != j, once for every unordered pair of primitives whose boxes overlap
+  /// (in some order of i and j). Node pairs are spread over TBB tasks: f is called concurrently.
   template <class F>
   void parallel_for_each_self_overlap(F&& f) const {
     if (empty()) return;

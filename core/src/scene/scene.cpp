@@ -106,7 +106,7 @@ void check_options(const SceneOptions& o) {
 
 Eigen::Vector3d row(const Positions& x, std::int32_t i) { return x.row(i).transpose(); }
 
-/// Vertex `k` of primitive `p`: the vertex itself (Indices == void) or a row of an index matrix.
+/// Rows of K vertex indices (edges: K = 2, triangles: K = 3).
 template <int K>
 using IndexRows = Eigen::Matrix<std::int32_t, Eigen::Dynamic, K, Eigen::RowMajor>;
 
@@ -122,6 +122,7 @@ std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* i
   tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
                     [&](const tbb::blocked_range<Eigen::Index>& r) {
                       for (Eigen::Index p = r.begin(); p != r.end(); ++p) {
+                        // Vertex k of primitive p: p itself for vertices (no index matrix).
                         const auto vertex = [&](int k) {
                           return indices ? (*indices)(p, k) : static_cast<std::int32_t>(p);
                         };
@@ -138,9 +139,9 @@ std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* i
 
 void update(Bvh& bvh, const std::vector<Box>& boxes, bool built, SceneStats& stats) {
   if (built) {
-    bvh.refit(boxes);
     ++stats.hierarchies_refitted;
-    if (!bvh.degraded()) return;
+    if (bvh.refit_or_rebuild(boxes)) ++stats.hierarchies_built;
+    return;
   }
   bvh.build(boxes);
   ++stats.hierarchies_built;
@@ -279,6 +280,13 @@ struct Scene::Impl {
     return all;
   }
 
+  static CcdResult decide_query(const VertexFaceQuery& q, const CcdOptions& options) {
+    return vertex_face_ccd(q, options);
+  }
+  static CcdResult decide_query(const EdgeEdgeQuery& q, const CcdOptions& options) {
+    return edge_edge_ccd(q, options);
+  }
+
   /// The pair's test over [0, options.t_max].
   CcdResult test(const ScenePair& p, const CcdOptions& options) const {
     return p.type == QueryType::vertex_face ? vertex_face_ccd(vertex_face(p), options)
@@ -350,7 +358,8 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
     std::uint64_t tests = 0;
   };
   tbb::enumerable_thread_specific<Found> locals;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64), [&](const tbb::blocked_range<std::size_t>& range) {
+  const auto batch = tbb::blocked_range<std::size_t>(0, candidates.size(), 64);
+  tbb::parallel_for(batch, [&](const tbb::blocked_range<std::size_t>& range) {
     Found& local = locals.local();
     // Upward rounding for the window culls (time_window.hpp); each pair's test sets and restores
     // its own mode, and the bound below only gets larger under upward rounding (still valid).
@@ -358,16 +367,18 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const ScenePair& p = candidates[k];
       const double window = bound.load(std::memory_order_relaxed);
-      if (window < t_max) {
-        const bool disjoint = p.type == QueryType::vertex_face
-                                  ? scene::disjoint_over_window(vertex_face(p), window)
-                                  : scene::disjoint_over_window(edge_edge(p), window);
-        if (disjoint) continue;
-      }
-      ++local.tests;
       CcdOptions options = o.ccd;
       options.t_max = window;
-      const CcdResult r = test(p, options);
+      // One query per pair: culled over the window when the bound has shrunk, else decided.
+      const auto decide = [&](const auto& query) -> std::optional<CcdResult> {
+        if (window < t_max && scene::disjoint_over_window(query, window)) return std::nullopt;
+        ++local.tests;
+        return decide_query(query, options);
+      };
+      const std::optional<CcdResult> decided =
+          p.type == QueryType::vertex_face ? decide(vertex_face(p)) : decide(edge_edge(p));
+      if (!decided) continue;
+      const CcdResult& r = *decided;
       if (!r.collides) continue;
       local.contacts.push_back({p, r.toi_lo, r.toi_hi});
       const double next = std::min(
