@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "core/predicates/double_bits.hpp"
+#include "core/predicates/fp_environment.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "exact/rational.hpp"
 
@@ -480,6 +481,8 @@ constexpr int kMaxGuidedProbes = 8;
 std::pair<double, double> IntegerQuery::bisect_root(double lo, double hi, double width) const {
   double mid;
   if (!middle_double(lo, hi, width, &mid)) return {lo, hi};  // the reference loop's first stop
+  // The guide computes in long double (x87): no caller's x87 trap or precision applies there.
+  const predicates::X87EnvironmentGuard x87;
   const double lo0 = lo, hi0 = hi;
   RootKnowledge known(lo0, hi0);
   std::optional<Guide> guide;

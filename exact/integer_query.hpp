@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <utility>
 
+#include "core/predicates/fp_environment.hpp"  // refuses fast-math builds
+
 #include "exactccd/types.hpp"
 
 namespace exactccd::exact {

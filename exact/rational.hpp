@@ -3,6 +3,8 @@
 
 #include <gmpxx.h>
 
+#include "core/predicates/fp_environment.hpp"  // refuses fast-math builds
+
 namespace exactccd::exact {
 
 using Rational = mpq_class;

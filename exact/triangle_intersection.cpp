@@ -3,10 +3,11 @@
 #include "exact/triangle_intersection.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/FPU.h>
 #include <CGAL/intersections.h>
 
 #include <stdexcept>
+
+#include "core/predicates/fp_environment.hpp"
 
 namespace exactccd::exact {
 
@@ -67,8 +68,9 @@ Point point(const Eigen::Vector3d& x) {
 bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
                          const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
                          const Eigen::Vector3d& b1, const Eigen::Vector3d& b2) {
-  // The kernel's static filters bound the rounding errors of round-to-nearest arithmetic.
-  const CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST);
+  // The kernel's static filters bound the rounding errors of round-to-nearest arithmetic with
+  // gradual underflow (proofs/filters.md#fp-environment).
+  const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
   return shapes_intersect(shape_of(point(a0), point(a1), point(a2)),
                           shape_of(point(b0), point(b1), point(b2)));
 }

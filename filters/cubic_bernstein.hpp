@@ -15,6 +15,7 @@ using Bernstein3 = std::array<NT, 4>;
 
 /// Bernstein coefficients of f(t_max * s), s in [0, 1], from the power basis in t.
 template <class NT>
+EXACTCCD_CERTIFIED
 Bernstein3<NT> cubic_bernstein(const predicates::FixedPoly<NT, 3>& f, const NT& t_max) {
   const NT a1 = f.c[1] * t_max;
   const NT a2 = f.c[2] * t_max * t_max;
@@ -24,6 +25,7 @@ Bernstein3<NT> cubic_bernstein(const predicates::FixedPoly<NT, 3>& f, const NT& 
 
 /// Bernstein coefficients of the two halves of the parameter interval.
 template <class NT>
+EXACTCCD_CERTIFIED
 void de_casteljau_halves(const Bernstein3<NT>& b, Bernstein3<NT>& left, Bernstein3<NT>& right) {
   const NT b01 = (b[0] + b[1]) / 2, b12 = (b[1] + b[2]) / 2, b23 = (b[2] + b[3]) / 2;
   const NT b012 = (b01 + b12) / 2, b123 = (b12 + b23) / 2;

@@ -48,11 +48,13 @@ class ExactAtDoubles {
 ///   bool certainly_included(const Interval& T)  -- contact at every coplanar t in T.
 /// Must be called with a RoundingGuard held.
 template <class Inclusion>
+EXACTCCD_CERTIFIED
 FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
                            double toi_width, const Inclusion& inclusion, ExactAtDoubles& exact);
 
 /// True when all four Bernstein coefficients of the cubic on [0, t_max] are certainly
 /// non-zero with one sign: no coplanar instant, hence no contact. Needs a RoundingGuard.
+EXACTCCD_CERTIFIED
 bool cubic_certainly_root_free(const predicates::FixedPoly<Interval, 3>& cubic, double t_max);
 
 }  // namespace exactccd::filters

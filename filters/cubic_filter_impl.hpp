@@ -14,7 +14,7 @@ namespace detail {
 
 constexpr int kMaxSubdivisionDepth = 10;
 
-inline int strict_sign_of_all(const Bernstein3<Interval>& b) {
+EXACTCCD_CERTIFIED int strict_sign_of_all(const Bernstein3<Interval>& b) {
   const int s = certain_strict_sign(b[0]);
   if (s == 0) return 0;
   for (int i = 1; i < 4; ++i)
@@ -23,23 +23,28 @@ inline int strict_sign_of_all(const Bernstein3<Interval>& b) {
 }
 
 /// The derivative's Bernstein coefficients (3 (b[i+1] - b[i])) all of one certain strict sign.
-inline bool certainly_monotone(const Bernstein3<Interval>& b) {
+EXACTCCD_CERTIFIED bool certainly_monotone(const Bernstein3<Interval>& b) {
   const int d = certain_strict_sign(b[1] - b[0]);
   return d != 0 && certainly_has_sign(b[2] - b[1], d) && certainly_has_sign(b[3] - b[2], d);
 }
 
 /// Exactly one simple root in the parameter interval: certain opposite signs at its ends and
 /// a derivative (Bernstein coefficients b[i+1] - b[i]) of one certain strict sign.
-inline bool certainly_one_root(const Bernstein3<Interval>& b) {
+EXACTCCD_CERTIFIED bool certainly_one_root(const Bernstein3<Interval>& b) {
   const int s0 = certain_strict_sign(b[0]);
   return s0 != 0 && certainly_has_sign(b[3], -s0) && certainly_monotone(b);
 }
 
-/// [down(t_max * s0), up(t_max * s1)] under upward rounding.
-inline Interval time_enclosure(double t_max, double s0, double s1) {
-  const double lo = -((-t_max) * s0);
-  const double hi = t_max * s1;
-  return Interval(lo, hi);
+/// An enclosure of t_max * [s0, s1] (0 <= s0 <= s1): [down(t_max s0), up(t_max s1)]. Through
+/// the interval type, whose operations the compiler cannot move across the rounding-mode
+/// switch (a raw double product could be).
+EXACTCCD_CERTIFIED Interval time_enclosure(double t_max, double s0, double s1) {
+  return Interval(t_max) * Interval(s0, s1);
+}
+
+/// hi - lo <= width, with the difference rounded up (through the interval type, as above).
+EXACTCCD_CERTIFIED bool certainly_within_width(double lo, double hi, double width) {
+  return (Interval(hi) - Interval(lo)).sup() <= width;
 }
 
 using predicates::bits_of;
@@ -48,7 +53,8 @@ using predicates::double_of;
 /// Certified bisection of a bracket [lo, hi] (0 <= lo < hi) of the only root of the cubic,
 /// whose signs at lo and hi are certainly -s_hi and s_hi. Splits at the middle double in bit
 /// order, so that at most 64 steps reach the tightest pair.
-inline FilterOutcome refine_bracket(const predicates::FixedPoly<Interval, 3>& cubic, double lo,
+EXACTCCD_CERTIFIED
+FilterOutcome refine_bracket(const predicates::FixedPoly<Interval, 3>& cubic, double lo,
                                     double hi, int sign_hi, double toi_width) {
   FilterOutcome out;
   out.verdict = FilterOutcome::Verdict::contact;
@@ -57,7 +63,7 @@ inline FilterOutcome refine_bracket(const predicates::FixedPoly<Interval, 3>& cu
     out.toi_lo = lo;
     out.toi_hi = hi;
     const double first = std::nextafter(lo, kInf), last = std::nextafter(hi, -kInf);
-    if (first > last || (toi_width > 0 && hi - lo <= toi_width)) {  // hi - lo rounded up
+    if (first > last || (toi_width > 0 && certainly_within_width(lo, hi, toi_width))) {
       out.toi_final = true;
       return out;
     }
@@ -76,12 +82,13 @@ inline FilterOutcome refine_bracket(const predicates::FixedPoly<Interval, 3>& cu
 
 }  // namespace detail
 
-inline bool cubic_certainly_root_free(const predicates::FixedPoly<Interval, 3>& cubic,
+EXACTCCD_CERTIFIED bool cubic_certainly_root_free(const predicates::FixedPoly<Interval, 3>& cubic,
                                       double t_max) {
   return detail::strict_sign_of_all(cubic_bernstein(cubic, Interval(t_max))) != 0;
 }
 
 template <class Inclusion>
+EXACTCCD_CERTIFIED
 FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
                            double toi_width, const Inclusion& inclusion, ExactAtDoubles& exact) {
   using detail::kMaxSubdivisionDepth;

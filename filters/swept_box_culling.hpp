@@ -10,10 +10,12 @@
 #include <algorithm>
 #include <initializer_list>
 
+#include "core/predicates/fp_environment.hpp"  // refuses fast-math builds
+
 namespace exactccd::filters {
 
 /// True when the boxes of the two point sets are disjoint on some axis.
-inline bool swept_boxes_disjoint(std::initializer_list<const Eigen::Vector3d*> first,
+EXACTCCD_CERTIFIED bool swept_boxes_disjoint(std::initializer_list<const Eigen::Vector3d*> first,
                                  std::initializer_list<const Eigen::Vector3d*> second) {
   for (int k = 0; k < 3; ++k) {
     double lo1 = (*first.begin())->coeff(k), hi1 = lo1;

@@ -24,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/predicates/fp_environment.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "filters/coplanarity_semistatic.hpp"
@@ -127,10 +128,13 @@ TEST(RoundingMode, ResultsUnderEveryCallerModeEqualRoundToNearest) {
     int mismatches = 0, mode_changes = 0;
     for (std::size_t i = 0; i < all.size(); ++i) {
       ASSERT_EQ(std::fesetround(m.mode), 0) << m.name;
+      // The register itself as well: fegetround reads only the x87 control word on x86-64.
+      const unsigned control_before = predicates::raw_fp_control();
       const CcdResult r = ccd(all[i].query, all[i].options);
+      const unsigned control_after = predicates::raw_fp_control();
       const int after = std::fegetround();
       std::fesetround(FE_TONEAREST);
-      if (after != m.mode && ++mode_changes <= 5)
+      if ((after != m.mode || control_after != control_before) && ++mode_changes <= 5)
         ADD_FAILURE() << m.name << ": caller's rounding mode changed by the call\n"
                       << describe(all[i].query);
       if (!same(r, nearest[i]) && ++mismatches <= 5)
@@ -157,7 +161,9 @@ TEST(RoundingMode, CallerModeRestoredWhenTheCallThrows) {
         DoubleQuery bad = q;
         bad.v[7].z() = nan;
         ASSERT_EQ(std::fesetround(m.mode), 0);
+        const unsigned control = predicates::raw_fp_control();
         EXPECT_THROW(ccd(bad, CcdOptions{1.0, 0.0, mode}), std::invalid_argument) << m.name;
+        EXPECT_EQ(predicates::raw_fp_control(), control) << m.name << " (NaN coordinate)";
         EXPECT_EQ(std::fegetround(), m.mode) << m.name << " (NaN coordinate)";
         bad.v[7].z() = q.v[7].z();
         bad.v[0].x() = -inf;
@@ -168,6 +174,7 @@ TEST(RoundingMode, CallerModeRestoredWhenTheCallThrows) {
         EXPECT_EQ(std::fegetround(), m.mode) << m.name << " (NaN t_max)";
         EXPECT_THROW(ccd(q, CcdOptions{1.0, -1.0, mode}), std::invalid_argument) << m.name;
         EXPECT_EQ(std::fegetround(), m.mode) << m.name << " (negative toi_width)";
+        EXPECT_EQ(predicates::raw_fp_control(), control) << m.name << " (after every throw)";
         std::fesetround(FE_TONEAREST);
       }
     }
@@ -187,12 +194,14 @@ TEST(ThreadSafety, ConcurrentCallsGiveSequentialResults) {
   constexpr int kThreads = 4;
   std::vector<std::vector<CcdResult>> results(kThreads, std::vector<CcdResult>(all.size()));
   std::vector<int> modes_after(kThreads, -1);
+  std::vector<int> controls_kept(kThreads, 0);
   std::atomic<int> ready{0};
   std::vector<std::thread> threads;
   for (int t = 0; t < kThreads; ++t) {
     threads.emplace_back([&, t] {
       const int mode = t == 1 ? FE_UPWARD : (t == 3 ? FE_DOWNWARD : FE_TONEAREST);
       std::fesetround(mode);
+      const unsigned control = predicates::raw_fp_control();
       ++ready;
       while (ready.load() < kThreads) std::this_thread::yield();  // start together
       const std::size_t n = all.size();
@@ -201,6 +210,7 @@ TEST(ThreadSafety, ConcurrentCallsGiveSequentialResults) {
         results[t][i] = ccd(all[i].query, all[i].options);
       }
       modes_after[t] = std::fegetround();
+      controls_kept[t] = predicates::raw_fp_control() == control;
       std::fesetround(FE_TONEAREST);
     });
   }
@@ -215,6 +225,7 @@ TEST(ThreadSafety, ConcurrentCallsGiveSequentialResults) {
                       << "\n sequential: " << describe(sequential[i]);
     EXPECT_EQ(mismatches, 0) << "thread " << t;
     EXPECT_EQ(modes_after[t], t == 1 ? FE_UPWARD : (t == 3 ? FE_DOWNWARD : FE_TONEAREST));
+    EXPECT_TRUE(controls_kept[t]) << "thread " << t << ": FP control register changed";
   }
 }
 

@@ -12,7 +12,7 @@ namespace exactccd::predicates {
 /// p on the closed segment [x, y] (x == y allowed): cross(y - x, p - x) = 0 and
 /// (p - x).(p - y) <= 0. PROOF: proofs/exact_ccd.md#lemma-point-on-segment
 template <class Point, class SignAt>
-bool point_on_segment_at(const Point& p, const Point& x,
+EXACTCCD_CERTIFIED bool point_on_segment_at(const Point& p, const Point& x,
                          const Point& y, SignAt&& sign_at) {
   const auto n = cross(y - x, p - x);
   if (sign_at(n.x) != 0 || sign_at(n.y) != 0 || sign_at(n.z) != 0) return false;
@@ -24,7 +24,7 @@ bool point_on_segment_at(const Point& p, const Point& x,
 /// normal does not vanish. Degenerate triangle (a segment or a point): the union of its edges.
 /// PROOF: proofs/exact_ccd.md#lemma-point-in-triangle
 template <class Point, class SignAt>
-bool point_in_triangle_at(const Point& p, const Point& a,
+EXACTCCD_CERTIFIED bool point_in_triangle_at(const Point& p, const Point& a,
                           const Point& b, const Point& c, SignAt&& sign_at) {
   for (int k = 0; k < 3; ++k) {
     const int s = sign_at(orient2d_along_axis(k, a, b, c));
@@ -45,7 +45,7 @@ bool point_in_triangle_at(const Point& p, const Point& a,
 /// cross product does not vanish. Parallel or zero-length: an endpoint lies on the other.
 /// PROOF: proofs/exact_ccd.md#lemma-segments-intersect
 template <class Point, class SignAt>
-bool segments_intersect_at(const Point& a0, const Point& a1,
+EXACTCCD_CERTIFIED bool segments_intersect_at(const Point& a0, const Point& a1,
                            const Point& b0, const Point& b1,
                            SignAt&& sign_at) {
   const auto da = a1 - a0;

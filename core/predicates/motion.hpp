@@ -10,6 +10,8 @@
 #include <cstddef>
 #include <utility>
 
+#include "core/predicates/fp_environment.hpp"  // refuses fast-math builds
+
 namespace exactccd::predicates {
 
 /// c[i] is the coefficient of t^i.
@@ -21,7 +23,7 @@ struct FixedPoly {
 };
 
 template <class NT, int D1, int D2>
-auto operator+(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
+EXACTCCD_CERTIFIED auto operator+(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
   constexpr int D = D1 > D2 ? D1 : D2;
   FixedPoly<NT, D> r{};
   for (int i = 0; i <= D; ++i) {
@@ -33,7 +35,7 @@ auto operator+(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
 }
 
 template <class NT, int D1, int D2>
-auto operator-(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
+EXACTCCD_CERTIFIED auto operator-(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
   constexpr int D = D1 > D2 ? D1 : D2;
   FixedPoly<NT, D> r{};
   for (int i = 0; i <= D; ++i) {
@@ -45,6 +47,7 @@ auto operator-(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
 }
 
 template <class NT, int D1, int D2>
+EXACTCCD_CERTIFIED
 FixedPoly<NT, D1 + D2> operator*(const FixedPoly<NT, D1>& a, const FixedPoly<NT, D2>& b) {
   FixedPoly<NT, D1 + D2> r{};
   for (int k = 0; k <= D1 + D2; ++k) {
@@ -66,7 +69,7 @@ FixedPoly<NT, D1 + D2> operator*(const FixedPoly<NT, D1>& a, const FixedPoly<NT,
 
 /// Horner evaluation at t (for an interval t: an enclosure of the range over t).
 template <class NT, int D, class T>
-NT evaluate(const FixedPoly<NT, D>& p, const T& t) {
+EXACTCCD_CERTIFIED NT evaluate(const FixedPoly<NT, D>& p, const T& t) {
   NT r = p.c[D];
   for (int i = D - 1; i >= 0; --i) r = r * t + p.c[i];
   return r;
@@ -74,7 +77,7 @@ NT evaluate(const FixedPoly<NT, D>& p, const T& t) {
 
 /// p'(t).
 template <class NT, int D>
-FixedPoly<NT, (D > 0 ? D - 1 : 0)> derivative(const FixedPoly<NT, D>& p) {
+EXACTCCD_CERTIFIED FixedPoly<NT, (D > 0 ? D - 1 : 0)> derivative(const FixedPoly<NT, D>& p) {
   FixedPoly<NT, (D > 0 ? D - 1 : 0)> r{};
   if constexpr (D == 0) {
     r.c[0] = NT(0);
@@ -91,24 +94,25 @@ struct Vec3 {
 };
 
 template <class A, class B>
-auto operator-(const Vec3<A>& a, const Vec3<B>& b) {
+EXACTCCD_CERTIFIED auto operator-(const Vec3<A>& a, const Vec3<B>& b) {
   return Vec3<decltype(a.x - b.x)>{a.x - b.x, a.y - b.y, a.z - b.z};
 }
 
 template <class A, class B>
-auto cross(const Vec3<A>& a, const Vec3<B>& b) {
+EXACTCCD_CERTIFIED auto cross(const Vec3<A>& a, const Vec3<B>& b) {
   return Vec3<decltype(a.y * b.z - a.z * b.y)>{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z,
                                               a.x * b.y - a.y * b.x};
 }
 
 template <class A, class B>
-auto dot(const Vec3<A>& a, const Vec3<B>& b) {
+EXACTCCD_CERTIFIED auto dot(const Vec3<A>& a, const Vec3<B>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
 /// The k-th component of cross(b - a, c - a): the orientation of (a, b, c) projected along
 /// axis k, with the cyclic axis order (k+1, k+2) so that it equals the k-th normal component.
 template <class T>
+EXACTCCD_CERTIFIED
 auto orient2d_along_axis(int k, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
   const int u = (k + 1) % 3, v = (k + 2) % 3;
   return (b[u] - a[u]) * (c[v] - a[v]) - (b[v] - a[v]) * (c[u] - a[u]);
@@ -116,7 +120,7 @@ auto orient2d_along_axis(int k, const Vec3<T>& a, const Vec3<T>& b, const Vec3<T
 
 /// x(t) = x0 + t (x1 - x0), coordinate-wise.
 template <class NT>
-Vec3<FixedPoly<NT, 1>> linear_motion(const Vec3<NT>& x0, const Vec3<NT>& x1) {
+EXACTCCD_CERTIFIED Vec3<FixedPoly<NT, 1>> linear_motion(const Vec3<NT>& x0, const Vec3<NT>& x1) {
   return {FixedPoly<NT, 1>{{x0.x, x1.x - x0.x}}, FixedPoly<NT, 1>{{x0.y, x1.y - x0.y}},
           FixedPoly<NT, 1>{{x0.z, x1.z - x0.z}}};
 }

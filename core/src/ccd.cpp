@@ -7,8 +7,7 @@
 #include <optional>
 #include <tuple>
 
-#include <CGAL/FPU.h>
-
+#include "core/predicates/fp_environment.hpp"
 #include "core/src/float_only_ccd.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exact/integer_query.hpp"
@@ -44,6 +43,14 @@ const char* to_string(QueryType type) noexcept {
 
 namespace {
 
+/// The float stages assume round-to-nearest and gradual underflow (the semi-static bounds,
+/// float_only); the caller's whole FP state is restored on every return, exceptions included.
+/// PROOF: proofs/filters.md#fp-environment
+class RoundToNearest : predicates::FpEnvironmentGuard {
+ public:
+  RoundToNearest() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
+};
+
 void validate(const CcdOptions& o) {
   if (!(o.t_max > 0.0 && o.t_max <= 1.0))
     throw std::invalid_argument("exactccd: t_max must lie in (0, 1], got " +
@@ -76,6 +83,7 @@ RationalQuery to_rational(const EdgeEdgeQuery& q) {
 }
 
 CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
+  const RoundToNearest nearest;  // the TOI's conversions to doubles compare doubles
   validate(options);
   return query.type == QueryType::vertex_face ? exact::vertex_face_ccd_exact(query, options)
                                               : exact::edge_edge_ccd_exact(query, options);
@@ -150,12 +158,8 @@ bool all_finite(const EdgeEdgeQuery& q) {
 
 }  // namespace
 
-/// The float stages assume round-to-nearest (the semi-static bounds, float_only); the caller's
-/// mode is restored on every return. PROOF: proofs/filters.md#interval-enclosure
-using RoundToNearest = CGAL::Protect_FPU_rounding<true>;
-
 CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& options) {
-  const RoundToNearest nearest(CGAL_FE_TONEAREST);
+  const RoundToNearest nearest;
   validate(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   switch (options.mode) {
@@ -168,7 +172,7 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& option
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
-  const RoundToNearest nearest(CGAL_FE_TONEAREST);
+  const RoundToNearest nearest;
   validate(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   switch (options.mode) {

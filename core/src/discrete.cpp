@@ -13,9 +13,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
-#include <CGAL/FPU.h>
-
 #include "core/predicates/double_bits.hpp"
+#include "core/predicates/fp_environment.hpp"
 #include "core/src/scene/bvh.hpp"
 #include "exact/rational.hpp"
 #include "exact/triangle_intersection.hpp"
@@ -31,7 +30,12 @@ namespace {
 
 using scene::Box;
 using scene::Bvh;
-using RoundToNearest = CGAL::Protect_FPU_rounding<true>;
+/// Round to nearest and gradual underflow, whatever the caller or a worker thread runs with
+/// (proofs/filters.md#fp-environment).
+class RoundToNearest : predicates::FpEnvironmentGuard {
+ public:
+  RoundToNearest() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
+};
 
 /// The double nearest to q (ties to the even significand), for |q| <= DBL_MAX.
 double nearest_double(const exact::Rational& q) {
@@ -97,7 +101,7 @@ class Probe {
                             [&](const tbb::blocked_range<Eigen::Index>& r) {
                               // position_at's fast path needs round-to-nearest, whatever
                               // mode the caller (or this worker thread) runs in.
-                              const RoundToNearest nearest(CGAL_FE_TONEAREST);
+                              const RoundToNearest nearest;
                               for (Eigen::Index v = r.begin(); v != r.end(); ++v)
                                 for (int k = 0; k < 3; ++k)
                                   mesh.own(v, k) = position_at(start(v, k), end(v, k), t);
@@ -110,6 +114,7 @@ class Probe {
       std::vector<Box> boxes(static_cast<std::size_t>(tri.rows()));
       tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, tri.rows(), 4096),
                         [&](const tbb::blocked_range<Eigen::Index>& r) {
+                          const RoundToNearest nearest;  // comparisons: no denormals-are-zero
                           for (Eigen::Index f = r.begin(); f != r.end(); ++f) {
                             Box box = scene::point_box(at->row(tri(f, 0)));
                             scene::grow(box, at->row(tri(f, 1)));
@@ -188,6 +193,7 @@ class Probe {
 
 std::vector<TrianglePair> intersecting_triangle_pairs(const Scene& scene, double t,
                                                       bool self_collision) {
+  const RoundToNearest nearest;
   if (!(t >= 0.0 && t <= 1.0))
     throw std::invalid_argument("exactccd: intersecting_triangle_pairs needs 0 <= t <= 1");
   Probe probe(scene, self_collision);
@@ -196,6 +202,7 @@ std::vector<TrianglePair> intersecting_triangle_pairs(const Scene& scene, double
 }
 
 DiscreteResult discrete_collision(const Scene& scene, const DiscreteOptions& options) {
+  const RoundToNearest nearest;
   if (options.bisection_steps < 0 || options.bisection_steps > 60)
     throw std::invalid_argument("exactccd: bisection_steps must lie in [0, 60]");
   DiscreteResult result;

@@ -14,6 +14,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "core/predicates/fp_environment.hpp"
+
 namespace exactccd::scene {
 
 /// A closed box: lo[k] <= hi[k].
@@ -212,6 +214,9 @@ class Bvh {
   void run_tasks(const Bvh& other, const std::vector<Task>& tasks, F& f) const {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
+                        // A worker may run with the host's FP state: box comparisons must not
+                        // read subnormals as zero (proofs/filters.md#fp-environment).
+                        const predicates::FpEnvironmentGuard fp(predicates::Rounding::to_nearest);
                         for (std::size_t k = range.begin(); k != range.end(); ++k) {
                           const Task& t = tasks[k];
                           if (t.self)

@@ -40,6 +40,14 @@ namespace {
 using scene::Box;
 using scene::Bvh;
 
+/// Round to nearest and gradual underflow on this thread (the caller's state comes back on
+/// return). Held by the entry points and by every parallel body: TBB workers may run with the
+/// host's FP state. PROOF: proofs/filters.md#fp-environment
+class FpGuard : predicates::FpEnvironmentGuard {
+ public:
+  FpGuard() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
+};
+
 /// Which positions a hierarchy bounds.
 enum class Span : int { swept = 0, start = 1, end = 2 };
 
@@ -121,6 +129,7 @@ std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* i
   const Positions& first = use_start ? m.start : m.end;
   tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
                     [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      const FpGuard fp;  // min/max by comparison: no denormals-are-zero
                       for (Eigen::Index p = r.begin(); p != r.end(); ++p) {
                         // Vertex k of primitive p: p itself for vertices (no index matrix).
                         const auto vertex = [&](int k) {
@@ -302,6 +311,7 @@ struct Scene::Impl {
     tbb::enumerable_thread_specific<std::vector<SceneContact>> found;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
                       [&](const tbb::blocked_range<std::size_t>& r) {
+                        const FpGuard fp;
                         auto& local = found.local();
                         for (std::size_t k = r.begin(); k != r.end(); ++k) {
                           const CcdResult c = test(candidates[k], o.ccd);
@@ -467,11 +477,13 @@ auto with_threads(int max_threads, F&& f) {
 }  // namespace
 
 SceneResult Scene::find_contacts(const SceneOptions& options) {
+  const FpGuard fp;
   check_options(options);
   return with_threads(options.max_threads, [&] { return impl_->find_contacts(options); });
 }
 
 EarliestContact Scene::earliest_contact(const SceneOptions& options) {
+  const FpGuard fp;
   check_options(options);
   if (options.broad_phase != BroadPhase::swept_bvh)
     throw std::invalid_argument("exactccd: earliest_contact needs the swept_bvh broad phase");

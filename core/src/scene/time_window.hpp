@@ -21,6 +21,7 @@ namespace detail {
 
 /// Box of the vertices over [0, T] on axis k: [lo, hi], certified to contain every position.
 template <std::size_t N>
+EXACTCCD_CERTIFIED
 void window_extent(const Eigen::Vector3d* const (&start)[N], const Eigen::Vector3d* const (&end)[N],
                    const filters::Interval& t, int k, double& lo, double& hi) {
   lo = start[0]->coeff(k);
@@ -35,6 +36,7 @@ void window_extent(const Eigen::Vector3d* const (&start)[N], const Eigen::Vector
 }
 
 template <std::size_t NA, std::size_t NB>
+EXACTCCD_CERTIFIED
 bool disjoint(const Eigen::Vector3d* const (&a0)[NA], const Eigen::Vector3d* const (&a1)[NA],
               const Eigen::Vector3d* const (&b0)[NB], const Eigen::Vector3d* const (&b1)[NB],
               double window) {
@@ -52,7 +54,7 @@ bool disjoint(const Eigen::Vector3d* const (&a0)[NA], const Eigen::Vector3d* con
 
 /// True when the vertex and the triangle cannot meet at any t in [0, window]. Needs upward
 /// rounding (see above).
-inline bool disjoint_over_window(const VertexFaceQuery& q, double window) {
+EXACTCCD_CERTIFIED bool disjoint_over_window(const VertexFaceQuery& q, double window) {
   const Eigen::Vector3d* const a0[] = {&q.p_t0};
   const Eigen::Vector3d* const a1[] = {&q.p_t1};
   const Eigen::Vector3d* const b0[] = {&q.a_t0, &q.b_t0, &q.c_t0};
@@ -61,7 +63,7 @@ inline bool disjoint_over_window(const VertexFaceQuery& q, double window) {
 }
 
 /// True when the two edges cannot meet at any t in [0, window]. Needs upward rounding.
-inline bool disjoint_over_window(const EdgeEdgeQuery& q, double window) {
+EXACTCCD_CERTIFIED bool disjoint_over_window(const EdgeEdgeQuery& q, double window) {
   const Eigen::Vector3d* const a0[] = {&q.ea0_t0, &q.ea1_t0};
   const Eigen::Vector3d* const a1[] = {&q.ea0_t1, &q.ea1_t1};
   const Eigen::Vector3d* const b0[] = {&q.eb0_t0, &q.eb1_t0};
