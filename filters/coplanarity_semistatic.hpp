@@ -14,35 +14,57 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "core/predicates/fp_environment.hpp"  // refuses fast-math builds
+
 namespace exactccd::filters {
 
 namespace semistatic {
 
 constexpr double kUnitRoundoff = 0x1p-53;
-/// |fl(D) - D| <= kSingle * mx * my * mz for one determinant of rounded differences, with the
-/// product itself rounded to nearest (proofs/filters.md#lemma-det-error).
-constexpr double kSingle = 48.0 * kUnitRoundoff * (1.0 + 0x1p-40);
-/// The same for a sum of three such determinants (proofs/filters.md#lemma-det-sum-error).
-constexpr double kTriple = 180.0 * kUnitRoundoff * (1.0 + 0x1p-40);
+/// |fl(D) - D| <= kSingle * Mx * My * Mz for one determinant of rounded differences evaluated by
+/// det3, with the product itself rounded to nearest (proofs/filters.md#lemma-det-error). The
+/// certified value evaluated from det3 itself is semistatic::compute_epsilon_single()
+/// (filters/semistatic_epsilon.hpp): 46u + O(u^2); the literal is that first-order term times
+/// (1 + 2^-40), and semistatic_epsilon_test checks that it covers the computed value, tightly.
+constexpr double kSingle = 46.0 * kUnitRoundoff * (1.0 + 0x1p-40);
+/// The same for a sum of three such determinants, bernstein_b1_times_3 and bernstein_b2_times_3
+/// (proofs/filters.md#lemma-det-sum-error; computed: compute_epsilon_triple(), 168u + O(u^2)).
+constexpr double kTriple = 168.0 * kUnitRoundoff * (1.0 + 0x1p-40);
 /// Column maxima outside [kMin, kMax] could underflow or overflow: no decision then.
 constexpr double kMin = 0x1p-200, kMax = 0x1p200;
 
-/// det[v, w, u] = v . (w x u) in a fixed order: every elementary product passes through at
-/// most 8 roundings (3 differences, 2 products, 1 subtraction, 2 additions).
-inline double det3(const Eigen::Vector3d& v, const Eigen::Vector3d& w, const Eigen::Vector3d& u) {
-  const double mx = w.y() * u.z() - w.z() * u.y();
-  const double my = w.z() * u.x() - w.x() * u.z();
-  const double mz = w.x() * u.y() - w.y() * u.x();
+/// det[v, w, u] = v . (w x u) in a fixed order, over any 3-vector type with x(), y(), z():
+/// Eigen::Vector3d in the filter, error bounds in compute_epsilon (semistatic_epsilon.hpp), so
+/// the constants above are computed from this very code.
+template <class Vec3>
+EXACTCCD_CERTIFIED auto det3(const Vec3& v, const Vec3& w, const Vec3& u) {
+  const auto mx = w.y() * u.z() - w.z() * u.y();
+  const auto my = w.z() * u.x() - w.x() * u.z();
+  const auto mz = w.x() * u.y() - w.y() * u.x();
   return (v.x() * mx + v.y() * my) + v.z() * mz;
+}
+
+/// 3 b1 = (D(v1,w0,u0) + D(v0,w1,u0)) + D(v0,w0,u1), in the order the filter uses.
+template <class Vec3>
+EXACTCCD_CERTIFIED auto bernstein_b1_times_3(const Vec3& v0, const Vec3& v1, const Vec3& w0,
+                                             const Vec3& w1, const Vec3& u0, const Vec3& u1) {
+  return (det3(v1, w0, u0) + det3(v0, w1, u0)) + det3(v0, w0, u1);
+}
+
+/// 3 b2 = (D(v0,w1,u1) + D(v1,w0,u1)) + D(v1,w1,u0), in the order the filter uses.
+template <class Vec3>
+EXACTCCD_CERTIFIED auto bernstein_b2_times_3(const Vec3& v0, const Vec3& v1, const Vec3& w0,
+                                             const Vec3& w1, const Vec3& u0, const Vec3& u1) {
+  return (det3(v0, w1, u1) + det3(v1, w0, u1)) + det3(v1, w1, u0);
 }
 
 }  // namespace semistatic
 
 /// True only when the cubic certainly has no root in [0, 1]; false means "not decided here"
 /// (never "has a root"). Differences: v0 = fl(b_t0 - a_t0) etc., computed by the caller.
-inline bool coplanarity_cubic_root_free_semistatic(const Eigen::Vector3d& v0, const Eigen::Vector3d& v1,
-                                                   const Eigen::Vector3d& w0, const Eigen::Vector3d& w1,
-                                                   const Eigen::Vector3d& u0, const Eigen::Vector3d& u1) {
+EXACTCCD_CERTIFIED bool coplanarity_cubic_root_free_semistatic(
+    const Eigen::Vector3d& v0, const Eigen::Vector3d& v1, const Eigen::Vector3d& w0,
+    const Eigen::Vector3d& w1, const Eigen::Vector3d& u0, const Eigen::Vector3d& u1) {
   using namespace semistatic;
   const Eigen::Vector3d m = v0.cwiseAbs()
                                 .cwiseMax(v1.cwiseAbs())
@@ -61,9 +83,9 @@ inline bool coplanarity_cubic_root_free_semistatic(const Eigen::Vector3d& v0, co
   else return false;
   const double b3 = det3(v1, w1, u1);
   if (!(s * b3 > single)) return false;
-  const double b1 = (det3(v1, w0, u0) + det3(v0, w1, u0)) + det3(v0, w0, u1);
+  const double b1 = bernstein_b1_times_3(v0, v1, w0, w1, u0, u1);
   if (!(s * b1 > triple)) return false;
-  const double b2 = (det3(v0, w1, u1) + det3(v1, w0, u1)) + det3(v1, w1, u0);
+  const double b2 = bernstein_b2_times_3(v0, v1, w0, w1, u0, u1);
   return s * b2 > triple;
 }
 

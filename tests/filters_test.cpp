@@ -1,6 +1,6 @@
-// Unit tests of the certified filters (filters/): the semi-static constants re-derived with
-// exact rational arithmetic, semi-static and interval decisions checked against exact values
-// on random and near-degenerate inputs, and the certified-sign convention.
+// Unit tests of the certified filters (filters/): the semi-static constants against the proof's
+// hand bounds with exact rational arithmetic, semi-static and interval decisions checked against
+// exact values on random and near-degenerate inputs, and the certified-sign convention.
 // PROOF: proofs/filters.md (Lemmas 3 and 4, Theorems 1 and 2, Section 2).
 #include <gtest/gtest.h>
 #include <gmpxx.h>
@@ -23,12 +23,6 @@ using Eigen::Vector3d;
 
 mpq_class q(double d) { return mpq_class(d); }
 
-// gamma_n = n u / (1 - n u), exactly.
-mpq_class gamma(int n) {
-  const mpq_class u(q(filters::semistatic::kUnitRoundoff));
-  return n * u / (1 - n * u);
-}
-
 mpq_class pow_one_minus_u(int k) {
   const mpq_class u(q(filters::semistatic::kUnitRoundoff));
   mpq_class r = 1;
@@ -36,21 +30,23 @@ mpq_class pow_one_minus_u(int k) {
   return r;
 }
 
+// The proof's hand bounds, re-checked here; semistatic_epsilon_test compares the literals with
+// the constants computed from the filter's code.
 TEST(SemistaticConstants, SingleDeterminantBoundCoversLemma3) {
-  // Lemma 3 needs K1 (1-u)^3 >= 6 gamma_8 / (1-u)^3.
+  // Lemma 3: the error is at most 46u + (640 - 46)u^2 + 2^-460 (in units of Mx My Mz), and the
+  // threshold is at least K1 Mx My Mz (1-u)^3.
   const mpq_class k1 = q(filters::semistatic::kSingle);
-  EXPECT_GE(k1 * pow_one_minus_u(3), 6 * gamma(8) / pow_one_minus_u(3));
-  // And the literal is exactly 48 u (1 + 2^-40) (no rounding in its constexpr definition).
   const mpq_class u(q(filters::semistatic::kUnitRoundoff));
-  EXPECT_EQ(k1, 48 * u * (1 + q(0x1p-40)));
+  EXPECT_GE(k1 * pow_one_minus_u(3), 46 * u + 594 * u * u + q(0x1p-460));
+  // And the literal is exactly 46 u (1 + 2^-40) (no rounding in its constexpr definition).
+  EXPECT_EQ(k1, 46 * u * (1 + q(0x1p-40)));
 }
 
 TEST(SemistaticConstants, TripleSumBoundCoversLemma4) {
   const mpq_class k3 = q(filters::semistatic::kTriple);
-  const mpq_class need = 18 * (gamma(8) + gamma(2) * (1 + gamma(8))) / pow_one_minus_u(3);
-  EXPECT_GE(k3 * pow_one_minus_u(3), need);
   const mpq_class u(q(filters::semistatic::kUnitRoundoff));
-  EXPECT_EQ(k3, 180 * u * (1 + q(0x1p-40)));
+  EXPECT_GE(k3 * pow_one_minus_u(3), 168 * u + 2872 * u * u + q(0x1p-460));
+  EXPECT_EQ(k3, 168 * u * (1 + q(0x1p-40)));
 }
 
 TEST(CertifiedSign, UncertainIsNeverZero) {
