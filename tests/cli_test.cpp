@@ -20,43 +20,11 @@
 #include <string>
 #include <vector>
 
+#include "cli_fixture.hpp"
+
 namespace {
 
-namespace fs = std::filesystem;
-
-struct RunResult {
-  int status = -1;  ///< exit status; -1 when the command did not exit normally (a crash)
-  std::string out, err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(text);
-  while (std::getline(in, part, separator)) parts.push_back(part);
-  if (!text.empty() && text.back() == separator) parts.emplace_back();
-  return parts;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-std::string shell_quote(const std::string& s) {
-  std::string quoted = "'";
-  for (const char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
+using namespace cli_test;
 
 // The truth column of a benchmark CSV file, one value per query (8 rows each), read
 // independently of exactccd's reader.
@@ -85,107 +53,6 @@ std::map<std::string, std::vector<bool>> sample_truth() {
       files[fs::weakly_canonical(p).string()] = read_truth_column(p);
   }
   return files;
-}
-
-const fs::path kSampleFile =
-    fs::path(EXACTCCD_SAMPLE_QUERIES) / "unit-tests" / "vertex-face" / "data_0_1.csv";
-
-// Hand-made vertex-face queries: the static triangle a=(0,0,0), b=(1,0,0), c=(0,1,0) and the
-// vertex p moving from (1/4,1/4,1) to (1/4,1/4,z1), so p_z(t) = 1 + t (z1 - 1): it crosses
-// the plane z=0 at t* = 1 / (1 - z1) at (1/4,1/4,0), inside the triangle. z1 = -1: t* = 1/2;
-// z1 = -2: t* = 1/3; z1 = 1: p stays at height 1, no contact.
-std::string falling_vertex_query(int z1, int truth) {
-  const std::string t = "," + std::to_string(truth) + "\n";
-  const std::string a = "0,1,0,1,0,1" + t, b = "1,1,0,1,0,1" + t, c = "0,1,1,1,0,1" + t;
-  return "1,4,1,4,1,1" + t + a + b + c + "1,4,1,4," + std::to_string(z1) + ",1" + t + a + b + c;
-}
-const std::string kHalfThirdNever =  // t* = 1/2, t* = 1/3, no contact (truth 1, 1, 0)
-    falling_vertex_query(-1, 1) + falling_vertex_query(-2, 1) + falling_vertex_query(1, 0);
-
-// `text` with its 1-based line `line_no` replaced by `replacement`.
-std::string replace_line(const std::string& text, std::size_t line_no,
-                         const std::string& replacement) {
-  std::vector<std::string> lines = lines_of(text);
-  lines.at(line_no - 1) = replacement;
-  std::string joined;
-  for (const std::string& line : lines) joined += line + "\n";
-  return joined;
-}
-
-class CliTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    std::random_device random;
-    for (int attempt = 0; dir_.empty() && attempt < 100; ++attempt) {
-      const fs::path candidate =
-          fs::temp_directory_path() /
-          ("exactccd-cli-test-" + std::to_string(getpid()) + "-" + std::to_string(random()));
-      if (fs::create_directory(candidate)) dir_ = candidate;
-    }
-    ASSERT_FALSE(dir_.empty());
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    if (!dir_.empty()) fs::remove_all(dir_, ignored);
-  }
-
-  fs::path write_file(const std::string& relative, const std::string& text) {
-    const fs::path path = dir_ / relative;
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  RunResult run(const std::vector<std::string>& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    std::string command = shell_quote(EXACTCCD_CLI);
-    for (const std::string& arg : args) command += " " + shell_quote(arg);
-    command += " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string()) + " </dev/null";
-    const int raw = std::system(command.c_str());
-    RunResult result;
-    result.status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    result.out = read_text(out);
-    result.err = read_text(err);
-    return result;
-  }
-
-  // Bad input: exit status 2, nothing on stdout, one line on stderr naming `expected` parts.
-  static void expect_bad_input(const RunResult& r, const std::vector<std::string>& expected) {
-    EXPECT_EQ(r.status, 2) << "stderr: " << r.err;
-    EXPECT_EQ(r.out, "");
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_EQ(r.err.rfind("exactccd: ", 0), 0u) << r.err;
-    for (const std::string& part : expected)
-      EXPECT_NE(r.err.find(part), std::string::npos) << "missing '" << part << "' in: " << r.err;
-  }
-
-  // `check` on a vertex-face file holding `text`; the error must name bad.csv:line.
-  void expect_check_rejects(const std::string& text, std::size_t line) {
-    const fs::path file = write_file("vertex-face/bad.csv", text);
-    expect_bad_input(run({"check", file.string()}),
-                     {file.string() + ":" + std::to_string(line) + ":"});
-  }
-
-  // `grade` of `answers` for the three hand-made queries.
-  RunResult grade(const std::string& answers, const std::vector<std::string>& extra = {}) {
-    const fs::path queries = write_file("vertex-face/queries.csv", kHalfThirdNever);
-    const fs::path answers_file = write_file("answers.txt", answers);
-    std::vector<std::string> args = {"grade",          "--json",    "--queries",
-                                     queries.string(), "--answers", answers_file.string()};
-    args.insert(args.end(), extra.begin(), extra.end());
-    return run(args);
-  }
-
-  fs::path dir_;
-};
-
-nlohmann::json parse_json(const RunResult& r) {
-  try {
-    return nlohmann::json::parse(r.out);
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "stdout is not JSON (" << e.what() << "): " << r.out << r.err;
-    return nlohmann::json::object();
-  }
 }
 
 std::vector<std::size_t> indices(const nlohmann::json& j, const char* key) {
@@ -260,7 +127,7 @@ TEST_F(CliTest, RejectsTMaxOutsideUnitInterval) {
 
 TEST_F(CliTest, RejectsBadCommandLine) {
   expect_bad_input(run({}), {});
-  expect_bad_input(run({"frobnicate"}), {});
+  expect_bad_input(run({"frobnicate"}), {"unknown subcommand 'frobnicate'"});
   expect_bad_input(run({"check"}), {"PATH"});
   expect_bad_input(run({"grade", "--queries", kSampleFile.string()}), {"--answers"});
 }
@@ -523,12 +390,12 @@ TEST_F(CliTest, CheckTableNamesModeAndStageColumns) {
 
 TEST_F(CliTest, CheckOnlyExactModeDecidesNonDoubleCoordinates) {
   // The falling vertex (contact at t = 1/2) with p_t1.x = 1/3, which no double equals; at
-  // t = 1/2, p = (7/24, 1/4, 0) lies inside the triangle. A blank line after the second row
-  // puts the fifth row (p_t1) on line 6.
+  // t = 1/2, p = (7/24, 1/4, 0) lies inside the triangle. A blank line before the query (blank
+  // lines may stand between queries) puts the fifth row (p_t1) on line 6.
   std::vector<std::string> rows = lines_of(falling_vertex_query(-1, 1));
   rows[4] = "1,3,1,4,-1,1,1";
-  std::string text;
-  for (std::size_t i = 0; i < rows.size(); ++i) text += rows[i] + (i == 1 ? "\n\n" : "\n");
+  std::string text = "\n";
+  for (const std::string& row : rows) text += row + "\n";
   const fs::path file = write_file("vertex-face/third.csv", text);
   for (const char* mode : {"default", "float_only"}) {
     SCOPED_TRACE(mode);

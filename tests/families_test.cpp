@@ -401,14 +401,15 @@ TEST_F(GenerateCommand, WritesTheLayoutAndCheckAgrees) {
   const Run check = run("check '" + suite.string() + "'");
   EXPECT_EQ(check.status, 0) << check.out << check.err;
   EXPECT_NE(check.out.find("TOTAL"), std::string::npos);
-  // A second run into the same folder replaces the files (same seed: same bytes).
+  // A second run into the same folder replaces the files with --force only (same seed: same
+  // bytes), and deletes none: the family it does not write stays.
   const std::string before = read(suite / "vf_interior/vertex-face/data_0.csv");
-  ASSERT_EQ(
-      run("generate --out '" + suite.string() + "' --seed 9 --per-family 7 --families vf_interior")
-          .status,
-      0);
+  const std::string again =
+      "generate --out '" + suite.string() + "' --seed 9 --per-family 7 --families vf_interior";
+  EXPECT_EQ(run(again).status, 2);
+  ASSERT_EQ(run(again + " --force").status, 0);
   EXPECT_EQ(read(suite / "vf_interior/vertex-face/data_0.csv"), before);
-  EXPECT_FALSE(fs::exists(suite / "ee_crossing@t1e8/edge-edge/data_0.csv"));
+  EXPECT_TRUE(fs::exists(suite / "ee_crossing@t1e8/edge-edge/data_0.csv"));
 }
 
 }  // namespace

@@ -357,12 +357,15 @@ TEST_F(SimulateCommand, TruthColumnIsTheExactVerdictOfEachQuery) {
   }
 }
 
-TEST_F(SimulateCommand, RemovesStaleDataFilesAndRejectsBadConfig) {
+TEST_F(SimulateCommand, KeepsEarlierDataFilesAndRejectsBadConfig) {
   ASSERT_EQ(simulate_command({"--resolution 18", "--steps 60", "--truth none"}), 0);
   ASSERT_TRUE(fs::exists(dir_ / "simulation" / "edge-edge" / "data_1.csv"));
-  ASSERT_EQ(simulate_command({"--resolution 4", "--steps 8", "--truth none"}), 0);
-  EXPECT_FALSE(fs::exists(dir_ / "simulation" / "edge-edge" / "data_1.csv"));
-  EXPECT_EQ(data_files("edge-edge").size(), 1u);
+  // An earlier run's files: refused without --force; with it, replaced, and the data_1.csv
+  // that this smaller run does not write is kept (never deleted).
+  EXPECT_EQ(simulate_command({"--resolution 4", "--steps 8", "--truth none"}), 2);
+  ASSERT_EQ(simulate_command({"--resolution 4", "--steps 8", "--truth none", "--force"}), 0);
+  EXPECT_TRUE(fs::exists(dir_ / "simulation" / "edge-edge" / "data_1.csv"));
+  EXPECT_EQ(data_files("edge-edge").size(), 2u);
   EXPECT_EQ(simulate_command({"--resolution 1"}), 2);
   EXPECT_EQ(simulate_command({"--steps 0"}), 2);
   EXPECT_EQ(simulate_command({"--truth maybe"}), 2);

@@ -1,11 +1,6 @@
 #include "answers_file.hpp"
 
-#include <charconv>
-#include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <string_view>
-
+#include "cli_common.hpp"
 #include "exactccd/query_file.hpp"
 
 namespace exactccd::cli {
@@ -19,65 +14,110 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-// `text` quoted for a message, cut short so that a huge line still gives a one-line message.
-std::string quoted(std::string_view text) {
-  constexpr std::size_t kMax = 60;
-  if (text.size() <= kMax) return "'" + std::string(text) + "'";
-  return "'" + std::string(text.substr(0, kMax)) + "...'";
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+// The digits at the front of `text`, removed from it.
+std::string_view take_digits(std::string_view& text) {
+  std::size_t n = 0;
+  while (n < text.size() && is_digit(text[n])) ++n;
+  const std::string_view digits = text.substr(0, n);
+  text.remove_prefix(n);
+  return digits;
 }
 
-// A finite decimal double, the whole field (std::from_chars: locale-free, correctly rounded).
-double parse_toi(std::string_view text, const std::string& path, std::size_t line) {
-  double value = 0.0;
-  const auto [end, error] =
-      std::from_chars(text.data(), text.data() + text.size(), value, std::chars_format::general);
-  if (text.empty() || error == std::errc::invalid_argument || end != text.data() + text.size())
-    throw InputError(path, line, "toi is not a decimal number: " + quoted(text));
-  if (error == std::errc::result_out_of_range)
-    throw InputError(path, line, "toi is out of the range of doubles: " + quoted(text));
-  if (!std::isfinite(value))
-    throw InputError(path, line, "toi must be finite, found " + quoted(text));
-  return value;
+// The toi of a `1,toi` line: a decimal number in [0, t_max], exactly.
+mpq_class parse_toi(std::string_view text, double t_max, const std::string& path,
+                    std::size_t line) {
+  bool exponent_too_large = false;
+  const std::optional<mpq_class> value = parse_decimal(text, &exponent_too_large);
+  if (exponent_too_large)
+    throw InputError(path, line,
+                     "toi exponent beyond +-" + std::to_string(kMaxDecimalExponent) + ": " +
+                         quote_for_message(text));
+  if (!value)
+    throw InputError(path, line, "toi is not a decimal number: " + quote_for_message(text));
+  if (sgn(*value) < 0 || *value > mpq_class(t_max))
+    throw InputError(path, line,
+                     "toi " + quote_for_message(text) + " lies outside [0, t_max] = [0, " +
+                         format_double(t_max) + "]");
+  return *value;
 }
 
-Answer parse_answer(std::string_view text, const std::string& path, std::size_t line) {
+Answer parse_answer(std::string_view text, double t_max, const std::string& path,
+                    std::size_t line) {
   const std::size_t comma = text.find(',');
   const std::string_view verdict = trim(text.substr(0, comma));
   Answer answer;
   answer.line = line;
   if (verdict != "0" && verdict != "1")
-    throw InputError(path, line, "expected '0', '1' or '1,toi', found " + quoted(text));
+    throw InputError(path, line, "expected '0', '1' or '1,toi', found " + quote_for_message(text));
   answer.collides = verdict == "1";
   if (comma == std::string_view::npos) return answer;
   if (!answer.collides)
-    throw InputError(path, line, "a toi on a '0' (no collision) line: " + quoted(text));
-  answer.toi = parse_toi(trim(text.substr(comma + 1)), path, line);
+    throw InputError(path, line, "a toi on a '0' (no collision) line: " + quote_for_message(text));
+  answer.toi = parse_toi(trim(text.substr(comma + 1)), t_max, path, line);
   return answer;
 }
 
 }  // namespace
 
-std::vector<Answer> read_answers_file(const std::string& path, std::size_t query_count,
-                                      const std::string& queries_path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path, 0, "no such file");
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path, 0, "is a directory, not an answers file");
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open for reading");
+std::optional<mpq_class> parse_decimal(std::string_view text, bool* exponent_too_large) {
+  *exponent_too_large = false;
+  bool negative = false;
+  if (!text.empty() && (text.front() == '+' || text.front() == '-')) {
+    negative = text.front() == '-';
+    text.remove_prefix(1);
+  }
+  const std::string_view whole = take_digits(text);
+  std::string_view fraction;
+  if (!text.empty() && text.front() == '.') {
+    text.remove_prefix(1);
+    fraction = take_digits(text);
+  }
+  if (whole.empty() && fraction.empty()) return std::nullopt;
+  long exponent = 0;
+  if (!text.empty() && (text.front() == 'e' || text.front() == 'E')) {
+    text.remove_prefix(1);
+    bool negative_exponent = false;
+    if (!text.empty() && (text.front() == '+' || text.front() == '-')) {
+      negative_exponent = text.front() == '-';
+      text.remove_prefix(1);
+    }
+    const std::string_view digits = take_digits(text);
+    if (digits.empty()) return std::nullopt;
+    for (const char c : digits) {
+      exponent = 10 * exponent + (c - '0');
+      if (exponent > kMaxDecimalExponent) {
+        *exponent_too_large = text.empty();  // only when the rest is well-formed
+        return std::nullopt;
+      }
+    }
+    if (negative_exponent) exponent = -exponent;
+  }
+  if (!text.empty()) return std::nullopt;
 
+  // value = digits * 10^(exponent - fraction digits), exactly.
+  const mpz_class digits(std::string(whole) + std::string(fraction), 10);
+  const long scale = exponent - static_cast<long>(fraction.size());
+  mpz_class power;
+  mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(scale < 0 ? -scale : scale));
+  mpq_class value = scale < 0 ? mpq_class(digits, power) : mpq_class(digits * power);
+  value.canonicalize();
+  return negative ? mpq_class(-value) : value;
+}
+
+std::vector<Answer> read_answers_file(const std::string& path, std::size_t query_count,
+                                      const std::string& queries_path, double t_max) {
+  LineReader in(path, "an answers file");
   std::vector<Answer> answers;
   std::string line;
-  std::size_t line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
+  while (in.next(line)) {
     if (answers.size() == query_count)
-      throw InputError(path, line_no,
+      throw InputError(path, in.line_number(),
                        "more answer lines than the " + std::to_string(query_count) +
                            " queries in " + queries_path);
-    answers.push_back(parse_answer(trim(line), path, line_no));
+    answers.push_back(parse_answer(trim(line), t_max, path, in.line_number()));
   }
-  if (in.bad()) throw InputError(path, line_no, "read error");
   if (answers.size() < query_count)
     throw InputError(path, 0,
                      std::to_string(answers.size()) + " answer line(s) for the " +

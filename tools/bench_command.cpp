@@ -36,13 +36,16 @@ Dataset load_path(const std::string& path, const std::optional<QueryType>& type)
   Dataset d;
   d.label = path;
   d.truth_source = "truth column";
-  for (const std::string& file : find_query_files(path)) {
+  const std::vector<std::string> files = find_query_files(path);
+  std::vector<std::string> empty_files;
+  for (const std::string& file : files) {
     const QueryFile input = read_query_file(file, resolve_query_type(file, type));
+    if (input.queries.empty()) empty_files.push_back(file);
     for (const QueryRecord& record : input.queries) {
       std::size_t bad_row = 0;
       const std::optional<QueryPoints> points = exact_doubles(record.query, &bad_row);
       if (!points)
-        throw InputError(file, line_of_row(file, record.first_line, bad_row),
+        throw InputError(file, record.line_of_row(bad_row),
                          "a coordinate is not exactly a double: bench times the double API "
                          "(check --mode exact decides such queries)");
       if (input.type == QueryType::vertex_face) {
@@ -54,6 +57,7 @@ Dataset load_path(const std::string& path, const std::optional<QueryType>& type)
       }
     }
   }
+  require_some_queries(empty_files, files.size(), d.size());
   return d;
 }
 

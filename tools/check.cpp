@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cstring>
-#include <fstream>
 #include <iostream>
 #include <utility>
 
@@ -10,6 +9,7 @@
 #include "cli_common.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/ccd.hpp"
+#include "output_file.hpp"
 #include "progress.hpp"
 
 namespace exactccd::cli {
@@ -68,20 +68,6 @@ std::optional<QueryPoints> exact_doubles(const RationalQuery& query, std::size_t
   return points;
 }
 
-std::size_t line_of_row(const std::string& path, std::size_t first_line, std::size_t row) {
-  std::ifstream in(path);
-  std::string line;
-  std::size_t line_no = 0, data_rows = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line_no < first_line) continue;
-    // The reader's blank line: nothing but spaces, tabs and a carriage return.
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    if (data_rows++ == row) return line_no;
-  }
-  return first_line + row;
-}
-
 VertexFaceQuery vertex_face_query(const QueryPoints& p) {
   return {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]};
 }
@@ -105,14 +91,15 @@ std::vector<std::pair<std::string, QueryType>> list_files(const CheckOptions& op
 }
 
 // One line per query: file,index,collides,toi_lo,toi_hi (TOI fields empty without contact).
-void write_result_line(std::ostream& out, const std::string& file, std::size_t index,
+void write_result_line(OutputFile& out, const std::string& file, std::size_t index,
                        const CcdResult& r) {
-  out << file << ',' << index << ',' << (r.collides ? 1 : 0) << ',';
+  std::string line = file + ',' + std::to_string(index) + (r.collides ? ",1," : ",0,");
   if (r.collides)
-    out << format_double(r.toi_lo) << ',' << format_double(r.toi_hi);
+    line += format_double(r.toi_lo) + ',' + format_double(r.toi_hi);
   else
-    out << ',';
-  out << '\n';
+    line += ',';
+  line += '\n';
+  out.write(line);
 }
 
 // Decides one query of `file` with the chosen mode, through the public double API when every
@@ -122,7 +109,7 @@ CcdResult decide(const QueryFile& file, const QueryRecord& record, const CcdOpti
   std::size_t bad_row = 0;
   const std::optional<QueryPoints> points = exact_doubles(record.query, &bad_row);
   if (!points && options.mode != Mode::exact)
-    throw InputError(file.path, line_of_row(file.path, record.first_line, bad_row),
+    throw InputError(file.path, record.line_of_row(bad_row),
                      std::string("a coordinate is not exactly a double: only --mode exact "
                                  "decides such queries (--mode ") +
                          to_string(options.mode) + ")");
@@ -144,11 +131,12 @@ int run_check(const CheckOptions& options) {
   validate_t_max(options.t_max);
   const auto files = list_files(options);
 
-  std::ofstream out_file;
-  if (!options.out_path.empty()) {
-    out_file.open(options.out_path);
-    if (!out_file) throw UsageError(options.out_path + ": cannot open for writing (--out)");
-  }
+  // Opened before the work, so that an unwritable --out fails at once; renamed into place
+  // only when every query is decided.
+  std::optional<OutputFile> out_file;
+  if (!options.out_path.empty())
+    out_file.emplace(options.out_path, options.force ? Overwrite::replace : Overwrite::refuse,
+                     "--out");
 
   CcdOptions ccd_options;
   ccd_options.t_max = options.t_max;
@@ -157,8 +145,10 @@ int run_check(const CheckOptions& options) {
   std::vector<CheckTally> tallies;
   CheckTally total;
   total.file = "TOTAL";
+  std::vector<std::string> empty_files;
   for (std::size_t k = 0; k < files.size(); ++k) {
     const QueryFile input = read_query_file(files[k].first, files[k].second);
+    if (input.queries.empty()) empty_files.push_back(input.path);
     CheckTally tally;
     tally.file = input.path;
     for (std::size_t i = 0; i < input.queries.size(); ++i) {
@@ -169,18 +159,16 @@ int run_check(const CheckOptions& options) {
       tally.false_positives += result.collides && !record.truth;
       tally.false_negatives += !result.collides && record.truth;
       tally.count_stage(result.decided_by);
-      if (out_file.is_open()) write_result_line(out_file, input.path, i, result);
+      if (out_file) write_result_line(*out_file, input.path, i, result);
       progress.update(k, files.size(), input.path, i + 1, input.queries.size());
     }
     total.add(tally);
     tallies.push_back(std::move(tally));
   }
   progress.clear();
+  require_some_queries(empty_files, files.size(), total.queries);
 
-  if (out_file.is_open()) {
-    out_file.close();
-    if (!out_file) throw UsageError(options.out_path + ": write failed (--out)");
-  }
+  if (out_file) out_file->commit();
   if (options.json)
     print_check_json(std::cout, options.mode, tallies, total, options.t_max);
   else

@@ -22,6 +22,7 @@ struct CheckOptions {
   Mode mode = Mode::filtered;  ///< --mode: the path that decides every query
   bool json = false;           ///< one JSON object on stdout instead of a table
   std::string out_path;        ///< --out: per-query results, empty for none
+  bool force = false;          ///< --force: --out may replace an existing file
 };
 
 /// Runs the subcommand; returns the exit status (0 all agree, 1 some disagree). Throws
@@ -46,11 +47,6 @@ using QueryPoints = std::array<Eigen::Vector3d, 8>;  ///< benchmark row order
 /// The query's coordinates as doubles when each is exactly a double; otherwise nullopt and
 /// *bad_row (0-7) is the first row holding one that is not.
 std::optional<QueryPoints> exact_doubles(const RationalQuery& query, std::size_t* bad_row);
-
-/// The 1-based line of row `row` (0-7) of the query starting at `first_line` in `path`
-/// (blank lines, which the reader skips, counted). `first_line` + `row` when the file cannot
-/// be read again.
-std::size_t line_of_row(const std::string& path, std::size_t first_line, std::size_t row);
 
 VertexFaceQuery vertex_face_query(const QueryPoints& p);
 EdgeEdgeQuery edge_edge_query(const QueryPoints& p);

@@ -1,10 +1,26 @@
 #include "cli_common.hpp"
 
 #include <cstdio>
+#include <iostream>
 
 #include "exactccd/query_file.hpp"
 
 namespace exactccd::cli {
+
+void warn(const std::string& message) {
+  std::cerr << "exactccd: warning: " << printable(message) << '\n';  // \n escaped: one line
+}
+
+void require_some_queries(const std::vector<std::string>& empty_files, std::size_t file_count,
+                          std::size_t queries) {
+  constexpr const char* kEmpty = "no queries (an empty file, or only blank lines)";
+  if (queries == 0 && file_count == 1 && empty_files.size() == 1)
+    throw InputError(empty_files.front(), 0, kEmpty);
+  if (queries == 0)
+    throw UsageError("no queries in any of the " + std::to_string(file_count) +
+                     " files (each empty, or only blank lines)");
+  for (const std::string& file : empty_files) warn(file + ": " + kEmpty);
+}
 
 std::optional<QueryType> parse_type_name(const std::string& name) {
   if (name == "vf" || name == "vertex-face") return QueryType::vertex_face;

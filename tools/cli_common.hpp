@@ -4,6 +4,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "exactccd/rational_query.hpp"
 
@@ -22,6 +23,22 @@ class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+/// An output that cannot be written: a full disk, a refused overwrite (exit status 2).
+class OutputError : public std::runtime_error {
+ public:
+  OutputError(const std::string& path, const std::string& what)
+      : std::runtime_error(path + ": " + what) {}
+};
+
+/// Prints "exactccd: warning: <message>" on stderr, one line, control characters escaped.
+void warn(const std::string& message);
+
+/// The rule for query files without a query (empty, or only blank lines): a warning for each
+/// of `empty_files` when other files hold queries; when no query was read at all (`queries`
+/// 0), an InputError naming the file, or a UsageError counting the `file_count` files.
+void require_some_queries(const std::vector<std::string>& empty_files, std::size_t file_count,
+                          std::size_t queries);
 
 /// "vf" / "vertex-face" or "ee" / "edge-edge", as accepted by --type; nullopt otherwise.
 std::optional<QueryType> parse_type_name(const std::string& name);

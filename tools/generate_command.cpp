@@ -2,15 +2,82 @@
 
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <regex>
 #include <stdexcept>
+#include <vector>
 
 #include "cli_common.hpp"
 #include "corpus.hpp"
+#include "output_file.hpp"
 
 namespace exactccd::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Creates `folder` (and its parents) when missing; throws OutputError when it cannot.
+void check_output_folder(const fs::path& folder) {
+  std::error_code error;
+  if (fs::exists(folder, error) && !fs::is_directory(folder, error))
+    throw OutputError(folder.string(), "is not a directory (--out takes a folder)");
+  fs::create_directories(folder, error);
+  if (error) throw OutputError(folder.string(), "cannot create the folder: " + error.message());
+}
+
+// The corpus layout of corpus.hpp: per family data_0.csv and toi_0.csv, then manifest.json.
+// Every target is checked before the first is written, so that a refusal writes nothing.
+void write_corpus_files(const families::Corpus& corpus, const fs::path& root,
+                        Overwrite overwrite) {
+  struct Target {
+    fs::path path;
+    std::string text;
+  };
+  std::vector<Target> targets;
+  for (const families::GeneratedFamily& g : corpus.families) {
+    const fs::path folder = root / families::family_folder(g.family);
+    targets.push_back({folder / "data_0.csv", families::data_csv_text(g)});
+    targets.push_back({folder / "toi_0.csv", families::toi_csv_text(g)});
+  }
+  targets.push_back({root / "manifest.json", families::manifest_text(corpus)});
+  for (const Target& t : targets) {
+    std::error_code error;
+    if (fs::exists(t.path, error)) check_output_path(t.path.string(), overwrite, "--out");
+  }
+  for (const Target& t : targets) {
+    check_output_folder(t.path.parent_path());
+    write_file_atomically(t.path.string(), t.text, overwrite, "--out");
+  }
+
+  // Files of an earlier run in the family folders that this run did not replace.
+  static const std::regex earlier_output("(data|toi)_[0-9]+\\.csv");
+  std::vector<std::string> left;
+  std::error_code error;
+  for (fs::directory_iterator family(root, error); !error && family != fs::directory_iterator();
+       family.increment(error)) {
+    if (!families::is_family_name(family->path().filename().string())) continue;
+    for (const char* type : {"vertex-face", "edge-edge"}) {
+      std::error_code list_error;
+      for (fs::directory_iterator file(family->path() / type, list_error);
+           !list_error && file != fs::directory_iterator(); file.increment(list_error)) {
+        const fs::path& p = file->path();
+        if (!std::regex_match(p.filename().string(), earlier_output)) continue;
+        if (std::none_of(targets.begin(), targets.end(),
+                         [&](const Target& t) { return t.path == p; }))
+          left.push_back(p.string());
+      }
+    }
+  }
+  std::sort(left.begin(), left.end());
+  warn_files_left_in_place(left, root.string());
+}
+
+}  // namespace
 
 int run_generate(const GenerateOptions& options) {
   if (options.per_family < families::kMinPerFamily || options.per_family > families::kMaxPerFamily)
@@ -23,16 +90,19 @@ int run_generate(const GenerateOptions& options) {
                        "' (a base family such as vf_interior, or <base>@s1e-12, @s1e-6, @s1e6, "
                        "@s1e12, @t1e4, @t1e8; see exactccd generate --help)");
 
+  if (options.out_dir.empty()) throw UsageError("--out: the folder name is empty");
+  const fs::path root(options.out_dir);
+  const Overwrite overwrite = options.force ? Overwrite::replace : Overwrite::refuse;
+  check_output_folder(root);
+  // An earlier run's manifest: refused before the work (the other files after it, once known).
+  check_output_path((root / "manifest.json").string(), overwrite, "--out");
+
   const auto start = std::chrono::steady_clock::now();
   const families::Corpus corpus =
       families::generate_corpus(options.seed, options.per_family, options.families);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  try {
-    families::write_corpus(corpus, options.out_dir);
-  } catch (const std::runtime_error& e) {
-    throw UsageError(std::string(e.what()) + " (--out)");
-  }
+  write_corpus_files(corpus, root, overwrite);
 
   std::size_t mismatches = 0, queries = 0, collisions = 0;
   for (const families::GeneratedFamily& g : corpus.families)

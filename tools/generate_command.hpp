@@ -15,12 +15,14 @@ struct GenerateOptions {
   std::uint64_t seed = 1;
   int per_family = families::kDefaultPerFamily;
   std::vector<std::string> families;  ///< empty: all
+  bool force = false;                 ///< --force: replace the files of an earlier run
 };
 
 /// Runs the subcommand: 0 when every base-family member's exact verdict and TOI match its
 /// construction, 1 otherwise (the mismatches are listed on stderr; the files are written
-/// anyway). Throws UsageError for an unknown family, a bad --per-family or an output folder
-/// that cannot be written.
+/// anyway). Throws UsageError for an unknown family or a bad --per-family, OutputError for an
+/// output folder that cannot be written or, without `force`, that holds one of the files to
+/// write. Each file is written whole or not at all (output_file.hpp); none is deleted.
 int run_generate(const GenerateOptions& options);
 
 }  // namespace exactccd::cli

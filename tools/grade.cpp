@@ -10,12 +10,47 @@
 
 namespace exactccd::cli {
 
+namespace {
+
+// Whether a reported toi (an exact rational in [0, t_max]) is later than the exact first
+// contact time t* of `query`; `exact` is exact_ccd(query) with toi_width 0 and a contact, so
+// lo = toi_lo <= t* <= hi = toi_hi with lo == hi == t* when t* is a double, and otherwise
+// consecutive doubles lo < t* < hi.
+bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
+                              const CcdResult& exact) {
+  if (toi <= mpq_class(exact.toi_lo)) return false;  // toi <= lo <= t*
+  if (exact.toi_lo == exact.toi_hi || toi >= mpq_class(exact.toi_hi)) return true;
+  // lo < toi < hi, and t* also lies in (lo, hi): decide exactly on the motion over [0, toi],
+  // rescaled to [0, 1]. Each end position x1 becomes x0 + toi (x1 - x0), so the new query is at
+  // time s where the original is at t = toi s: it has a contact iff t* <= toi, and its first
+  // contact is s* = t* / toi. Its tightest enclosure has lower end 1 (a double) iff s* = 1, that
+  // is iff t* = toi; else lower end < 1 and t* < toi.
+  RationalQuery over_toi = query;
+  for (int k = 0; k < 4; ++k) {
+    const RationalPoint& x0 = query.points[k];
+    const RationalPoint& x1 = query.points[k + 4];
+    RationalPoint& end = over_toi.points[k + 4];
+    end.x = x0.x + toi * (x1.x - x0.x);
+    end.y = x0.y + toi * (x1.y - x0.y);
+    end.z = x0.z + toi * (x1.z - x0.z);
+  }
+  const CcdResult restricted = exact_ccd(over_toi);  // t_max 1, toi_width 0
+  return restricted.collides && restricted.toi_lo < 1.0;
+}
+
+}  // namespace
+
 int run_grade(const GradeOptions& options) {
   validate_t_max(options.t_max);
+  // Before the type: a folder given to --queries is named as such, not as an untyped file.
+  require_regular_file(options.queries_path, "a CSV file (--queries takes one file)");
   const QueryFile input =
       read_query_file(options.queries_path, resolve_query_type(options.queries_path, options.type));
-  const std::vector<Answer> answers =
-      read_answers_file(options.answers_path, input.queries.size(), options.queries_path);
+  require_some_queries(input.queries.empty() ? std::vector<std::string>{input.path}
+                                             : std::vector<std::string>{},
+                       1, input.queries.size());
+  const std::vector<Answer> answers = read_answers_file(
+      options.answers_path, input.queries.size(), options.queries_path, options.t_max);
 
   CcdOptions ccd_options;
   ccd_options.t_max = options.t_max;
@@ -25,13 +60,13 @@ int run_grade(const GradeOptions& options) {
   Progress progress;
   for (std::size_t i = 0; i < input.queries.size(); ++i) {
     const Answer& answer = answers[i];
-    const CcdResult exact = exact_ccd(input.queries[i].query, ccd_options);
+    const RationalQuery& query = input.queries[i].query;
+    const CcdResult exact = exact_ccd(query, ccd_options);
     findings.tois_given += answer.toi.has_value();
     if (answer.collides && !exact.collides) findings.false_positives.push_back(i);
     if (!answer.collides && exact.collides) findings.false_negatives.push_back(i);
-    // A double toi exceeds t* iff toi > toi_lo: either toi_lo == toi_hi == t*, or t* lies
-    // strictly between the consecutive doubles toi_lo < toi_hi, so no double is in between.
-    if (answer.collides && exact.collides && answer.toi && *answer.toi > exact.toi_lo)
+    if (answer.collides && exact.collides && answer.toi &&
+        later_than_first_contact(*answer.toi, query, exact))
       findings.non_conservative.push_back(i);
     progress.update(0, 1, input.path, i + 1, input.queries.size());
   }

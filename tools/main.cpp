@@ -4,9 +4,15 @@
 // `bench` times the modes; `study` measures the uncertified methods' errors against the exact
 // truth.
 #include <CLI/CLI.hpp>
-#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <new>
 #include <string>
+#include <system_error>
 #include <tuple>
 #include <vector>
 
@@ -31,7 +37,8 @@ constexpr const char* kExitStatusHelp =
     "  1  some disagreement (check: a decision differs from the truth column; grade: a\n"
     "     false positive, a false negative or a toi later than the exact one; bench: a\n"
     "     certified mode disagrees with the truth)\n"
-    "  2  bad command line or malformed input; one line on stderr:\n"
+    "  2  bad command line, malformed or unreadable input, or an output that cannot be\n"
+    "     written (a full disk, an existing file without --force); one line on stderr:\n"
     "     'exactccd: FILE:LINE: what'\n"
     "  3  internal error (a bug in exactccd, or out of memory)\n";
 
@@ -39,10 +46,69 @@ constexpr const char* kTypeHelp =
     "Query type: vf (vertex-face) or ee (edge-edge); default: from the nearest folder named "
     "vertex-face or edge-edge in each file's path";
 
-// Reports an error on one line of stderr.
-void report_error(std::string message) {
-  std::replace(message.begin(), message.end(), '\n', ' ');
-  std::cerr << "exactccd: " << message << '\n';
+// Reports an error on one line of stderr (control characters escaped, '\n' among them).
+void report_error(const std::string& message) {
+  std::cerr << "exactccd: " << exactccd::printable(message) << '\n';
+}
+
+// The exit status once stdout is flushed: output lost to a full disk or a closed descriptor is
+// an error (2), not a success.
+int finish(int status) {
+  // std::cout writes through stdout's buffer (synchronised with stdio): one fflush covers both,
+  // and keeps the reason in errno (std::cout.flush() would flush first and lose it).
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  std::cout.flush();
+  if (flushed && std::cout.good() && !std::ferror(stdout)) return status;
+  report_error("stdout: write failed" +
+               (!flushed && error != 0
+                    ? ": " + std::error_code(error, std::generic_category()).message()
+                    : std::string()));
+  return kExitBadInput;
+}
+
+// Checks that an option's argument is a whole number before CLI11 converts it (CLI11 reads an
+// empty argument as 0): [+-]digits for an integer; for a number, what strtod reads entirely.
+CLI::Validator numeric_text(bool integer) {
+  return CLI::Validator(
+      [integer](std::string& text) {
+        bool ok = !text.empty();
+        if (ok && integer) {
+          const std::size_t digits = text[0] == '+' || text[0] == '-' ? 1 : 0;
+          ok = text.size() > digits &&
+               text.find_first_not_of("0123456789", digits) == std::string::npos;
+        } else if (ok) {
+          char* end = nullptr;
+          std::strtod(text.c_str(), &end);
+          ok = !std::isspace(static_cast<unsigned char>(text[0])) &&
+               end == text.c_str() + text.size();
+        }
+        return ok ? std::string()
+                  : exactccd::quote_for_message(text) + " is not " +
+                        (integer ? "an integer" : "a number");
+      },
+      integer ? "INTEGER" : "NUMBER");
+}
+
+// Digits only, below 2^64: CLI11 would wrap a negative number around and saturate a large one.
+CLI::Validator seed_text() {
+  return CLI::Validator(
+      [](std::string& text) {
+        const bool digits =
+            !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        const bool fits =
+            text.size() < 20 || (text.size() == 20 && text <= "18446744073709551615");
+        return digits && fits ? std::string()
+                              : exactccd::quote_for_message(text) +
+                                    " is not an integer in [0, 2^64 - 1]";
+      },
+      "SEED");
+}
+
+void add_force_flag(CLI::App* command, bool& force) {
+  command->add_flag("--force", force,
+                    "Replace output files that already exist (never deletes other files)");
 }
 
 void add_type_option(CLI::App* command, std::string& type_name) {
@@ -57,6 +123,7 @@ constexpr const char* kModeHelp =
 
 void add_t_max_option(CLI::App* command, double& t_max) {
   command->add_option("--t-max", t_max, "End of the time interval [0, T]; T in (0, 1]")
+      ->check(numeric_text(false))
       ->capture_default_str();
 }
 
@@ -65,13 +132,16 @@ std::tuple<CLI::Option*, CLI::Option*, CLI::Option*> add_simulation_options(
     CLI::App* command, exactccd::sim::SimulationConfig& config) {
   CLI::Option* resolution =
       command->add_option("--resolution", config.sheet_resolution, "Sheet vertices per side")
+          ->check(numeric_text(true))
           ->check(CLI::Range(2, 1024))
           ->capture_default_str();
   CLI::Option* steps = command->add_option("--steps", config.steps, "Time steps")
+                           ->check(numeric_text(true))
                            ->check(CLI::Range(1, 100000))
                            ->capture_default_str();
   CLI::Option* seed =
       command->add_option("--seed", config.seed, "Seed of the placement and initial wrinkles")
+          ->check(seed_text())
           ->capture_default_str();
   return {resolution, steps, seed};
 }
@@ -107,6 +177,7 @@ int main(int argc, char** argv) {
   check->add_option("--out", check_options.out_path,
                     "Write one line per query: file,index,collides,toi_lo,toi_hi (index 0-based "
                     "in its file, TOI with 17 significant digits, empty when no contact)");
+  add_force_flag(check, check_options.force);
   add_type_option(check, check_type);
   add_t_max_option(check, check_options.t_max);
   check
@@ -138,9 +209,11 @@ int main(int argc, char** argv) {
       "Write simulation-like queries (a sheet draping over a sphere, two rigid bodies passing "
       "each other: every pair whose swept boxes overlap) as benchmark CSV files, each "
       "coordinate as its exact fraction, to DIR/simulation/{vertex-face,edge-edge}/data_K.csv "
-      "(at most 100000 queries per file; old data_K.csv files there are removed).");
+      "(at most 100000 queries per file; a folder already holding data_K.csv files is "
+      "refused without --force, and files this run does not replace are left in place).");
   simulate->footer(kExitStatusHelp);
   simulate->add_option("--out", simulate_options.out_dir, "The output folder DIR")->required();
+  add_force_flag(simulate, simulate_options.force);
   add_simulation_options(simulate, simulate_options.config);
   simulate
       ->add_option("--truth", simulate_truth,
@@ -173,6 +246,7 @@ int main(int argc, char** argv) {
   bench
       ->add_option("--repetitions", bench_options.repetitions,
                    "Timed passes per data set and mode")
+      ->check(numeric_text(true))
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   bench->add_flag("--simulation", bench_options.simulation,
@@ -200,25 +274,29 @@ int main(int argc, char** argv) {
       "file's toi_K.csv sidecar when present, else the exact path. TOI error: the reported toi "
       "(toi_lo of an enclosure) minus t*, as the signed distance to the exact tightest pair "
       "[lo, hi]; late: toi > lo.\n\nExit status: 0 the certified methods (default, exact) show "
-      "no false positive, false negative or late TOI; 1 one of them does; 2 bad command line "
-      "or input; 3 internal error.");
+      "no false positive, false negative or late TOI; 1 one of them does; 2 bad command line, "
+      "input or output (an existing --out-md file without --force); 3 internal error.");
   study->add_flag("--json", study_options.json,
                   "Print one JSON document (datasets[...] with methods[...], and for a suite "
                   "families[...] and scales[...]) instead of Markdown tables");
   study->add_option("--out-md", study_options.out_md, "Also write the Markdown tables to FILE");
+  add_force_flag(study, study_options.force);
   // One comma-separated argument each, so that a PATH after them stays a PATH.
   study->add_option("--widths", study_options.widths, "The default path's TOI widths")
       ->delimiter(',')
       ->allow_extra_args(false)
+      ->check(numeric_text(false))
       ->capture_default_str();
   study->add_option("--eps", study_options.tolerances,
                     "The tolerance method's absolute distance tolerances")
       ->delimiter(',')
       ->allow_extra_args(false)
+      ->check(numeric_text(false))
       ->capture_default_str();
   study
       ->add_option("--repetitions", study_options.repetitions,
                    "Timed samples per group and method; mean_ns is their median")
+      ->check(numeric_text(true))
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   study->add_flag("--simulation", study_options.simulation,
@@ -252,26 +330,18 @@ int main(int argc, char** argv) {
                      "double arithmetic, named <family>" + suffixes + ".\n\nExit "
                      "status: 0 written, every member as constructed; 1 written, but some "
                      "member's exact verdict or TOI contradicts its construction (listed on "
-                     "stderr); 2 bad command line or unwritable folder; 3 internal error.");
+                     "stderr); 2 bad command line, an unwritable folder, or an earlier run's "
+                     "files there without --force; 3 internal error.");
   }
   generate->add_option("--out", generate_options.out_dir, "The output folder DIR")->required();
+  add_force_flag(generate, generate_options.force);
   generate->add_option("--seed", generate_options.seed, "Seed of the constructions")
-      // Digits only, below 2^64: CLI11 would wrap a negative number around and saturate a
-      // large one.
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            const bool digits =
-                !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-            const bool fits =
-                text.size() < 20 || (text.size() == 20 && text <= "18446744073709551615");
-            return digits && fits ? std::string()
-                                  : "must be an integer in [0, 2^64 - 1], got " + text;
-          },
-          ""))
+      ->check(seed_text())
       ->capture_default_str();
   generate
       ->add_option("--per-family", generate_options.per_family,
                    "Queries per family (groups of a boundary contact and its near misses)")
+      ->check(numeric_text(true))
       ->check(CLI::Range(exactccd::families::kMinPerFamily, exactccd::families::kMaxPerFamily))
       ->capture_default_str();
   generate
@@ -279,52 +349,86 @@ int main(int argc, char** argv) {
                    "Comma-separated family names (default: all)")
       ->delimiter(',');
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    report_error(std::string(e.what()) + " (see exactccd --help)");
-    return kExitBadInput;
+  // CLI11 would only say that a subcommand is required.
+  if (argc >= 2 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
+      names += (names.empty() ? "" : ", ") + command->get_name();
+      known = known || command->get_name() == argv[1];
+    }
+    if (!known) {
+      report_error("unknown subcommand " + exactccd::quote_for_message(argv[1]) + " (one of " +
+                   names + "; see exactccd --help)");
+      return kExitBadInput;
+    }
   }
 
   try {
-    if (check->parsed()) {
-      check_options.type = parse_type_name(check_type);
-      check_options.mode = *parse_mode_name(check_mode);
-      return run_check(check_options);
-    }
-    if (simulate->parsed()) {
-      simulate_options.exact_truth = simulate_truth == "exact";
-      return run_simulate(simulate_options);
-    }
-    if (bench->parsed()) {
-      for (CLI::Option* option : {bench_resolution, bench_steps, bench_seed})
-        if (option->count() > 0 && !bench_options.simulation)
-          throw UsageError(option->get_name() + " needs --simulation");
-      bench_options.type = parse_type_name(bench_type);
-      bench_options.modes.clear();
-      for (const std::string& name : bench_modes)
-        bench_options.modes.push_back(*parse_mode_name(name));
-      return run_bench(bench_options);
-    }
-    if (study->parsed()) {
-      for (CLI::Option* option : {study_resolution, study_steps, study_seed})
-        if (option->count() > 0 && !study_options.simulation)
-          throw UsageError(option->get_name() + " needs --simulation");
-      study_options.type = parse_type_name(study_type);
-      return run_study(study_options);
-    }
-    if (generate->parsed()) return run_generate(generate_options);
-    grade_options.type = parse_type_name(grade_type);
-    return run_grade(grade_options);
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return finish(app.exit(e));  // --help
+    report_error(std::string(e.what()) + " (see exactccd --help)");
+    return kExitBadInput;
+  }
+  // Every failure ends as one line on stderr, 'exactccd: <what>', with its exit status.
+  int status = kExitInternal;
+  try {
+    status = [&] {
+      if (check->parsed()) {
+        check_options.type = parse_type_name(check_type);
+        check_options.mode = *parse_mode_name(check_mode);
+        return run_check(check_options);
+      }
+      if (simulate->parsed()) {
+        simulate_options.exact_truth = simulate_truth == "exact";
+        return run_simulate(simulate_options);
+      }
+      if (bench->parsed()) {
+        for (CLI::Option* option : {bench_resolution, bench_steps, bench_seed})
+          if (option->count() > 0 && !bench_options.simulation)
+            throw UsageError(option->get_name() + " needs --simulation");
+        bench_options.type = parse_type_name(bench_type);
+        bench_options.modes.clear();
+        for (const std::string& name : bench_modes)
+          bench_options.modes.push_back(*parse_mode_name(name));
+        return run_bench(bench_options);
+      }
+      if (study->parsed()) {
+        for (CLI::Option* option : {study_resolution, study_steps, study_seed})
+          if (option->count() > 0 && !study_options.simulation)
+            throw UsageError(option->get_name() + " needs --simulation");
+        study_options.type = parse_type_name(study_type);
+        return run_study(study_options);
+      }
+      if (generate->parsed()) return run_generate(generate_options);
+      grade_options.type = parse_type_name(grade_type);
+      return run_grade(grade_options);
+    }();
   } catch (const exactccd::InputError& e) {
     report_error(e.what());
     return kExitBadInput;
   } catch (const UsageError& e) {
     report_error(e.what());
     return kExitBadInput;
+  } catch (const OutputError& e) {
+    report_error(e.what());
+    return kExitBadInput;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // "<path>: <reason>", not the library's "filesystem error: cannot ...: <reason> [<path>]".
+    std::string where = e.path1().string();
+    if (!e.path2().empty()) where += (where.empty() ? "" : ", ") + e.path2().string();
+    report_error((where.empty() ? std::string() : where + ": ") + e.code().message());
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    report_error("internal error: out of memory");
+    return kExitInternal;
   } catch (const std::exception& e) {
     report_error(std::string("internal error: ") + e.what());
     return kExitInternal;
+  } catch (...) {
+    report_error("internal error: an unknown exception");
+    return kExitInternal;
   }
+  return finish(status);
 }

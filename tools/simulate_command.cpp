@@ -4,11 +4,10 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
 #include <regex>
 #include <stdexcept>
 
@@ -16,6 +15,7 @@
 #include "cli_common.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
+#include "output_file.hpp"
 
 namespace exactccd::cli {
 
@@ -43,17 +43,18 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Removes data_K.csv files a previous run left in `dir`, so that the folder holds exactly the
-// new set.
-void remove_old_data_files(const fs::path& dir) {
+// The data_K.csv files in `dir` (none when it does not exist), sorted.
+std::vector<fs::path> data_files_in(const fs::path& dir) {
   static const std::regex data_file("data_[0-9]+\\.csv");
+  std::vector<fs::path> found;
   std::error_code error;
-  if (!fs::is_directory(dir, error)) return;
-  std::vector<fs::path> stale;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), data_file))
-      stale.push_back(entry.path());
-  for (const fs::path& p : stale) fs::remove(p);
+  if (!fs::is_directory(dir, error)) return found;
+  for (fs::directory_iterator it(dir, error); !error && it != fs::directory_iterator();
+       it.increment(error))
+    if (std::regex_match(it->path().filename().string(), data_file)) found.push_back(it->path());
+  if (error) throw OutputError(dir.string(), "cannot list the folder: " + error.message());
+  std::sort(found.begin(), found.end());
+  return found;
 }
 
 struct FileChunk {
@@ -62,15 +63,12 @@ struct FileChunk {
 };
 
 void write_chunk(const FileChunk& chunk, const std::vector<sim::SimulationQuery>& queries,
-                 const std::vector<std::uint8_t>& truth) {
+                 const std::vector<std::uint8_t>& truth, Overwrite overwrite) {
   std::string text;
   text.reserve(chunk.indices.size() * 8 * 128);
   for (const std::size_t i : chunk.indices)
     append_query_rows(text, queries[i].points, truth[i] != 0);
-  std::ofstream out(chunk.path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw UsageError(chunk.path.string() + ": write failed");
+  write_file_atomically(chunk.path.string(), text, overwrite, "--out");
 }
 
 }  // namespace
@@ -81,13 +79,20 @@ int run_simulate(const SimulateOptions& options) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
   }
+  if (options.out_dir.empty()) throw UsageError("--out: the folder name is empty");
   const fs::path root = fs::path(options.out_dir) / "simulation";
   const fs::path folders[2] = {root / "vertex-face", root / "edge-edge"};
-  for (const fs::path& folder : folders) {
+  const Overwrite overwrite = options.force ? Overwrite::replace : Overwrite::refuse;
+  for (const fs::path& folder : folders) {  // refuse before the work, not after it
+    const std::vector<fs::path> earlier = data_files_in(folder);
+    if (!earlier.empty() && overwrite == Overwrite::refuse)
+      throw OutputError(earlier.front().string(),
+                        "exists (an earlier run's output); pass --force to replace it (--out)");
     std::error_code error;
     fs::create_directories(folder, error);
-    if (error || !fs::is_directory(folder))
-      throw UsageError(folder.string() + ": cannot create the folder (--out)");
+    if (error) throw OutputError(folder.string(), "cannot create the folder: " + error.message());
+    if (!fs::is_directory(folder, error))
+      throw OutputError(folder.string(), "cannot create the folder: not a directory");
   }
 
   const auto generation_start = std::chrono::steady_clock::now();
@@ -104,7 +109,6 @@ int run_simulate(const SimulateOptions& options) {
   std::vector<FileChunk> chunks;
   for (const QueryType type : {QueryType::vertex_face, QueryType::edge_edge}) {
     const fs::path& folder = folders[type == QueryType::vertex_face ? 0 : 1];
-    remove_old_data_files(folder);
     std::size_t in_type = 0, file_index = 0;
     for (std::size_t i = 0; i < queries.size(); ++i) {
       if (queries[i].type != type) continue;
@@ -115,8 +119,16 @@ int run_simulate(const SimulateOptions& options) {
   }
   const auto write_start = std::chrono::steady_clock::now();
   tbb::parallel_for(std::size_t{0}, chunks.size(),
-                    [&](std::size_t k) { write_chunk(chunks[k], queries, truth); });
+                    [&](std::size_t k) { write_chunk(chunks[k], queries, truth, overwrite); });
   const double write_seconds = seconds_since(write_start);
+  // An earlier, larger run's files beyond this run's: kept (never deleted), but named.
+  std::vector<std::string> left;
+  for (const fs::path& folder : folders)
+    for (const fs::path& file : data_files_in(folder))
+      if (std::none_of(chunks.begin(), chunks.end(),
+                       [&](const FileChunk& c) { return c.path == file; }))
+        left.push_back(file.string());
+  warn_files_left_in_place(left, root.string());
 
   // Counts by pair kind and type.
   constexpr int kKinds = 3;

@@ -14,10 +14,13 @@ struct SimulateOptions {
   std::string out_dir;           ///< files go to out_dir/simulation/{vertex-face,edge-edge}/
   sim::SimulationConfig config;
   bool exact_truth = true;       ///< --truth exact; false (--truth none): truth column all 0
+  bool force = false;            ///< --force: replace data_K.csv files of an earlier run
 };
 
-/// Runs the subcommand (exit status 0). Throws UsageError for a bad configuration or an
-/// output folder that cannot be written.
+/// Runs the subcommand (exit status 0). Throws UsageError for a bad configuration, OutputError
+/// for an output folder that cannot be written or, without `force`, that already holds
+/// data_K.csv files (checked before any work). Never deletes a file: data_K.csv files of an
+/// earlier run that this one does not replace are left in place, with a warning.
 int run_simulate(const SimulateOptions& options);
 
 /// Most queries per written file.

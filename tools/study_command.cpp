@@ -11,7 +11,6 @@
 #include <cstdlib>
 #include <iterator>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -22,6 +21,7 @@
 #include "cli_common.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
+#include "output_file.hpp"
 #include "progress.hpp"
 #include "tolerance_ccd.hpp"
 
@@ -132,13 +132,11 @@ fs::path sidecar_of(const std::string& data_file) {
 // Reads a sidecar: one line per query, `index,collides,toi_lo,toi_hi`, TOI fields empty without
 // contact. Its verdicts must equal the file's truth column.
 std::vector<Reference> read_sidecar(const fs::path& path, const QueryFile& input) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string(), 0, "cannot open the TOI sidecar");
+  LineReader in(path.string(), "a TOI sidecar");
   std::vector<Reference> refs;
   std::string line;
-  std::size_t line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
+  while (in.next(line)) {
+    const std::size_t line_no = in.line_number();
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.find_first_not_of(" \t") == std::string::npos) continue;
     const std::vector<std::string> f = split_fields(line);
@@ -189,7 +187,10 @@ void add_file(Dataset& d, Group& group, const std::string& file, QueryType type)
 
   std::vector<Reference> refs;
   const fs::path sidecar = sidecar_of(file);
-  if (!sidecar.empty() && fs::exists(sidecar)) {
+  std::error_code error;
+  const bool has_sidecar = !sidecar.empty() && fs::exists(sidecar, error);
+  if (error) throw InputError(sidecar.string(), 0, error.message());  // a link loop, ...
+  if (has_sidecar) {
     refs = read_sidecar(sidecar, input);
     ++d.sidecar_files;
   } else {
@@ -216,7 +217,7 @@ void add_file(Dataset& d, Group& group, const std::string& file, QueryType type)
     std::size_t bad_row = 0;
     const std::optional<QueryPoints> points = exact_doubles(record.query, &bad_row);
     if (!points)
-      throw InputError(file, line_of_row(file, record.first_line, bad_row),
+      throw InputError(file, record.line_of_row(bad_row),
                        "a coordinate is not exactly a double: the study runs the double API");
     const Origin origin{file_id, static_cast<std::uint32_t>(i)};
     if (input.type == QueryType::vertex_face) {
@@ -259,26 +260,60 @@ Dataset load_plain(const std::string& path, const std::optional<QueryType>& type
   d.truth_source = "truth column";
   Group group;
   group.name = d.name;
-  for (const std::string& file : data_files(path))
+  const std::vector<std::string> files = data_files(path);
+  std::vector<std::string> empty_files;
+  for (const std::string& file : files) {
+    const std::size_t before = group.size();
     add_file(d, group, file, resolve_query_type(file, type));
+    if (group.size() == before) empty_files.push_back(file);
+  }
+  require_some_queries(empty_files, files.size(), group.size());
   d.groups.push_back(std::move(group));
   d.toi_source = toi_source_of(d);
   return d;
 }
 
-// A generated suite: one group per family of its manifest.
+// A family name of a manifest is a folder of the suite: one plain path component (no '/', not
+// '.' or '..', no NUL), so that it cannot name a place outside the suite.
+bool is_plain_component(const std::string& name) {
+  return !name.empty() && name != "." && name != ".." &&
+         name.find_first_of(std::string("/\0", 2)) == std::string::npos;
+}
+
+// The manifest's text: a regular file, read through LineReader (its limits and messages).
+std::string read_manifest_text(const fs::path& path) {
+  LineReader in(path.string(), "a manifest");
+  std::string text, line;
+  while (in.next(line)) text += line + '\n';
+  return text;
+}
+
+// A non-negative integer field of a family entry; nullopt when absent.
+std::optional<std::size_t> count_field(const Json& family, const char* key,
+                                       const fs::path& manifest_path, const std::string& name) {
+  if (!family.contains(key)) return std::nullopt;
+  const Json& value = family[key];
+  if (!value.is_number_unsigned())
+    throw InputError(manifest_path.string(), 0,
+                     "family '" + name + "': \"" + key + "\" must be a non-negative integer");
+  return value.get<std::size_t>();
+}
+
+// A generated suite: one group per family of its manifest. The manifest is checked, not
+// trusted: a non-empty "families" array; each name a plain folder name, listed once; each
+// family's "queries" (required) and "collisions" (when given) equal to what its files hold.
 Dataset load_suite(const std::string& path, const std::optional<QueryType>& type) {
   const fs::path manifest_path = fs::path(path) / "manifest.json";
-  std::ifstream in(manifest_path);
-  if (!in) throw InputError(manifest_path.string(), 0, "cannot open");
+  const std::string where = manifest_path.string();
   Json manifest;
   try {
-    manifest = Json::parse(in);
+    manifest = Json::parse(read_manifest_text(manifest_path));
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(manifest_path.string(), 0, std::string("not valid JSON: ") + e.what());
+    throw InputError(where, 0, std::string("not valid JSON: ") + e.what());
   }
   if (!manifest.is_object() || !manifest.contains("families") || !manifest["families"].is_array())
-    throw InputError(manifest_path.string(), 0, "no \"families\" array");
+    throw InputError(where, 0, "no \"families\" array");
+  if (manifest["families"].empty()) throw InputError(where, 0, "the \"families\" array is empty");
 
   Dataset d;
   d.name = name_of(path);
@@ -287,6 +322,7 @@ Dataset load_suite(const std::string& path, const std::optional<QueryType>& type
   d.truth_source = "truth column (exact path, at generation)";
   d.suite_info["generator"] = manifest.value("generator", "");
   d.suite_info["seed"] = manifest.value("seed", Json());
+  std::map<std::string, int> seen;
   for (const Json& family : manifest["families"]) {
     Group g;
     try {
@@ -299,17 +335,33 @@ Dataset load_suite(const std::string& path, const std::optional<QueryType>& type
       g.offset = family.value("offset", 0.0);
       g.parameters = family.value("parameters", Json::object());
     } catch (const nlohmann::json::exception& e) {
-      throw InputError(manifest_path.string(), 0, std::string("bad family entry: ") + e.what());
+      throw InputError(where, 0, std::string("bad family entry: ") + e.what());
     }
-    const long long expected = family.value("queries", -1LL);
+    if (!is_plain_component(g.name))
+      throw InputError(where, 0,
+                       "family name " + quote_for_message(g.name) +
+                           " is not a plain folder name (no '/', not '.' or '..')");
+    if (seen[g.name]++ > 0)
+      throw InputError(where, 0, "family '" + g.name + "' is listed twice");
+    const std::optional<std::size_t> expected = count_field(family, "queries", manifest_path, g.name);
+    if (!expected)
+      throw InputError(where, 0, "family '" + g.name + "': no \"queries\" count");
+    const std::optional<std::size_t> collisions =
+        count_field(family, "collisions", manifest_path, g.name);
     const fs::path folder = fs::path(path) / g.name;
-    if (expected == 0 && !fs::exists(folder)) continue;
-    for (const std::string& file : data_files(folder.string()))
-      add_file(d, g, file, resolve_query_type(file, type));
-    if (expected >= 0 && g.size() != static_cast<std::size_t>(expected))
-      throw InputError(manifest_path.string(), 0,
-                       "family " + g.name + ": the manifest says " + std::to_string(expected) +
+    std::error_code error;
+    if (!(*expected == 0 && !fs::exists(folder, error)))
+      for (const std::string& file : data_files(folder.string()))
+        add_file(d, g, file, resolve_query_type(file, type));
+    if (g.size() != *expected)
+      throw InputError(where, 0,
+                       "family '" + g.name + "': the manifest says " + std::to_string(*expected) +
                            " queries, its files hold " + std::to_string(g.size()));
+    if (collisions && g.contacts() != *collisions)
+      throw InputError(where, 0,
+                       "family '" + g.name + "': the manifest says " +
+                           std::to_string(*collisions) + " collisions, its truth column has " +
+                           std::to_string(g.contacts()));
     d.groups.push_back(std::move(g));
   }
   d.toi_source = toi_source_of(d);
@@ -848,15 +900,17 @@ int run_study(const StudyOptions& options) {
     if (!(eps >= 0.0 && std::isfinite(eps)))
       throw UsageError("--eps: every eps must be finite and >= 0, got " + format_double(eps));
 
-  std::ofstream md_file;
-  if (!options.out_md.empty()) {
-    md_file.open(options.out_md);
-    if (!md_file) throw UsageError(options.out_md + ": cannot open for writing (--out-md)");
-  }
+  // Opened before the work, so that an unwritable --out-md fails at once.
+  std::optional<OutputFile> md_file;
+  if (!options.out_md.empty())
+    md_file.emplace(options.out_md, options.force ? Overwrite::replace : Overwrite::refuse,
+                    "--out-md");
 
   std::vector<Dataset> datasets;
   for (const std::string& path : options.paths) {
-    const bool suite = fs::is_directory(path) && fs::exists(fs::path(path) / "manifest.json");
+    std::error_code error;
+    const bool suite = fs::is_directory(path, error) &&
+                       fs::exists(fs::path(path) / "manifest.json", error);
     datasets.push_back(suite ? load_suite(path, options.type) : load_plain(path, options.type));
   }
   if (options.simulation) datasets.push_back(load_simulation(options.simulation_config));
@@ -873,10 +927,11 @@ int run_study(const StudyOptions& options) {
     std::cout << study_json(results, methods, options).dump(2) << '\n';
   else
     study_markdown(std::cout, results, methods);
-  if (md_file.is_open()) {
-    study_markdown(md_file, results, methods);
-    md_file.close();
-    if (!md_file) throw UsageError(options.out_md + ": write failed (--out-md)");
+  if (md_file) {
+    std::ostringstream markdown;
+    study_markdown(markdown, results, methods);
+    md_file->write(markdown.str());
+    md_file->commit();
   }
 
   for (const DatasetResults& r : results)

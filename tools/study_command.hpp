@@ -27,6 +27,7 @@ struct StudyOptions {
   sim::SimulationConfig simulation_config = sim::small_simulation_config();
   bool json = false;    ///< the JSON document on stdout instead of text tables
   std::string out_md;   ///< --out-md: also write the Markdown tables there
+  bool force = false;   ///< --force: --out-md may replace an existing file
 };
 
 /// Runs the subcommand. Exit status 1 when a certified method (default at any width, exact)

@@ -1,12 +1,18 @@
 #include "exactccd/query_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <ostream>
 #include <string_view>
+#include <system_error>
 
 namespace exactccd {
 
@@ -27,6 +33,215 @@ std::optional<QueryType> query_type_from_path(const std::string& path) {
   }
   return type;
 }
+
+// ---- Reading ----------------------------------------------------------------------------------
+
+namespace {
+
+// "is a directory", "is a FIFO (named pipe)", ... for a file that is not a regular one.
+std::string kind_of_non_regular(mode_t mode) {
+  if (S_ISDIR(mode)) return "is a directory";
+  if (S_ISFIFO(mode)) return "is a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "is a character device";
+  if (S_ISBLK(mode)) return "is a block device";
+  if (S_ISSOCK(mode)) return "is a socket";
+  return "is not a regular file";
+}
+
+std::string system_message(int error) {
+  return std::error_code(error, std::generic_category()).message();
+}
+
+}  // namespace
+
+void require_regular_file(const std::string& path, const std::string& what) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0) throw InputError(path, 0, system_message(errno));
+  if (!S_ISREG(status.st_mode))
+    throw InputError(path, 0, kind_of_non_regular(status.st_mode) + ", not " + what);
+}
+
+LineReader::LineReader(const std::string& path, const std::string& what) : path_(path) {
+  // stat() first, so that a FIFO or a device is never opened; O_NONBLOCK and fstat() close the
+  // window in which the path could be replaced by one.
+  require_regular_file(path, what);
+  fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd_ < 0) throw InputError(path, 0, system_message(errno));
+  struct stat status {};
+  const bool examined = ::fstat(fd_, &status) == 0;
+  const int error = errno;
+  if (examined && S_ISREG(status.st_mode)) {
+    buffer_.resize(4 * kMaxLineBytes);  // larger than a line: next() stops a line at the cap
+    return;
+  }
+  ::close(fd_);
+  fd_ = -1;
+  throw InputError(path, 0,
+                   examined ? kind_of_non_regular(status.st_mode) + ", not " + what
+                            : system_message(error));
+}
+
+LineReader::~LineReader() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+bool LineReader::fill() {
+  if (at_end_) return false;
+  if (begin_ > 0) {  // keep the unread part at the front
+    std::memmove(buffer_.data(), buffer_.data() + begin_, end_ - begin_);
+    end_ -= begin_;
+    begin_ = 0;
+  }
+  for (;;) {
+    const ssize_t n = ::read(fd_, buffer_.data() + end_, buffer_.size() - end_);
+    if (n > 0) {
+      end_ += static_cast<std::size_t>(n);
+      return true;
+    }
+    if (n == 0) {
+      at_end_ = true;
+      return false;
+    }
+    if (errno != EINTR)
+      throw InputError(path_, line_number_ + 1, "read error: " + system_message(errno));
+  }
+}
+
+bool LineReader::next(std::string& line) {
+  const auto too_long = [&] {
+    return InputError(path_, line_number_ + 1,
+                      "line longer than " + std::to_string(kMaxLineBytes) +
+                          " bytes, the limit (a file without line ends?)");
+  };
+  std::size_t scanned = 0;  // bytes after begin_ known to hold no '\n'
+  for (;;) {
+    // The line end, looked for among at most kMaxLineBytes + 1 bytes.
+    const std::size_t window = std::min(end_ - begin_, kMaxLineBytes + 1);
+    const char* from = buffer_.data() + begin_ + scanned;
+    if (const void* found = std::memchr(from, '\n', window - scanned)) {
+      const auto stop = static_cast<std::size_t>(static_cast<const char*>(found) - buffer_.data());
+      if (stop - begin_ > kMaxLineBytes) throw too_long();
+      line.assign(buffer_.data() + begin_, stop - begin_);
+      begin_ = stop + 1;
+      ++line_number_;
+      return true;
+    }
+    scanned = window;
+    if (scanned > kMaxLineBytes) throw too_long();
+    if (!fill()) break;
+  }
+  if (begin_ == end_) return false;
+  line.assign(buffer_.data() + begin_, end_ - begin_);  // the last line, without '\n'
+  begin_ = end_;
+  ++line_number_;
+  return true;
+}
+
+// ---- Text for messages ------------------------------------------------------------------------
+
+namespace {
+
+constexpr std::string_view kByteOrderMark = "\xEF\xBB\xBF";
+
+void append_hex_bytes(std::string& out, std::string_view bytes) {
+  static const char* const kDigits = "0123456789ABCDEF";
+  for (const char c : bytes) {
+    const auto b = static_cast<unsigned char>(c);
+    out += "\\x";
+    out += kDigits[b >> 4];
+    out += kDigits[b & 15];
+  }
+}
+
+// The length (2-4) of the well-formed UTF-8 sequence at the start of `s` and its code point, or
+// 0 when it is not one (overlong forms and surrogates included).
+std::size_t utf8_sequence(std::string_view s, char32_t* code_point) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(s[i]); };
+  const unsigned char lead = byte(0);
+  std::size_t length = 0;
+  char32_t cp = 0, minimum = 0;
+  if (lead >= 0xC2 && lead <= 0xDF) length = 2, cp = lead & 0x1F, minimum = 0x80;
+  else if (lead >= 0xE0 && lead <= 0xEF) length = 3, cp = lead & 0x0F, minimum = 0x800;
+  else if (lead >= 0xF0 && lead <= 0xF4) length = 4, cp = lead & 0x07, minimum = 0x10000;
+  else return 0;
+  if (s.size() < length) return 0;
+  for (std::size_t i = 1; i < length; ++i) {
+    if ((byte(i) & 0xC0) != 0x80) return 0;
+    cp = (cp << 6) | (byte(i) & 0x3F);
+  }
+  if (cp < minimum || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+  *code_point = cp;
+  return length;
+}
+
+// Code points shown escaped although valid: C1 controls, the byte-order mark, and the
+// bidirectional overrides and isolates that reorder the text around them on a terminal.
+bool invisible(char32_t cp) {
+  return (cp >= 0x80 && cp <= 0x9F) || cp == 0xFEFF || (cp >= 0x202A && cp <= 0x202E) ||
+         (cp >= 0x2066 && cp <= 0x2069);
+}
+
+// Appends the escaped form of `text` to `out`, at most `limit` input bytes (whole characters);
+// returns the number of input bytes consumed.
+std::size_t append_printable(std::string& out, std::string_view text, std::size_t limit) {
+  std::size_t i = 0;
+  while (i < text.size() && i < limit) {
+    const char c = text[i];
+    const auto b = static_cast<unsigned char>(c);
+    if (c == '\t') out += "\\t";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\n') out += "\\n";
+    if (c == '\t' || c == '\r' || c == '\n') {
+      ++i;
+      continue;
+    }
+    if (b < 0x20 || b == 0x7F) {
+      append_hex_bytes(out, text.substr(i, 1));
+      ++i;
+      continue;
+    }
+    if (b < 0x80) {
+      out += c;
+      ++i;
+      continue;
+    }
+    char32_t cp = 0;
+    const std::size_t length = utf8_sequence(text.substr(i), &cp);
+    if (length == 0) {
+      append_hex_bytes(out, text.substr(i, 1));
+      ++i;
+    } else {
+      if (invisible(cp))
+        append_hex_bytes(out, text.substr(i, length));
+      else
+        out.append(text.substr(i, length));
+      i += length;
+    }
+  }
+  return i;
+}
+
+}  // namespace
+
+std::string printable(std::string_view text) {
+  std::string out;
+  append_printable(out, text, text.size());
+  return out;
+}
+
+std::string quote_for_message(std::string_view text) {
+  constexpr std::size_t kShown = 60;
+  std::string out = "'";
+  const std::size_t shown = append_printable(out, text, kShown);
+  out += shown < text.size() ? "...'" : "'";
+  if (text.substr(0, kByteOrderMark.size()) == kByteOrderMark)
+    out += " (starts with a UTF-8 byte-order mark)";
+  else if (text.find(kByteOrderMark) != std::string_view::npos)
+    out += " (holds a UTF-8 byte-order mark)";
+  return out;
+}
+
+// ---- Query files ------------------------------------------------------------------------------
 
 namespace {
 
@@ -50,22 +265,27 @@ mpz_class parse_integer(std::string_view s) {
 }  // namespace
 
 QueryFile read_query_file(const std::string& path, QueryType type) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path, 0, "no such file");
-  if (fs::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a CSV file");
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open for reading");
-
+  LineReader in(path, "a CSV file");
   QueryFile file{path, type, {}};
   static const char* const kColumns[7] = {"x_num", "x_den", "y_num", "y_den",
                                           "z_num", "z_den", "truth"};
   std::string line;
-  std::size_t line_no = 0, row = 0;
+  std::size_t row = 0;
+  std::size_t blank_in_query = 0;  // line of a blank line after a partial query, 0 for none
   QueryRecord current;
-  while (std::getline(in, line)) {
-    ++line_no;
+  while (in.next(line)) {
+    const std::size_t line_no = in.line_number();
     const std::string_view text = trim(line);
-    if (text.empty()) continue;  // blank lines carry no data
+    if (text.empty()) {  // a blank line: allowed between queries only
+      if (row % 8 != 0 && blank_in_query == 0) blank_in_query = line_no;
+      continue;
+    }
+    if (blank_in_query != 0)
+      throw InputError(path, blank_in_query,
+                       "blank line inside a query (the query starting at line " +
+                           std::to_string(current.first_line) + " has " +
+                           std::to_string(row % 8) +
+                           " of its 8 rows; blank lines may only stand between queries)");
     std::vector<std::string_view> fields;
     std::size_t start = 0;
     for (;;) {
@@ -83,8 +303,8 @@ QueryFile read_query_file(const std::string& path, QueryType type) {
     for (int i = 0; i < 7; ++i) {
       if (!is_integer(fields[i]))
         throw InputError(path, line_no,
-                         std::string("column ") + kColumns[i] + " is not an integer: '" +
-                             std::string(fields[i]) + "'");
+                         std::string("column ") + kColumns[i] +
+                             " is not an integer: " + quote_for_message(fields[i]));
       v[i] = parse_integer(fields[i]);
     }
     for (int i = 1; i < 6; i += 2)
@@ -114,9 +334,8 @@ QueryFile read_query_file(const std::string& path, QueryType type) {
     if (k == 7) file.queries.push_back(std::move(current));
     ++row;
   }
-  if (in.bad()) throw InputError(path, line_no, "read error");
   if (row % 8 != 0)
-    throw InputError(path, line_no,
+    throw InputError(path, in.line_number(),
                      "query cut short: " + std::to_string(row % 8) +
                          " rows in the last query (8 per query), starting at line " +
                          std::to_string(current.first_line));
@@ -125,13 +344,15 @@ QueryFile read_query_file(const std::string& path, QueryType type) {
 
 std::vector<std::string> find_query_files(const std::string& path) {
   std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path, 0, "no such file or directory");
-  if (!fs::is_directory(path, ec)) return {path};
+  const fs::file_status status = fs::status(path, ec);
+  if (ec) throw InputError(path, 0, ec.message());  // the real reason: missing, a link loop, ...
+  if (!fs::is_directory(status)) return {path};      // read_query_file rejects non-regular files
   std::vector<std::string> files;
   for (auto it = fs::recursive_directory_iterator(path, ec); !ec && it != fs::end(it);
        it.increment(ec)) {
     const fs::path& p = it->path();
-    if (!it->is_regular_file() || p.extension() != ".csv") continue;
+    std::error_code entry_error;  // an entry that cannot be examined (a link loop) is no query file
+    if (p.extension() != ".csv" || !it->is_regular_file(entry_error)) continue;
     // toi_K.csv: the TOI sidecars of `exactccd generate`, not queries.
     if (p.filename().string().rfind("toi_", 0) == 0) continue;
     const auto parent = p.parent_path().filename();

@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "exactccd/rational_query.hpp"
@@ -33,6 +34,10 @@ struct QueryRecord {
   RationalQuery query;
   bool truth = false;         ///< the file's truth column
   std::size_t first_line = 0; ///< 1-based line of the query's first row
+
+  /// The 1-based line of row `row` (0-7): a query's rows are consecutive lines, since the
+  /// reader rejects a blank line inside a query.
+  std::size_t line_of_row(std::size_t row) const { return first_line + row; }
 };
 
 struct QueryFile {
@@ -45,16 +50,70 @@ struct QueryFile {
 /// or nullopt.
 std::optional<QueryType> query_type_from_path(const std::string& path);
 
-/// Reads and validates a whole file. Throws InputError for: a missing or unreadable file, a
-/// row without exactly 7 columns, a field that is not an integer (NaN and Inf included), a
-/// zero denominator, a truth value other than 0 or 1, truth differing within a query, a query
-/// cut short (row count not a multiple of 8).
+// ---- Reading ----------------------------------------------------------------------------------
+
+/// The longest line the readers accept, in bytes: a row of exact doubles takes at most about
+/// 1,030 (three fractions like -9007199254740991,2^1074). The cap keeps a file without line ends (or a device streaming bytes) from
+/// growing memory without bound.
+inline constexpr std::size_t kMaxLineBytes = 64 * 1024;
+
+/// Reads the lines of a regular file, one at a time. Only regular files are opened for reading
+/// (a FIFO would block, a device may never end). Throws InputError naming the file: the
+/// system's reason when it cannot be opened ("No such file or directory", "Permission denied",
+/// "Too many levels of symbolic links"), what it is when it is not a regular file ("is a
+/// directory, not <what>", "is a FIFO (named pipe), not <what>", ...), a line longer than
+/// kMaxLineBytes (with its number), a read error.
+class LineReader {
+ public:
+  /// `what` names the expected content in messages, e.g. "a CSV file".
+  LineReader(const std::string& path, const std::string& what);
+  ~LineReader();
+  LineReader(const LineReader&) = delete;
+  LineReader& operator=(const LineReader&) = delete;
+
+  /// The next line, without its '\n' (a last line without one counts); false at the end.
+  bool next(std::string& line);
+  std::size_t line_number() const { return line_number_; }  ///< of the line last returned
+  const std::string& path() const { return path_; }
+
+ private:
+  bool fill();  // reads more bytes; false at the end of the file
+
+  std::string path_;
+  int fd_ = -1;
+  std::vector<char> buffer_;
+  std::size_t begin_ = 0, end_ = 0;
+  std::size_t line_number_ = 0;
+  bool at_end_ = false;
+};
+
+/// Throws InputError unless `path` names a regular file (following symbolic links); the message
+/// as LineReader's. Opens nothing.
+void require_regular_file(const std::string& path, const std::string& what);
+
+/// `text` for an error message, in single quotes: tab, carriage return and line feed as \t, \r,
+/// \n; other control characters (NUL included), bytes that are not UTF-8, C1 controls and
+/// bidirectional overrides as \xNN per byte; cut after about 60 bytes ("..."). A UTF-8
+/// byte-order mark (EF BB BF) is escaped and named: "(starts with a UTF-8 byte-order mark)".
+std::string quote_for_message(std::string_view text);
+
+/// `text` with the escapes of quote_for_message, unquoted and uncut (for whole messages).
+std::string printable(std::string_view text);
+
+/// Reads and validates a whole file (through LineReader). Lines holding only spaces, tabs or a
+/// carriage return are blank: allowed between queries, rejected inside one. Throws InputError
+/// for: a file that cannot be read (see LineReader), a row without exactly 7 columns, a field
+/// that is not an integer (NaN and Inf included), a zero denominator, a truth value other than
+/// 0 or 1, truth differing within a query, a blank line inside a query, a query cut short (row
+/// count not a multiple of 8). An empty file gives no queries (callers decide whether that is
+/// an error).
 QueryFile read_query_file(const std::string& path, QueryType type);
 
 /// `path` itself when it is a file; for a directory, every `vertex-face/*.csv` and
 /// `edge-edge/*.csv` below it, sorted, except files whose name starts with `toi_` (the TOI
 /// sidecars `toi_K.csv` that `exactccd generate` writes next to its `data_K.csv`). Throws
-/// InputError when the path does not exist or a directory holds no such file.
+/// InputError when the path cannot be examined (the system's reason: missing, a link loop, ...)
+/// or a directory holds no such file.
 std::vector<std::string> find_query_files(const std::string& path);
 
 // ---- Writing ----------------------------------------------------------------------------------
