@@ -6,18 +6,14 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
-#include <regex>
 #include <stdexcept>
 
 #include "exactccd/rational_query.hpp"
 
 namespace exactccd::families {
 
-namespace fs = std::filesystem;
 
 std::size_t GeneratedFamily::collisions() const {
   std::size_t n = 0;
@@ -187,48 +183,6 @@ std::string manifest_text(const Corpus& corpus) {
        "empty without contact)."},
       {"families", families}};
   return manifest.dump(2) + "\n";
-}
-
-namespace {
-
-void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error(path.string() + ": write failed");
-}
-
-}  // namespace
-
-void write_corpus(const Corpus& corpus, const std::string& dir) {
-  const fs::path root(dir);
-  std::error_code error;
-  fs::create_directories(root, error);
-  if (error || !fs::is_directory(root))
-    throw std::runtime_error(root.string() + ": cannot create the folder");
-  // Stale files of a previous run: only in folders named after a family.
-  static const std::regex stale("(data|toi)_[0-9]+\\.csv");
-  for (const auto& entry : fs::directory_iterator(root)) {
-    if (!entry.is_directory() || !is_family_name(entry.path().filename().string())) continue;
-    for (const char* type : {"vertex-face", "edge-edge"}) {
-      const fs::path folder = entry.path() / type;
-      if (!fs::is_directory(folder)) continue;
-      std::vector<fs::path> old;
-      for (const auto& file : fs::directory_iterator(folder))
-        if (file.is_regular_file() && std::regex_match(file.path().filename().string(), stale))
-          old.push_back(file.path());
-      for (const fs::path& p : old) fs::remove(p);
-    }
-  }
-  for (const GeneratedFamily& g : corpus.families) {
-    const fs::path folder = root / family_folder(g.family);
-    fs::create_directories(folder, error);
-    if (error || !fs::is_directory(folder))
-      throw std::runtime_error(folder.string() + ": cannot create the folder");
-    write_file(folder / "data_0.csv", data_csv_text(g));
-    write_file(folder / "toi_0.csv", toi_csv_text(g));
-  }
-  write_file(root / "manifest.json", manifest_text(corpus));
 }
 
 }  // namespace exactccd::families

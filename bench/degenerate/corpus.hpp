@@ -51,11 +51,6 @@ std::string data_csv_text(const GeneratedFamily& family);
 std::string toi_csv_text(const GeneratedFamily& family);
 std::string manifest_text(const Corpus& corpus);
 
-/// Writes the corpus under `dir` (created if needed). Files of a previous run in folders named
-/// after a family (data_*.csv, toi_*.csv) are removed first. Throws std::runtime_error when a
-/// file cannot be written.
-void write_corpus(const Corpus& corpus, const std::string& dir);
-
 /// `value` as its exact lowest-terms fraction "num,den" (0 as "0,1").
 std::string exact_fraction(double value);
 
