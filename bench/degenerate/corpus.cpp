@@ -14,7 +14,6 @@
 
 namespace exactccd::families {
 
-
 std::size_t GeneratedFamily::collisions() const {
   std::size_t n = 0;
   for (const CcdResult& r : exact) n += r.collides ? 1 : 0;
