@@ -4,10 +4,12 @@ set -euo pipefail
 
 packages=(
   g++ cmake make pkg-config
-  libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev
+  libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev libboost-dev
   googletest libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev nlohmann-json3-dev
 )
 if [[ "${1:-}" == "--with-plots" ]]; then packages+=(python3-matplotlib); fi
+# .ci/sanitizers.sh: clang with its sanitizer and libFuzzer runtimes, llvm-symbolizer for traces.
+if [[ " $* " == *" --with-sanitizers "* ]]; then packages+=(clang libclang-rt-14-dev libfuzzer-14-dev llvm-14); fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -194,8 +194,8 @@ TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnRandomQueries) {
     const char* what = type == QueryType::vertex_face ? "vertex-face" : "edge-edge";
     expect_no_allocation_in_float_stages(a, what);
     // The generators must reach the stages under test, or this test proves nothing.
-    EXPECT_GT(a.of(Stage::culling), 1000u) << what;
-    EXPECT_GT(a.of(Stage::filter), 1000u) << what;
+    EXPECT_GT(a.of(Stage::culling), scaled_count(1000)) << what;
+    EXPECT_GT(a.of(Stage::filter), scaled_count(1000)) << what;
     // The rational exact path allocates (reported above); it must be seen doing so.
     EXPECT_GT(a.allocating(Stage::exact), 0u) << what;
   }

@@ -381,7 +381,8 @@ TEST(TrianglesIntersect, AgreesWithLinearProgramOnRandomAndNearDegenerateInputs)
   for (const Family& family : kFamilies) {
     Rng rng(seed ^ std::hash<std::string>{}(family.name));
     int meet = 0, mismatches = 0;
-    for (int i = 0; i < family.count; ++i) {
+    const int count = static_cast<int>(scaled_count(family.count));
+    for (int i = 0; i < count; ++i) {
       Tri a, b;
       family.make(rng, a, b);
       const bool expected = lp_triangles_intersect(a, b);
@@ -393,9 +394,9 @@ TEST(TrianglesIntersect, AgreesWithLinearProgramOnRandomAndNearDegenerateInputs)
     }
     EXPECT_EQ(mismatches, 0) << family.name;
     // Both answers must be well represented, or the family tests little.
-    EXPECT_GT(meet, family.count / 20) << family.name;
-    EXPECT_LT(meet, family.count - family.count / 20) << family.name;
-    std::cout << "[ family   ] " << family.name << ": " << family.count << " pairs, " << meet
+    EXPECT_GT(meet, count / 20) << family.name;
+    EXPECT_LT(meet, count - count / 20) << family.name;
+    std::cout << "[ family   ] " << family.name << ": " << count << " pairs, " << meet
               << " meet\n";
   }
 }
@@ -646,7 +647,7 @@ TEST(DiscreteScene, IntersectingPairsMatchBruteForceOnRandomGridScenes) {
   const std::uint64_t seed = test_seed("intersecting_triangle_pairs vs brute force");
   Rng rng(seed);
   int nonempty = 0, bracket_checks = 0;
-  const int scenes = 150;
+  const int scenes = static_cast<int>(scaled_count(150));
   for (int s = 0; s < scenes; ++s) {
     const std::vector<RandomMesh> meshes = random_scene(rng);
     Scene scene;

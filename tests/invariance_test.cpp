@@ -35,9 +35,9 @@ struct Input {
 const std::vector<Input>& inputs() {
   static const std::vector<Input> all = [] {
     std::vector<Input> out;
-    for (const auto& s : sample_queries()) out.push_back({s.where(), s.query, false});
+    for (const auto& s : scaled_sample_queries()) out.push_back({s.where(), s.query, false});
     QueryGenerator gen(test_seed("invariance inputs"));
-    const int per_type = 1500;
+    const int per_type = static_cast<int>(scaled_count(1500));
     for (const QueryType type : {QueryType::vertex_face, QueryType::edge_edge}) {
       for (int i = 0; i < per_type; ++i) {
         RationalQuery q;
@@ -110,8 +110,8 @@ void expect_invariant(const char* name, const std::vector<QueryType>& types,
   }
   std::cout << "[ checked  ] " << name << ": " << checked << " queries (" << colliding
             << " colliding), " << double_api << " also through the double API\n";
-  EXPECT_GT(checked, 2000u);
-  EXPECT_GT(colliding, 100u);
+  EXPECT_GT(checked, scaled_count(2000));
+  EXPECT_GT(colliding, scaled_count(100));
 }
 
 const std::vector<QueryType> kVertexFace{QueryType::vertex_face};
@@ -307,7 +307,7 @@ TEST(Invariance, TimeReversalGivesLastContact) {
     }
   }
   std::cout << "[ checked  ] " << checked << " last contact times\n";
-  EXPECT_GT(checked, 500u);
+  EXPECT_GT(checked, scaled_count(500));
 }
 
 }  // namespace

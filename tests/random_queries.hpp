@@ -1,6 +1,7 @@
 // Seeded random double-precision CCD queries, and the differential check "default path versus
 // exact path" on one query. Shared by tests/differential_test.cpp, tests/allocation_test.cpp,
-// tests/rounding_mode_test.cpp and bench/soak.cpp; no GoogleTest dependency.
+// tests/rounding_mode_test.cpp, tests/extreme_*_test.cpp and bench/soak.cpp; no GoogleTest
+// dependency.
 //
 // Every query is a pure function of (base seed, generator, index): query i of a generator can be
 // regenerated alone, whatever the thread that made it or the number of queries before it.
@@ -26,9 +27,12 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "exactccd/ccd.hpp"
 #include "exactccd/rational_query.hpp"
+#include "test_scale.hpp"  // scale_from_environment, scaled_count
 
 namespace exactccd::test {
 
@@ -74,19 +78,6 @@ inline std::uint64_t mix64(std::uint64_t x) {
 inline std::uint64_t seed_from_environment(std::uint64_t fallback) {
   if (const char* env = std::getenv("EXACTCCD_TEST_SEED")) return std::strtoull(env, nullptr, 0);
   return fallback;
-}
-
-/// EXACTCCD_TEST_SCALE when set (a positive factor on loop counts), else 1.
-inline double scale_from_environment() {
-  if (const char* env = std::getenv("EXACTCCD_TEST_SCALE")) {
-    const double s = std::strtod(env, nullptr);
-    if (s > 0 && std::isfinite(s)) return s;
-  }
-  return 1.0;
-}
-
-inline std::uint64_t scaled_count(std::uint64_t n, double scale) {
-  return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(n * scale)));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -470,6 +461,416 @@ inline DoubleQuery generate(const Generator& g, std::uint64_t seed, std::uint64_
 }
 
 // ---------------------------------------------------------------------------------------------
+// Extreme magnitudes (tests/extreme_magnitude_test.cpp)
+//
+// Coordinates over the whole double range, 2^-1074 (the smallest subnormal) to DBL_MAX, mixed
+// within one query, with differences that overflow. Two exact facts give ground truth:
+//  - Multiplying one axis of every point by 2^s is an invertible linear map of space: a point is
+//    in a triangle, or two segments meet, at time t iff their images are, so the contact times
+//    (verdict and TOI) do not change. The double products are exact unless bits fall below
+//    2^-1074; scale_axes says whether they are.
+//  - A layered query keeps each primitive in a plane z = const that moves along z: its contact
+//    times follow from one linear function of t and a 2-D test, decided here in rationals.
+
+namespace detail {
+
+/// A binary exponent in [-1074, 1023]: in the subnormal range, near the overflow threshold,
+/// near 1, or uniform over the whole range.
+inline int random_exponent(Rng& rng) {
+  switch (uniform_int(rng, 0, 4)) {
+    case 0: return uniform_int(rng, -1074, -1023);
+    case 1: return uniform_int(rng, 1000, 1023);
+    case 2: return uniform_int(rng, -4, 4);
+    default: return uniform_int(rng, -1074, 1023);
+  }
+}
+
+/// 2^e (1 + f), f a random fraction of 52 bits or of at most 3 (equal values and exact ties
+/// likely); rounded for e < -1022 (a subnormal, or 0 below 2^-1075). For e = 1023, one in
+/// eight is DBL_MAX.
+inline double random_magnitude(Rng& rng, int e) {
+  if (e >= 1023 && coin(rng, 8)) return std::numeric_limits<double>::max();
+  const int bits = coin(rng) ? uniform_int(rng, 0, 3) : 52;
+  const std::uint64_t f = bits == 0 ? 0 : rng() >> (64 - bits);
+  return std::ldexp(1.0 + std::ldexp(static_cast<double>(f), -bits), std::min(e, 1023));
+}
+
+inline double random_signed(Rng& rng, int e) {
+  const double m = random_magnitude(rng, e);
+  return coin(rng) ? m : -m;
+}
+
+/// floor(log2) of the largest |coordinate| of each axis (subnormals included); INT_MIN for an
+/// axis of zeros.
+inline std::array<int, 3> axis_exponents(const std::array<Eigen::Vector3d, 8>& x) {
+  std::array<int, 3> e;
+  e.fill(std::numeric_limits<int>::min());
+  for (const auto& p : x)
+    for (int k = 0; k < 3; ++k)
+      if (p[k] != 0) e[k] = std::max(e[k], std::ilogb(p[k]));
+  return e;
+}
+
+}  // namespace detail
+
+/// Multiplies axis k of every point by 2^shift[k]. Returns whether every product is exact
+/// (finite, and no bit lost below 2^-1074): then the query has its original answer.
+inline bool scale_axes(DoubleQuery* q, const std::array<int, 3>& shift) {
+  bool exact = true;
+  for (auto& p : q->v)
+    for (int k = 0; k < 3; ++k) {
+      const double s = std::ldexp(p[k], shift[k]);
+      if (!std::isfinite(s) || std::ldexp(s, -shift[k]) != p[k]) exact = false;
+      p[k] = s;
+    }
+  if (!exact) q->planted_time = std::numeric_limits<double>::quiet_NaN();
+  return exact;
+}
+
+/// Scales each axis by a power of two so that its largest |coordinate| lies in
+/// [2^top[k], 2^(top[k] + 1)), top[k] in [-1074, 1023]: never overflows, and is exact unless
+/// bits fall below 2^-1074 (returned). An axis of zeros stays zero.
+inline bool place_axes(DoubleQuery* q, const std::array<int, 3>& top) {
+  const std::array<int, 3> e = detail::axis_exponents(q->v);
+  std::array<int, 3> shift{};
+  for (int k = 0; k < 3; ++k)
+    shift[k] = e[k] == std::numeric_limits<int>::min() ? 0 : top[k] - e[k];
+  return scale_axes(q, shift);
+}
+
+/// Scales the whole query by one power of two so that its largest |coordinate| lies in
+/// [2^top, 2^(top + 1)), top in [-1074, 1023]: never overflows, and is exact unless bits fall
+/// below 2^-1074 (returned). A query of zeros stays zero.
+inline bool place_query(DoubleQuery* q, int top) {
+  const std::array<int, 3> e = detail::axis_exponents(q->v);
+  const int largest = *std::max_element(e.begin(), e.end());
+  const int shift = largest == std::numeric_limits<int>::min() ? 0 : top - largest;
+  return scale_axes(q, {shift, shift, shift});
+}
+
+/// The smallest top for place_query that keeps every bit of the query: its coordinates span
+/// the binary digits from 2^top(q) down to the lowest set bit, and the lowest must stay at or
+/// above 2^-1074. -1074 for a query of zeros.
+inline int lowest_exact_top(const DoubleQuery& q) {
+  int high = std::numeric_limits<int>::min(), low = std::numeric_limits<int>::max();
+  for (const auto& p : q.v)
+    for (int k = 0; k < 3; ++k) {
+      if (p[k] == 0) continue;
+      int e = 0;
+      const double m = std::frexp(std::fabs(p[k]), &e);  // |x| = m 2^e, m in [1/2, 1)
+      auto mantissa = static_cast<std::uint64_t>(std::ldexp(m, 53));
+      int lowest = e - 53;
+      while ((mantissa & 1) == 0) mantissa >>= 1, ++lowest;
+      high = std::max(high, e - 1);
+      low = std::min(low, lowest);
+    }
+  return high == std::numeric_limits<int>::min() ? -1074 : -1074 + (high - low);
+}
+
+/// Translates each axis so that its extreme coordinates are opposite, when every difference
+/// is exact (returned; the query is left alone otherwise). A translation changes no answer;
+/// placed at the top of the range afterwards, the query's differences overflow.
+inline bool center_axes(DoubleQuery* q) {
+  DoubleQuery c = *q;
+  for (int k = 0; k < 3; ++k) {
+    double lo = q->v[0][k], hi = lo;
+    for (const auto& p : q->v) lo = std::min(lo, p[k]), hi = std::max(hi, p[k]);
+    const double mid = 0.5 * lo + 0.5 * hi;
+    for (auto& p : c.v) {
+      const double moved = p[k] - mid;
+      if (mpq_class(moved) != mpq_class(p[k]) - mpq_class(mid)) return false;
+      p[k] = moved;
+    }
+  }
+  *q = c;
+  return true;
+}
+
+/// Permutes the axes and mirrors some of them at random: exact, and an isometry (no answer
+/// changes).
+inline void permute_and_mirror_axes(DoubleQuery* q, std::mt19937_64& rng) {
+  std::array<int, 3> axis{0, 1, 2};
+  std::shuffle(axis.begin(), axis.end(), rng);
+  const std::array<bool, 3> mirror{detail::coin(rng), detail::coin(rng), detail::coin(rng)};
+  for (auto& p : q->v) {
+    const Eigen::Vector3d old = p;
+    for (int k = 0; k < 3; ++k) p[k] = mirror[k] ? -old[axis[k]] : old[axis[k]];
+  }
+}
+
+/// Eight points whose coordinates are 0 or of random sign and magnitude 2^e (1 + f), e drawn
+/// from `exponents` for each coordinate: mixed magnitudes within one query (subnormal next to
+/// normal, tiny next to huge, differences that overflow). Contacts are rare; the exact path
+/// decides.
+inline DoubleQuery random_mixed_magnitude_query(std::mt19937_64& rng, QueryType type,
+                                                const std::vector<int>& exponents) {
+  DoubleQuery q;
+  q.type = type;
+  for (auto& p : q.v)
+    for (int k = 0; k < 3; ++k)
+      p[k] = detail::coin(rng, 8) ? 0.0
+                                  : detail::random_signed(
+                                        rng, exponents[detail::uniform_int(
+                                                 rng, 0, static_cast<int>(exponents.size()) - 1)]);
+  return q;
+}
+
+/// A query built together with its exact answer over [0, 1].
+struct QueryWithAnswer {
+  DoubleQuery query;
+  bool collides = false;
+  mpq_class toi;  ///< t*, when collides
+};
+
+namespace detail {
+
+struct Point2 {
+  mpq_class x, y;
+};
+
+/// Twice the signed area of (a, b, c).
+inline mpq_class orient2(const Point2& a, const Point2& b, const Point2& c) {
+  return mpq_class((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+/// c lies in the closed bounding box of a and b (on the closed segment, if collinear).
+inline bool in_box(const Point2& a, const Point2& b, const Point2& c) {
+  return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
+         c.y <= std::max(a.y, b.y);
+}
+
+/// The closed segments [p0, p1] and [q0, q1] (either may be a point) meet.
+inline bool segments_meet_2d(const Point2& p0, const Point2& p1, const Point2& q0,
+                             const Point2& q1) {
+  const int o1 = sgn(orient2(p0, p1, q0)), o2 = sgn(orient2(p0, p1, q1));
+  const int o3 = sgn(orient2(q0, q1, p0)), o4 = sgn(orient2(q0, q1, p1));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && in_box(p0, p1, q0)) || (o2 == 0 && in_box(p0, p1, q1)) ||
+         (o3 == 0 && in_box(q0, q1, p0)) || (o4 == 0 && in_box(q0, q1, p1));
+}
+
+/// (1 - t) a0 + t a1, exactly.
+inline mpq_class lerp(double a0, double a1, const mpq_class& t) {
+  return mpq_class((1 - t) * mpq_class(a0) + t * mpq_class(a1));
+}
+
+inline Point2 lerp2(const std::array<double, 2>& p0, const std::array<double, 2>& p1,
+                    const mpq_class& t) {
+  return {lerp(p0[0], p1[0], t), lerp(p0[1], p1[1], t)};
+}
+
+inline Point2 point2(const std::array<double, 2>& p) { return {mpq_class(p[0]), mpq_class(p[1])}; }
+
+/// Where the gap g(t) = (1 - t) g0 + t g1 vanishes in [0, 1].
+enum class GapZeros { never, once, always };
+inline GapZeros gap_zeros(const mpq_class& g0, const mpq_class& g1, mpq_class* t) {
+  if (sgn(g0) == 0 && sgn(g1) == 0) return GapZeros::always;
+  if (sgn(g0) * sgn(g1) > 0) return GapZeros::never;
+  *t = g0 / (g0 - g1);
+  return GapZeros::once;
+}
+
+/// Heights of two layers at t = 0 and t = 1 (the first primitive's, then the second's), of
+/// random magnitudes: the second starts above the first and ends below it (or the reverse), so
+/// that the layers meet once, sometimes exactly at t = 0 or t = 1, sometimes always.
+inline std::array<double, 4> random_layer_heights(Rng& rng) {
+  const auto value = [&rng] {
+    return coin(rng, 6) ? 0.0 : random_signed(rng, random_exponent(rng));
+  };
+  double u0 = value(), v0 = value(), u1 = value(), v1 = value();
+  switch (uniform_int(rng, 0, 9)) {
+    case 0: v0 = u0; break;           // the layers meet at t = 0
+    case 1: v1 = u1; break;           // ... at t = 1
+    case 2: v0 = u0, v1 = u1; break;  // ... always
+    default: break;
+  }
+  // first: za0 <= zb0 and za1 >= zb1
+  double za0 = std::min(u0, v0), zb0 = std::max(u0, v0);
+  double za1 = std::max(u1, v1), zb1 = std::min(u1, v1);
+  if (coin(rng)) std::swap(za0, zb0), std::swap(za1, zb1);
+  return {za0, za1, zb0, zb1};
+}
+
+/// A random point aimed at the closed segment [a, b]: at an end, in the middle, one ulp off
+/// an end, or anywhere (rounding may move it off; the answer is computed exactly anyway).
+inline std::array<double, 2> aim_at_segment(Rng& rng, const std::array<double, 2>& a,
+                                            const std::array<double, 2>& b) {
+  std::array<double, 2> x = a;
+  switch (uniform_int(rng, 0, 4)) {
+    case 0: break;
+    case 1: x = {0.5 * a[0] + 0.5 * b[0], 0.5 * a[1] + 0.5 * b[1]}; break;
+    case 2: x = {0.25 * a[0] + 0.75 * b[0], 0.25 * a[1] + 0.75 * b[1]}; break;
+    case 3: {
+      double& c = x[uniform_int(rng, 0, 1)];
+      const double moved = std::nextafter(c, coin(rng) ? std::numeric_limits<double>::infinity()
+                                                       : -std::numeric_limits<double>::infinity());
+      if (std::isfinite(moved)) c = moved;  // not beyond DBL_MAX
+      break;
+    }
+    default:
+      x = {random_signed(rng, random_exponent(rng)), random_signed(rng, random_exponent(rng))};
+  }
+  return x;
+}
+
+/// x - t d and x + (1 - t) d, the positions at 0 and 1 of a point at x at the double time t
+/// moving by d; d is dropped (the point is at rest) where they would overflow.
+inline std::pair<std::array<double, 2>, std::array<double, 2>> moving_through(
+    const std::array<double, 2>& x, const std::array<double, 2>& d, double t) {
+  std::array<double, 2> p0, p1;
+  for (int k = 0; k < 2; ++k) {
+    p0[k] = x[k] - t * d[k];
+    p1[k] = x[k] + (1 - t) * d[k];
+    if (!std::isfinite(p0[k]) || !std::isfinite(p1[k])) p0[k] = p1[k] = x[k];
+  }
+  return {p0, p1};
+}
+
+/// A 2-D displacement: zero, or of random magnitudes.
+inline std::array<double, 2> random_displacement(Rng& rng) {
+  if (coin(rng, 3)) return {0.0, 0.0};
+  return {random_signed(rng, random_exponent(rng)), random_signed(rng, random_exponent(rng))};
+}
+
+/// 2-D points at a common random scale, or each at its own (thin shapes spanning the range);
+/// some coordinates zero.
+inline std::array<double, 2> random_point2(Rng& rng, int common_exponent) {
+  const int e = coin(rng, 3) ? random_exponent(rng) : common_exponent - uniform_int(rng, 0, 3);
+  std::array<double, 2> p;
+  for (double& c : p) c = coin(rng, 6) ? 0.0 : random_signed(rng, std::max(e, -1074));
+  return p;
+}
+
+}  // namespace detail
+
+/// A layered vertex-face query: the triangle has fixed (x, y), non-degenerate, and one height
+/// z moving from za0 to za1; p moves freely. p is aimed at a vertex, an edge or the inside of
+/// the triangle, or one ulp off, at the time the layers meet. Magnitudes are random over the
+/// whole range and mixed (a needle through a huge triangle, a huge motion through a tiny one);
+/// differences may overflow. The answer: p meets the triangle's plane where the linear gap
+/// zp(t) - za(t) vanishes (once, or always), and p's (x, y) there decides, in rationals.
+inline QueryWithAnswer layered_vertex_face(std::mt19937_64& rng) {
+  using namespace detail;
+  std::array<std::array<double, 2>, 3> tri;
+  std::array<Point2, 3> t2;
+  do {
+    const int e = random_exponent(rng);
+    for (int i = 0; i < 3; ++i) {
+      tri[i] = random_point2(rng, e);
+      t2[i] = point2(tri[i]);
+    }
+  } while (sgn(orient2(t2[0], t2[1], t2[2])) == 0);
+  const int orientation = sgn(orient2(t2[0], t2[1], t2[2]));
+
+  const int i = uniform_int(rng, 0, 2);
+  std::array<double, 2> x = aim_at_segment(rng, tri[i], tri[(i + 1) % 3]);
+  if (coin(rng, 5))  // inside, away from the edges (up to rounding)
+    for (int k = 0; k < 2; ++k) x[k] = (0.25 * tri[0][k] + 0.25 * tri[1][k]) + 0.5 * tri[2][k];
+
+  const std::array<double, 4> z = random_layer_heights(rng);  // triangle, then p
+  QueryWithAnswer out;
+  mpq_class tc;
+  const GapZeros zeros = gap_zeros(mpq_class(z[2]) - mpq_class(z[0]),
+                                   mpq_class(z[3]) - mpq_class(z[1]), &tc);
+  // p is at x when the layers meet (at a random time if they always do).
+  const double aim_time = zeros == GapZeros::once
+                              ? tc.get_d()
+                              : std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+  const auto [p0, p1] = moving_through(x, random_displacement(rng), aim_time);
+
+  DoubleQuery& q = out.query;
+  q.type = QueryType::vertex_face;
+  q.v[0] = {p0[0], p0[1], z[2]};
+  q.v[4] = {p1[0], p1[1], z[3]};
+  for (int k = 0; k < 3; ++k) {
+    q.v[1 + k] = {tri[k][0], tri[k][1], z[0]};
+    q.v[5 + k] = {tri[k][0], tri[k][1], z[1]};
+  }
+
+  // The answer. s_j(t) = orientation * orient2(tri_j, tri_j+1, p(t)) is affine in t, and p(t)
+  // is in the closed triangle iff all three are >= 0.
+  if (zeros == GapZeros::once) {
+    const Point2 p = lerp2(p0, p1, tc);
+    bool inside = true;
+    for (int j = 0; j < 3; ++j)
+      inside = inside && orientation * sgn(orient2(t2[j], t2[(j + 1) % 3], p)) >= 0;
+    out.collides = inside;
+    out.toi = tc;
+  } else if (zeros == GapZeros::always) {
+    // The first t in [0, 1] with every s_j(t) >= 0.
+    mpq_class lo(0), hi(1);
+    bool empty = false;
+    for (int j = 0; j < 3; ++j) {
+      const mpq_class s0 = orientation * orient2(t2[j], t2[(j + 1) % 3], point2(p0));
+      const mpq_class s1 = orientation * orient2(t2[j], t2[(j + 1) % 3], point2(p1));
+      if (sgn(s0) < 0 && sgn(s1) < 0) empty = true;
+      else if (sgn(s0) < 0) lo = std::max(lo, mpq_class(s0 / (s0 - s1)));
+      else if (sgn(s1) < 0) hi = std::min(hi, mpq_class(s0 / (s0 - s1)));
+    }
+    out.collides = !empty && lo <= hi;
+    out.toi = lo;
+  }
+  permute_and_mirror_axes(&q, rng);
+  return out;
+}
+
+/// A layered edge-edge query: edge a has fixed (x, y) and one height moving from za0 to za1;
+/// edge b has its own height and its ends move freely in (x, y) (at rest when the layers always
+/// meet). b is aimed through a point of a (an end, the middle, one ulp off, or anywhere) at the
+/// time the layers meet; zero-length edges occur. Magnitudes as in layered_vertex_face. The
+/// answer: the layers meet where a linear gap vanishes, and the 2-D segments there decide.
+inline QueryWithAnswer layered_edge_edge(std::mt19937_64& rng) {
+  using namespace detail;
+  const int e = random_exponent(rng);
+  const std::array<double, 2> a0 = random_point2(rng, e);
+  const std::array<double, 2> a1 = coin(rng, 10) ? a0 : random_point2(rng, e);
+  const std::array<double, 2> x = aim_at_segment(rng, a0, a1);
+  // b's ends x - u w and x + (1 - u) w (or a single point), through x.
+  std::array<double, 2> w = {random_signed(rng, random_exponent(rng)),
+                             random_signed(rng, random_exponent(rng))};
+  if (coin(rng, 10)) w = {0.0, 0.0};
+  const double u = std::array<double, 4>{0.0, 1.0, 0.5, 0.25}[uniform_int(rng, 0, 3)];
+  const auto [b0, b1] = moving_through(x, w, u);
+
+  const std::array<double, 4> z = random_layer_heights(rng);  // edge a, then edge b
+  QueryWithAnswer out;
+  mpq_class tc;
+  const GapZeros zeros = gap_zeros(mpq_class(z[2]) - mpq_class(z[0]),
+                                   mpq_class(z[3]) - mpq_class(z[1]), &tc);
+  std::array<double, 2> d0{0.0, 0.0}, d1{0.0, 0.0};
+  if (zeros == GapZeros::once) {
+    d0 = random_displacement(rng);
+    d1 = coin(rng) ? d0 : random_displacement(rng);
+  }
+  const double aim_time = zeros == GapZeros::once ? tc.get_d() : 0.0;
+  const auto [b00, b01] = moving_through(b0, d0, aim_time);
+  const auto [b10, b11] = moving_through(b1, d1, aim_time);
+
+  DoubleQuery& q = out.query;
+  q.type = QueryType::edge_edge;
+  q.v[0] = {a0[0], a0[1], z[0]};
+  q.v[1] = {a1[0], a1[1], z[0]};
+  q.v[2] = {b00[0], b00[1], z[2]};
+  q.v[3] = {b10[0], b10[1], z[2]};
+  q.v[4] = {a0[0], a0[1], z[1]};
+  q.v[5] = {a1[0], a1[1], z[1]};
+  q.v[6] = {b01[0], b01[1], z[3]};
+  q.v[7] = {b11[0], b11[1], z[3]};
+
+  if (zeros != GapZeros::never) {
+    // When the layers always meet, nothing moves in (x, y): contact from t = 0 iff the segments
+    // meet at all.
+    const mpq_class t = zeros == GapZeros::once ? tc : mpq_class(0);
+    out.collides = segments_meet_2d(point2(a0), point2(a1), lerp2(b00, b01, t), lerp2(b10, b11, t));
+    out.toi = t;
+  }
+  if (coin(rng))  // edge b first
+    for (int k : {0, 4}) std::swap(q.v[k], q.v[k + 2]), std::swap(q.v[k + 1], q.v[k + 3]);
+  permute_and_mirror_axes(&q, rng);
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Printing
 
 /// A double in C99 hexadecimal (%a): exact and readable back by strtod.
@@ -639,6 +1040,70 @@ inline Disagreement differential_check(const DoubleQuery& q, std::mt19937_64& rn
     ++stats.t_max_checks;
     if (std::string w = check_tight(dp, ep); !w.empty())
       return fail("t_max < 1: " + w, partial, dp, ep);
+  }
+  return out;
+}
+
+/// Default versus exact over [0, t_max], t_max in (0, 1), with a coarse toi_width: the same
+/// verdict as the exact path's tightest answer over [0, t_max] (tight), and when colliding,
+/// default and exact-mode enclosures of it no wider than asked. t_max is the planted time, the
+/// exact contact time over [0, 1], a double just below or above either, a dyadic, or random;
+/// `rng` (the query's stream) picks it and the width. Counts into stats: queries and stages
+/// (of the default path, coarse), collisions over [0, t_max], t_max_checks, and width_checks
+/// (the colliding ones).
+inline Disagreement partial_interval_coarse_check(const DoubleQuery& q, std::mt19937_64& rng,
+                                                  DifferentialStats& stats) {
+  Disagreement out;
+  out.query = q;
+  CcdOptions tight;
+  const double tc = q.planted_time;
+  switch (detail::uniform_int(rng, 0, 5)) {
+    case 0: tight.t_max = tc; break;
+    case 1: tight.t_max = std::nextafter(tc, detail::coin(rng) ? 0.0 : 1.0); break;
+    case 2:
+    case 3: {  // at the exact contact time over [0, 1], or a double beside it
+      const CcdResult whole = ccd(q, with_mode(CcdOptions{}, Mode::exact));
+      if (!whole.collides) break;
+      tight.t_max = detail::coin(rng) ? whole.toi_lo : whole.toi_hi;
+      if (detail::coin(rng))
+        tight.t_max = std::nextafter(tight.t_max, detail::coin(rng) ? 0.0 : 1.0);
+      break;
+    }
+    case 4: tight.t_max = detail::uniform_int(rng, 1, 15) / 16.0; break;
+    default: break;
+  }
+  if (!(tight.t_max > 0 && tight.t_max < 1))  // NaN planted time, 0, 1, or none chosen
+    tight.t_max = std::uniform_real_distribution<double>(0x1p-30, 1.0)(rng);
+  static constexpr double kWidths[] = {1e-6, 1e-3, 0.1, 0.5, 1.0};
+  CcdOptions coarse = tight;
+  coarse.toi_width = kWidths[detail::uniform_int(rng, 0, 4)];
+
+  const CcdResult ep = ccd(q, with_mode(tight, Mode::exact));
+  const CcdResult dc = ccd(q, coarse);
+  const CcdResult ec = ccd(q, with_mode(coarse, Mode::exact));
+  ++stats.queries;
+  ++stats.stage[static_cast<int>(dc.decided_by)];
+  ++stats.t_max_checks;
+  const auto fail = [&](std::string what, const CcdOptions& o, const CcdResult& got) {
+    ++stats.disagreements;
+    out.what = "t_max < 1, coarse toi_width: " + std::move(what);
+    out.options = o;
+    out.default_result = got;
+    out.exact_result = ep;
+    return out;
+  };
+  for (const CcdResult* r : {&dc, &ec}) {
+    const char* who = r == &dc ? "default" : "exact mode";
+    if (r->collides != ep.collides) return fail(std::string(who) + ": verdict differs", coarse, *r);
+    if (!r->collides && (r->toi_lo != 0 || r->toi_hi != 0))
+      return fail(std::string(who) + ": toi not 0 without contact", coarse, *r);
+    if (r->collides)
+      if (std::string w = check_coarse_toi(*r, ep, coarse.toi_width); !w.empty())
+        return fail(std::string(who) + ": " + w, coarse, *r);
+  }
+  if (ep.collides) {
+    ++stats.collisions;
+    ++stats.width_checks;
   }
   return out;
 }

@@ -122,7 +122,7 @@ TEST(RoundingMode, ResultsUnderEveryCallerModeEqualRoundToNearest) {
   std::printf(" float_only %zu\n", stages[static_cast<int>(Stage::float_only)]);
   // Every stage must be exercised, or a mode-dependent stage could go unnoticed.
   for (Stage s : default_path_stages()) EXPECT_GT(stages[static_cast<int>(s)], 20u) << to_string(s);
-  EXPECT_GT(stages[static_cast<int>(Stage::float_only)], 500u);
+  EXPECT_GT(stages[static_cast<int>(Stage::float_only)], scaled_count(500));
 
   for (const RoundingMode& m : kModes) {
     int mismatches = 0, mode_changes = 0;

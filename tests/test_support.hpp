@@ -21,6 +21,7 @@
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
+#include "test_scale.hpp"
 
 namespace exactccd::test {
 
@@ -48,6 +49,18 @@ inline const std::vector<SampleQuery>& sample_queries() {
     return out;
   }();
   return all;
+}
+
+/// Every subset_stride()-th sample query (all of them at EXACTCCD_TEST_SCALE >= 1), for the
+/// loops whose per-query work is heavy.
+inline const std::vector<SampleQuery>& scaled_sample_queries() {
+  static const std::vector<SampleQuery> some = [] {
+    std::vector<SampleQuery> out;
+    const std::vector<SampleQuery>& all = sample_queries();
+    for (std::size_t i = 0; i < all.size(); i += subset_stride()) out.push_back(all[i]);
+    return out;
+  }();
+  return some;
 }
 
 // ---------------------------------------------------------------------------------------------

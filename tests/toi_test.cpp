@@ -147,7 +147,7 @@ TEST(Toi, SampleQueries) {
 // sample queries at T = 1/2 and at T = 3/4, from their TOI at T = 1.
 TEST(Toi, SampleQueriesShorterInterval) {
   ToiStats stats;
-  for (const auto& s : sample_queries()) {
+  for (const auto& s : scaled_sample_queries()) {
     const CcdResult full = exact_ccd(s.query);
     for (const double t_max : {0.5, 0.75}) {
       const CcdResult r = exact_ccd(s.query, with_t_max(t_max));
@@ -171,7 +171,7 @@ TEST(Toi, SampleQueriesShorterInterval) {
 void random_colliding(QueryType type) {
   QueryGenerator gen(test_seed(to_string(type)) + static_cast<int>(type));
   ToiStats stats;
-  const int n = 1500;
+  const int n = static_cast<int>(scaled_count(1500));
   for (int i = 0; i < n; ++i) {
     mpq_class tc;
     const RationalQuery q = gen.colliding(type, &tc);
@@ -198,7 +198,8 @@ TEST(Toi, RandomCollidingEdgeEdge) { random_colliding(QueryType::edge_edge); }
 void random_degenerate(QueryType type) {
   QueryGenerator gen(test_seed(to_string(type)) + 100 + static_cast<int>(type));
   ToiStats stats;
-  for (int i = 0; i < 1500; ++i) {
+  const int n = static_cast<int>(scaled_count(1500));
+  for (int i = 0; i < n; ++i) {
     const RationalQuery q = i % 2 ? gen.degenerate(type) : gen.tiny_grid(type);
     for (const double t_max : {1.0, 0.5})
       check_toi(q, t_max, "random degenerate #" + std::to_string(i), &stats);

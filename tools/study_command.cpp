@@ -320,6 +320,8 @@ Dataset load_suite(const std::string& path, const std::optional<QueryType>& type
   d.path = path;
   d.suite = true;
   d.truth_source = "truth column (exact path, at generation)";
+  if (manifest.contains("generator") && !manifest["generator"].is_string())
+    throw InputError(where, 0, "\"generator\" must be a string");
   d.suite_info["generator"] = manifest.value("generator", "");
   d.suite_info["seed"] = manifest.value("seed", Json());
   std::map<std::string, int> seen;

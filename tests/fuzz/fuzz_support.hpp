@@ -1,0 +1,187 @@
+// Shared by the libFuzzer harnesses (tests/fuzz/*_fuzz.cpp): a per-process scratch folder for
+// the readers that take paths, a failed-property abort that libFuzzer records as a crash (with
+// the input saved), and the checks of the public CCD API that more than one harness makes.
+#pragma once
+
+#include <gmpxx.h>
+
+#include <Eigen/Core>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+#include "exactccd/ccd.hpp"
+
+namespace exactccd::fuzz {
+
+/// A property failed: print it and abort, so that libFuzzer saves the input as a crash.
+[[noreturn]] inline void fail(const std::string& what) {
+  std::fprintf(stderr, "exactccd fuzz: property failed: %s\n", what.c_str());
+  std::abort();
+}
+
+inline void require(bool ok, const std::string& what) {
+  if (!ok) fail(what);
+}
+
+/// A folder of its own for this process (under $TMPDIR, else /tmp), removed at exit; the
+/// harnesses write each input there for the readers, which take paths.
+inline const std::filesystem::path& scratch_folder() {
+  static const std::filesystem::path folder = [] {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/exactccd-fuzz-XXXXXX";
+    if (!mkdtemp(pattern.data())) fail("cannot create a scratch folder under " + pattern);
+    std::atexit([] {
+      std::error_code ignored;
+      std::filesystem::remove_all(scratch_folder(), ignored);
+    });
+    return std::filesystem::path(pattern);
+  }();
+  return folder;
+}
+
+/// Writes `data` to `path` (replacing it); aborts when that fails (the machine, not the input).
+inline void write_file(const std::filesystem::path& path, const std::uint8_t* data,
+                       std::size_t size) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  out.close();
+  if (!out) fail("cannot write " + path.string());
+}
+
+using Points = std::array<Eigen::Vector3d, 8>;  // the benchmark's row order
+
+/// The largest minus the smallest binary exponent (std::ilogb) over the nonzero coordinates.
+/// The exact path scales a query to integers over a common power-of-two denominator, so its
+/// numbers are about this many bits wider than the coordinates' 53, and its time grows with it
+/// (about 100 ms per query near 2,100, subnormals against 1: README, "Exact path"). The
+/// harnesses skip queries above kMaxExponentSpread until issue 10 makes wide spreads fast: a
+/// slow unit would otherwise trip libFuzzer's timeout and report a speed limit as a defect.
+inline constexpr int kMaxExponentSpread = 200;
+
+inline int exponent_spread(const Points& v) {
+  int lo = INT_MAX, hi = INT_MIN;
+  for (const Eigen::Vector3d& p : v)
+    for (int k = 0; k < 3; ++k)
+      if (p[k] != 0.0) {
+        const int e = std::ilogb(p[k]);
+        lo = e < lo ? e : lo;
+        hi = e > hi ? e : hi;
+      }
+  return lo == INT_MAX ? 0 : hi - lo;
+}
+
+inline CcdResult ccd(QueryType type, const Points& v, const CcdOptions& options) {
+  if (type == QueryType::vertex_face)
+    return vertex_face_ccd({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}, options);
+  return edge_edge_ccd({v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}, options);
+}
+
+inline std::string describe(QueryType type, const Points& v, const CcdOptions& o) {
+  std::string s = std::string(to_string(type)) + " query (hex doubles, rows t0 then t1):";
+  char buf[96];
+  for (const Eigen::Vector3d& p : v) {
+    std::snprintf(buf, sizeof buf, "\n  %a %a %a", p.x(), p.y(), p.z());
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, "\n  t_max %a toi_width %a", o.t_max, o.toi_width);
+  return s + buf;
+}
+
+inline std::string describe(const CcdResult& r) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "collides %d toi [%a, %a] by %s", r.collides ? 1 : 0, r.toi_lo,
+                r.toi_hi, to_string(r.decided_by));
+  return buf;
+}
+
+/// Whether the API rejects the options or the coordinates with std::invalid_argument, as
+/// ccd.hpp says it must for non-finite coordinates, t_max outside (0, 1], and a negative or
+/// non-finite toi_width.
+inline bool invalid_input(const Points& v, const CcdOptions& o) {
+  for (const Eigen::Vector3d& p : v)
+    if (!p.allFinite()) return true;
+  return !(o.t_max > 0.0 && o.t_max <= 1.0) || !(o.toi_width >= 0.0) ||
+         !std::isfinite(o.toi_width);
+}
+
+/// Every mode must throw std::invalid_argument on invalid input; anything else escapes and
+/// aborts.
+inline void check_rejected(QueryType type, const Points& v, const CcdOptions& options) {
+  for (Mode mode : {Mode::filtered, Mode::exact, Mode::float_only}) {
+    CcdOptions o = options;
+    o.mode = mode;
+    bool threw = false;
+    try {
+      ccd(type, v, o);
+    } catch (const std::invalid_argument&) {
+      threw = true;
+    }
+    require(threw, std::string("no std::invalid_argument from mode ") + to_string(mode) +
+                       " on invalid input: " + describe(type, v, o));
+  }
+}
+
+/// The contract of one valid query (ccd.hpp, types.hpp): the default path equals the exact
+/// path, bit for bit, at toi_width 0 (the tightest pair of doubles around t* is unique); at
+/// the caller's toi_width both modes give the same verdict and an enclosure of t* (so it
+/// contains the tightest pair) at most toi_width wide, computed exactly, or the tightest pair
+/// itself when toi_width is narrower. float_only must run
+/// without throwing (its answers are uncertified). Skips queries wider than
+/// kMaxExponentSpread; returns whether the query was checked.
+inline bool check_default_equals_exact(QueryType type, const Points& v, const CcdOptions& options) {
+  if (exponent_spread(v) > kMaxExponentSpread) return false;
+  CcdOptions tight = options;
+  tight.toi_width = 0.0;
+  tight.mode = Mode::exact;
+  const CcdResult exact = ccd(type, v, tight);
+  tight.mode = Mode::filtered;
+  const CcdResult filtered = ccd(type, v, tight);
+  const std::string where = describe(type, v, options);
+  require(filtered.collides == exact.collides && filtered.toi_lo == exact.toi_lo &&
+              filtered.toi_hi == exact.toi_hi,
+          "default " + describe(filtered) + " != exact " + describe(exact) + " on " + where);
+  if (exact.collides) {
+    require(0.0 <= exact.toi_lo && exact.toi_lo <= exact.toi_hi &&
+                exact.toi_hi <= options.t_max &&
+                (exact.toi_lo == exact.toi_hi ||
+                 std::nextafter(exact.toi_lo, 2.0) == exact.toi_hi),
+            "not the tightest pair in [0, t_max]: " + describe(exact) + " on " + where);
+  } else {
+    require(exact.toi_lo == 0.0 && exact.toi_hi == 0.0,
+            "no contact but a TOI: " + describe(exact) + " on " + where);
+  }
+  if (options.toi_width > 0.0) {
+    for (Mode mode : {Mode::filtered, Mode::exact}) {
+      CcdOptions o = options;
+      o.mode = mode;
+      const CcdResult r = ccd(type, v, o);
+      const std::string what = std::string(to_string(mode)) + " at the caller's width " +
+                               describe(r) + " (tightest " + describe(exact) + ") on " + where;
+      require(r.collides == exact.collides, "verdict differs: " + what);
+      if (!r.collides) continue;
+      require(r.toi_lo <= exact.toi_lo && exact.toi_hi <= r.toi_hi,
+              "enclosure misses t*: " + what);
+      // A width below the spacing of the doubles around t* gets the tightest pair (toi_test).
+      const bool tightest = r.toi_lo == exact.toi_lo && r.toi_hi == exact.toi_hi;
+      require(tightest ||
+                  mpq_class(r.toi_hi) - mpq_class(r.toi_lo) <= mpq_class(options.toi_width),
+              "enclosure wider than toi_width: " + what);
+    }
+  }
+  CcdOptions uncertified = options;
+  uncertified.mode = Mode::float_only;
+  ccd(type, v, uncertified);
+  return true;
+}
+
+}  // namespace exactccd::fuzz
