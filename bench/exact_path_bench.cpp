@@ -4,7 +4,17 @@
 //   ./build/bench/exact_path_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 // The "per_query" and "per_bracket" counters are seconds per query / per bracket (shown in
 // the time unit of the table).
+//
+// kernels/...: the integer kernels of the exact stage at double times (exact/integer_cubic.hpp)
+// on the sample and scene queries that reach that stage, per query: the cubic's coefficients,
+// one exact value at a double time, one contact test; in the stack integers the library uses
+// (FixedInt, width chosen from the proven bounds), in GMP (the same templates with mpz_class)
+// and in Boost.Multiprecision's fixed-precision cpp_int (unchecked, expression templates off;
+// 256, 512 or 1024 bits chosen from the same bounds), the candidate the library measured.
+//   ./build/bench/exact_path_bench --benchmark_filter=kernels --benchmark_repetitions=5
 #include <benchmark/benchmark.h>
+
+#include <boost/multiprecision/cpp_int.hpp>
 
 #include <array>
 #include <cmath>
@@ -14,14 +24,47 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "exact/integer_bounds.hpp"
+#include "exact/integer_cubic.hpp"
 #include "exact/integer_query.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "filters/ccd_filters.hpp"
 #include "tests/random_queries.hpp"
+
+// The operations the integer kernels call, for Boost's fixed-precision integers (found by
+// argument-dependent lookup).
+namespace boost::multiprecision {
+template <unsigned Bits>
+using BoostFixed =
+    number<cpp_int_backend<Bits, Bits, signed_magnitude, unchecked, void>, et_off>;
+
+template <unsigned Bits>
+int sign_of(const BoostFixed<Bits>& x) {
+  return x.sign();
+}
+template <unsigned Bits>
+void multiply_by(BoostFixed<Bits>& r, std::uint64_t m) {
+  r *= m;
+}
+template <unsigned Bits>
+void add_shifted(BoostFixed<Bits>& r, const BoostFixed<Bits>& c, unsigned s) {
+  r += c << s;
+}
+template <unsigned Bits>
+void add_product(BoostFixed<Bits>& out, const BoostFixed<Bits>& a, const BoostFixed<Bits>& b) {
+  out += a * b;
+}
+template <unsigned Bits>
+void sub_product(BoostFixed<Bits>& out, const BoostFixed<Bits>& a, const BoostFixed<Bits>& b) {
+  out -= a * b;
+}
+}  // namespace boost::multiprecision
 
 namespace {
 
@@ -222,6 +265,239 @@ BENCHMARK_CAPTURE(bisect_all, random_1e-6_guided, random_cubic_brackets, Method:
 BENCHMARK_CAPTURE(bisect_all, sample_filter_plain, sample_filter_brackets, Method::plain)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(bisect_all, sample_filter_guided, sample_filter_brackets, Method::guided)
+    ->Unit(benchmark::kMicrosecond);
+
+// ---- the integer kernels: FixedInt, GMP, Boost -------------------------------------------------
+
+using boost::multiprecision::BoostFixed;
+using exactccd::exact::IntegerCoordinates;
+
+/// The sample and scene queries the default path decides at double times (exact_at_double,
+/// filter_exact_toi), each with a time: its TOI when it collides, else a random one in [0, 1].
+struct KernelSet {
+  std::vector<exactccd::VertexFaceQuery> vertex_face;
+  std::vector<exactccd::EdgeEdgeQuery> edge_edge;
+  std::vector<IntegerCoordinates> coordinates;  // vertex-face first, then edge-edge
+  std::vector<double> times;
+};
+
+const KernelSet& kernel_set() {
+  static const KernelSet set = [] {
+    KernelSet out;
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::string sample = EXACTCCD_SAMPLE_QUERIES;
+    const std::string scene = sample.substr(0, sample.rfind('/') + 1) + "scene-queries";
+    std::vector<double> vf_times, ee_times;
+    for (const std::string& root : {sample, scene}) {
+      for (const auto& path : exactccd::find_query_files(root)) {
+        const auto type = exactccd::query_type_from_path(path);
+        if (!type) continue;
+        for (auto& record : exactccd::read_query_file(path, *type).queries) {
+          const auto& v = record.query.points;
+          std::array<Eigen::Vector3d, 8> x;
+          for (int i = 0; i < 8; ++i) x[i] = {v[i].x.get_d(), v[i].y.get_d(), v[i].z.get_d()};
+          const exactccd::VertexFaceQuery vf{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]};
+          const exactccd::EdgeEdgeQuery ee{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]};
+          const bool is_vf = *type == exactccd::QueryType::vertex_face;
+          const exactccd::CcdResult r =
+              is_vf ? exactccd::vertex_face_ccd(vf) : exactccd::edge_edge_ccd(ee);
+          if (r.decided_by != exactccd::Stage::exact_at_double &&
+              r.decided_by != exactccd::Stage::filter_exact_toi)
+            continue;
+          const double t = r.collides ? r.toi_lo : unit(rng);
+          if (is_vf) {
+            out.vertex_face.push_back(vf);
+            vf_times.push_back(t);
+          } else {
+            out.edge_edge.push_back(ee);
+            ee_times.push_back(t);
+          }
+        }
+      }
+    }
+    for (const auto& q : out.vertex_face)
+      out.coordinates.push_back(exactccd::exact::integer_coordinates(q));
+    for (const auto& q : out.edge_edge)
+      out.coordinates.push_back(exactccd::exact::integer_coordinates(q));
+    out.times = vf_times;
+    out.times.insert(out.times.end(), ee_times.begin(), ee_times.end());
+    return out;
+  }();
+  return set;
+}
+
+enum class Arithmetic { fixed, gmp, boost };
+
+IntegerQuery::Arithmetic library_arithmetic(Arithmetic a) {
+  return a == Arithmetic::gmp ? IntegerQuery::Arithmetic::gmp
+                              : IntegerQuery::Arithmetic::fixed_first;
+}
+
+/// Calls f(BoostFixed<Bits>{}) for the narrowest of 256, 512, 1024 bits holding magnitudes
+/// below 2^bits; false beyond (not run).
+template <class F>
+bool with_boost_width(long bits, F&& f) {
+  if (bits <= 256) return f(BoostFixed<256>{}), true;
+  if (bits <= 512) return f(BoostFixed<512>{}), true;
+  if (bits <= 1024) return f(BoostFixed<1024>{}), true;
+  return false;
+}
+
+/// The time t in [0, 1] as T 2^-k.
+exactccd::exact::DyadicTime split(double t) {
+  exactccd::exact::DyadicTime d;
+  exactccd::exact::dyadic_time(t, &d);
+  return d;
+}
+
+void kernels_cubic(benchmark::State& state, Arithmetic a) {
+  const KernelSet& set = kernel_set();
+  std::size_t sink = 0;
+  for (auto _ : state) {
+    if (a == Arithmetic::boost) {
+      for (const auto& q : set.vertex_face) {
+        const IntegerCoordinates c = exactccd::exact::integer_coordinates(q);
+        with_boost_width(exactccd::exact::cubic_coefficient_bits(c.bits), [&](auto zero) {
+          decltype(zero) coefficients[4];
+          exactccd::exact::coplanarity_coefficients(c, coefficients);
+          sink += coefficients[0].sign() > 0;
+        });
+      }
+      for (const auto& q : set.edge_edge) {
+        const IntegerCoordinates c = exactccd::exact::integer_coordinates(q);
+        with_boost_width(exactccd::exact::cubic_coefficient_bits(c.bits), [&](auto zero) {
+          decltype(zero) coefficients[4];
+          exactccd::exact::coplanarity_coefficients(c, coefficients);
+          sink += coefficients[0].sign() > 0;
+        });
+      }
+    } else {
+      for (const auto& q : set.vertex_face)
+        sink += IntegerQuery(q, library_arithmetic(a)).coefficient_limbs();
+      for (const auto& q : set.edge_edge)
+        sink += IntegerQuery(q, library_arithmetic(a)).coefficient_limbs();
+    }
+    benchmark::DoNotOptimize(sink);
+  }
+  state.counters["queries"] = static_cast<double>(set.coordinates.size());
+  state.counters["per_query"] = benchmark::Counter(
+      static_cast<double>(set.coordinates.size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+/// The library's queries for the value and contact kernels (built outside the timed loop).
+std::vector<IntegerQuery> library_queries(Arithmetic a) {
+  const KernelSet& set = kernel_set();
+  std::vector<IntegerQuery> out;
+  for (const auto& q : set.vertex_face) out.emplace_back(q, library_arithmetic(a));
+  for (const auto& q : set.edge_edge) out.emplace_back(q, library_arithmetic(a));
+  return out;
+}
+
+/// Boost coefficients in the width of each query's value bound.
+struct BoostCoefficients {
+  std::vector<std::pair<std::size_t, std::array<BoostFixed<256>, 4>>> w256;
+  std::vector<std::pair<std::size_t, std::array<BoostFixed<512>, 4>>> w512;
+  std::vector<std::pair<std::size_t, std::array<BoostFixed<1024>, 4>>> w1024;
+};
+
+BoostCoefficients boost_coefficients() {
+  const KernelSet& set = kernel_set();
+  BoostCoefficients out;
+  for (std::size_t i = 0; i < set.coordinates.size(); ++i) {
+    const IntegerCoordinates& c = set.coordinates[i];
+    const long bits = exactccd::exact::cubic_value_bits(c.bits, split(set.times[i]).exponent);
+    with_boost_width(bits, [&](auto zero) {
+      using Int = decltype(zero);
+      Int k[4];
+      exactccd::exact::coplanarity_coefficients(c, k);
+      const std::array<Int, 4> a = {k[0], k[1], k[2], k[3]};
+      if constexpr (std::is_same_v<Int, BoostFixed<256>>) out.w256.emplace_back(i, a);
+      else if constexpr (std::is_same_v<Int, BoostFixed<512>>) out.w512.emplace_back(i, a);
+      else out.w1024.emplace_back(i, a);
+    });
+  }
+  return out;
+}
+
+template <class Groups>
+std::size_t boost_values(const Groups& groups, const KernelSet& set) {
+  std::size_t sink = 0;
+  for (const auto& [i, a] : groups) {
+    using Int = typename std::decay_t<decltype(a)>::value_type;
+    const Int k[4] = {a[0], a[1], a[2], a[3]};
+    const auto d = split(set.times[i]);
+    sink += exactccd::exact::scaled_cubic_value(k, d.numerator, d.exponent).sign() > 0;
+  }
+  return sink;
+}
+
+void kernels_value(benchmark::State& state, Arithmetic a) {
+  const KernelSet& set = kernel_set();
+  const std::vector<IntegerQuery> queries =
+      a == Arithmetic::boost ? std::vector<IntegerQuery>{} : library_queries(a);
+  const BoostCoefficients boost = a == Arithmetic::boost ? boost_coefficients()
+                                                         : BoostCoefficients{};
+  std::size_t sink = 0;
+  for (auto _ : state) {
+    if (a == Arithmetic::boost) {
+      sink += boost_values(boost.w256, set) + boost_values(boost.w512, set) +
+              boost_values(boost.w1024, set);
+    } else {
+      for (std::size_t i = 0; i < queries.size(); ++i)
+        sink += queries[i].cubic_sign_at(set.times[i]) > 0;
+    }
+    benchmark::DoNotOptimize(sink);
+  }
+  state.counters["queries"] = static_cast<double>(set.coordinates.size());
+  state.counters["per_query"] = benchmark::Counter(
+      static_cast<double>(set.coordinates.size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void kernels_contact(benchmark::State& state, Arithmetic a) {
+  const KernelSet& set = kernel_set();
+  const std::vector<IntegerQuery> queries =
+      a == Arithmetic::boost ? std::vector<IntegerQuery>{} : library_queries(a);
+  std::size_t sink = 0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < set.coordinates.size(); ++i) {
+      if (a != Arithmetic::boost) {
+        sink += queries[i].contact_at(set.times[i]);
+        continue;
+      }
+      const IntegerCoordinates& c = set.coordinates[i];
+      const auto d = split(set.times[i]);
+      with_boost_width(exactccd::exact::contact_bits(c.bits, d.exponent), [&](auto zero) {
+        sink += exactccd::exact::contact_at_time<decltype(zero)>(c, d.numerator, d.exponent);
+      });
+    }
+    benchmark::DoNotOptimize(sink);
+  }
+  state.counters["queries"] = static_cast<double>(set.coordinates.size());
+  state.counters["per_query"] = benchmark::Counter(
+      static_cast<double>(set.coordinates.size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK_CAPTURE(kernels_cubic, kernels/cubic/fixed, Arithmetic::fixed)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(kernels_cubic, kernels/cubic/gmp, Arithmetic::gmp)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(kernels_cubic, kernels/cubic/boost, Arithmetic::boost)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(kernels_value, kernels/value/fixed, Arithmetic::fixed)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(kernels_value, kernels/value/gmp, Arithmetic::gmp)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(kernels_value, kernels/value/boost, Arithmetic::boost)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(kernels_contact, kernels/contact/fixed, Arithmetic::fixed)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(kernels_contact, kernels/contact/gmp, Arithmetic::gmp)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(kernels_contact, kernels/contact/boost, Arithmetic::boost)
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -1,55 +1,92 @@
 // A double-precision query in exact integer arithmetic, for fast exact decisions at double
-// times: every input double is an integer times a common power of two 2^E, and scaling space
-// by 2^-E (a positive constant) changes no contact, no contact time and no sign used here.
-// No rational normalisation (gcd) is ever needed, and the temporaries live in a per-thread
-// workspace, so that a warm thread allocates only the four coefficients.
+// times (exact/integer_cubic.hpp): the cubic's exact signs, the guided bisection of its root,
+// the contact test. Each computation runs in the smallest fixed-size stack integer that its
+// proven bit-length bound admits (exact/integer_bounds.hpp), chosen before computing, so a
+// query whose bounds fit allocates nothing; GMP is used only beyond the largest fixed width,
+// or throughout on request (the reference the tests compare against).
 // PROOF: proofs/filters.md#exact-at-double-times
+// PROOF: proofs/filters.md#fixed-size-exact-at-doubles
 #pragma once
 
 #include <gmpxx.h>
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <utility>
 
 #include "core/predicates/fp_environment.hpp"  // refuses fast-math builds
-
+#include "exact/fixed_int.hpp"
+#include "exact/guided_bisection.hpp"
+#include "exact/integer_bounds.hpp"
+#include "exact/integer_cubic.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::exact {
 
-class IntegerQuery {
+/// How many computations of the calling thread's IntegerQuery objects ran in GMP (beyond the
+/// fixed widths, or requested): tells tests which queries stayed within the fixed widths.
+std::uint64_t gmp_computations_in_this_thread() noexcept;
+
+class IntegerQuery final : public CubicAtDoubles {
  public:
-  explicit IntegerQuery(const VertexFaceQuery& q);
-  explicit IntegerQuery(const EdgeEdgeQuery& q);
-
-  /// The exact sign of the coplanarity cubic at the finite double t >= 0.
-  int cubic_sign_at(double t) const;
-
-  /// Doubles around the only root of the cubic in [lo, hi] (0 <= lo < hi; the cubic non-zero
-  /// with opposite signs at lo and hi, and a single simple root between them), meeting `width`
-  /// (0: the tightest pair; toi_lo == toi_hi when the root is a double). The result is the
-  /// one of bit-order bisection (an exact sign at the middle double of what is left, until
-  /// no double is left inside or hi - lo <= width exactly), which for width > 0 fixes which
-  /// pair is returned; it is reached with exact signs at points chosen by Newton's method,
-  /// usually two or three evaluations, at most 73 (bisection alone: up to 65).
-  std::pair<double, double> bisect_root(double lo, double hi, double width) const;
-
-  /// Exact contact test at the double t in [0, 1], where the cubic vanishes (coplanar).
-  bool contact_at(double t) const;
-
-  /// x = mantissa * 2^exponent with an integer mantissa of at most 53 bits.
-  struct Dyadic {
-    std::int64_t mantissa = 0;
-    int exponent = 0;
+  enum class Arithmetic {
+    fixed_first,  ///< fixed-size integers within the proven bounds, GMP beyond
+    gmp,          ///< GMP throughout (the same templates instantiated with mpz_class)
   };
 
- private:
-  void compute_cubic();
+  explicit IntegerQuery(const VertexFaceQuery& q, Arithmetic a = Arithmetic::fixed_first);
+  explicit IntegerQuery(const EdgeEdgeQuery& q, Arithmetic a = Arithmetic::fixed_first);
 
-  QueryType type_;
-  Dyadic coords_[8][3];  // benchmark row order
-  int common_exponent_ = 0;
-  mpz_class cubic_[4];   // cubic_[i] of t^i, scaled by 2^(-3E)
+  /// The exact sign of the coplanarity cubic at the finite double t >= 0 (GMP for t > 1).
+  int cubic_sign_at(double t) const { return sign_at(t, nullptr); }
+
+  /// Doubles around the only root of the cubic in [lo, hi]: guided_bisection
+  /// (exact/guided_bisection.hpp), whose contract applies.
+  std::pair<double, double> bisect_root(double lo, double hi, double width) const {
+    return guided_bisection(*this, lo, hi, width);
+  }
+
+  /// Exact contact test at the double t in [0, 1], where the cubic vanishes (coplanar).
+  /// Throws std::domain_error for t outside [0, 1].
+  bool contact_at(double t) const;
+
+  // CubicAtDoubles
+  int sign_at(double t, Approximation* value) const override;
+  void approximate_coefficients(Approximation (&c)[4]) const override;
+
+  // For tests and benchmarks.
+  const IntegerCoordinates& coordinates() const { return coords_; }
+  /// Limbs of the FixedInt holding the coefficients; 0 when they are in GMP.
+  int coefficient_limbs() const { return coefficient_limbs_; }
+  /// Limbs of the FixedInt an evaluation at t (in [0, 1]) runs in; 0: GMP.
+  int value_limbs(double t) const;
+  /// Limbs of the FixedInt the contact test at t (in [0, 1]) runs in; 0: GMP.
+  int contact_limbs(double t) const;
+  /// The exact coefficients (scaled by 2^(-3E)) and the exact 2^(3k) f(t), t in [0, 1].
+  std::array<mpz_class, 4> coefficients() const;
+  mpz_class scaled_value_at(double t) const;
+
+ private:
+  void compute_coefficients();
+  /// The coefficients in GMP (converted when they are held in a FixedInt).
+  void gmp_coefficients(mpz_class (&c)[4]) const;
+  /// 2^(3k) f(t) in GMP, for any finite t >= 0.
+  mpz_class gmp_scaled_value_at(double t) const;
+  int value_limbs(DyadicTime d) const;
+
+  struct GmpCoefficients {
+    mpz_class c[4];
+  };
+
+  IntegerCoordinates coords_;
+  Arithmetic arithmetic_;
+  int coefficient_limbs_ = 0;
+  // When coefficient_limbs_ > 0 (widened from that width; written before any read).
+  using Stored = FixedInt<kMaxFixedLimbs>;
+  Stored fixed_[4] = {Stored(Stored::Uninitialized{}), Stored(Stored::Uninitialized{}),
+                      Stored(Stored::Uninitialized{}), Stored(Stored::Uninitialized{})};
+  std::optional<GmpCoefficients> gmp_;  // when coefficient_limbs_ == 0
 };
 
 }  // namespace exactccd::exact

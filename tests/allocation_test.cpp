@@ -1,13 +1,15 @@
 // The culling and filter stages of the default path make no heap allocation: this program
 // replaces every global operator new / delete with counting versions and routes GMP's memory
 // functions through counters as well, then checks that every query decided by Stage::culling or
-// Stage::filter allocated nothing. The exact stages (filter_exact_toi, exact_at_double, exact)
-// do allocate (GMP numbers, polynomials): their counts are reported, and a test asserts that the
-// rational exact path is seen allocating, which proves the counters see the library's
-// allocations.
+// Stage::filter allocated nothing. The exact stages at double times (filter_exact_toi,
+// exact_at_double) allocate nothing either when all their computations fit the fixed-size
+// integers (exact/integer_query.hpp counts those that needed GMP). The rational exact path does
+// allocate (GMP numbers, polynomials): its counts are reported, and a test asserts that it is
+// seen allocating, which proves the counters see the library's allocations.
 #include <gmp.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "exact/integer_query.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "tests/random_queries.hpp"
@@ -222,6 +225,101 @@ TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnSampleQueries) {
   }
   expect_no_allocation_in_float_stages(a, "sample");
   EXPECT_GT(a.of(Stage::culling) + a.of(Stage::filter), 1000u);
+}
+
+/// Queries decided at double times whose exact computations all stayed within the fixed widths
+/// (no GMP computation counted during the call) make no allocation; GMP computations are seen
+/// allocating.
+struct AtDoubleTimes {
+  std::uint64_t fixed = 0, gmp = 0, gmp_allocating = 0;
+  std::vector<std::string> offenders;
+
+  void record(const DoubleQuery& q, const CcdResult& r, std::uint64_t allocations,
+              bool used_gmp) {
+    if (r.decided_by != Stage::exact_at_double && r.decided_by != Stage::filter_exact_toi) return;
+    if (used_gmp) {
+      ++gmp;
+      gmp_allocating += allocations > 0;
+      return;
+    }
+    ++fixed;
+    if (allocations > 0 && offenders.size() < 5)
+      offenders.push_back(std::to_string(allocations) + " allocation(s), " + describe(r) + ", " +
+                          describe(q));
+  }
+};
+
+void decide_at_double_times(const DoubleQuery& q, const CcdOptions& options, AtDoubleTimes* a) {
+  const std::uint64_t gmp_before = exact::gmp_computations_in_this_thread();
+  std::uint64_t count = 0;
+  const CcdResult r = decide_counting(q, options, &count);
+  a->record(q, r, count, exact::gmp_computations_in_this_thread() != gmp_before);
+}
+
+/// q times 2^k when every product is exact.
+bool scaled_exactly(const DoubleQuery& q, int k, DoubleQuery* out) {
+  *out = q;
+  for (auto& p : out->v)
+    for (int i = 0; i < 3; ++i) {
+      const double x = p[i];
+      p[i] = std::ldexp(x, k);
+      if (!std::isfinite(p[i]) || std::ldexp(p[i], -k) != x) return false;
+    }
+  return true;
+}
+
+TEST(Allocation, ExactStagesAtDoubleTimesDoNotAllocateWithinTheFixedWidths) {
+  AtDoubleTimes a;
+  // The sample queries, also scaled far from unit scale (normalised before the filters).
+  for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
+    const auto type = query_type_from_path(path);
+    ASSERT_TRUE(type) << path;
+    for (const QueryRecord& r : read_query_file(path, *type).queries) {
+      DoubleQuery q;
+      q.type = *type;
+      for (int i = 0; i < 8; ++i)
+        ASSERT_TRUE(exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) &&
+                    exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) &&
+                    exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()));
+      for (int k : {0, 700, -700}) {
+        DoubleQuery scaled;
+        if (!scaled_exactly(q, k, &scaled)) continue;
+        for (const CcdOptions& options : {CcdOptions{}, CcdOptions{0.75, 1e-3, Mode::filtered}})
+          decide_at_double_times(scaled, options, &a);
+      }
+    }
+  }
+  // Random families: planted and near-degenerate contacts.
+  const std::uint64_t seed = seed_from_environment(kDefaultSeed);
+  const std::uint64_t n = scaled_count(1500, scale_from_environment());
+  for (const Generator& g : all_generators())
+    for (std::uint64_t i = 0; i < n; ++i)
+      decide_at_double_times(generate(g, seed, i), CcdOptions{}, &a);
+  std::printf("at double times: %llu queries within the fixed widths, %llu with GMP "
+              "computations (%llu of them allocating)\n",
+              static_cast<unsigned long long>(a.fixed), static_cast<unsigned long long>(a.gmp),
+              static_cast<unsigned long long>(a.gmp_allocating));
+  for (const auto& o : a.offenders) ADD_FAILURE() << o;
+  EXPECT_GT(a.fixed, 1000u);  // the stages under test are reached
+}
+
+TEST(Allocation, GmpComputationsAtDoubleTimesAreSeen) {
+  // A query whose integers have about 2,000 bits decided at a double time: its coefficients
+  // need GMP, which allocates, and the computation is counted.
+  const double big = std::ldexp(1.0, 1000), tiny = std::ldexp(1.0, -1000);
+  DoubleQuery q;  // p rests on the triangle's plane z = 0 at t = 0 and leaves it
+  q.type = QueryType::vertex_face;
+  q.v = {Eigen::Vector3d(tiny, tiny, 0),   Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(big, 0, 0),
+         Eigen::Vector3d(0, big, 0),       Eigen::Vector3d(tiny, tiny, big),
+         Eigen::Vector3d(0, 0, 0),         Eigen::Vector3d(big, 0, 0), Eigen::Vector3d(0, big, 0)};
+  const std::uint64_t gmp_before = exact::gmp_computations_in_this_thread();
+  std::uint64_t count = 0;
+  const CcdResult r = decide_counting(q, CcdOptions{}, &count);
+  EXPECT_TRUE(r.collides);
+  EXPECT_EQ(r.toi_lo, 0.0);
+  EXPECT_EQ(r.decided_by, Stage::exact_at_double);
+  EXPECT_GT(exact::gmp_computations_in_this_thread(), gmp_before);
+  EXPECT_GT(count, 0u);
 }
 
 }  // namespace

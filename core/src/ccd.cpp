@@ -9,6 +9,7 @@
 
 #include "core/predicates/fp_environment.hpp"
 #include "core/src/float_only_ccd.hpp"
+#include "core/src/power_of_two_scaling.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exact/integer_query.hpp"
 #include "filters/ccd_filters.hpp"
@@ -92,8 +93,10 @@ CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
 namespace {
 
 /// Exact answers at double times in integer arithmetic (exact/integer_query.hpp), built
-/// lazily: queries the float stages decide never touch GMP.
+/// lazily (queries the float stages decide never build it): fixed-size stack integers within
+/// the proven bounds, GMP beyond them.
 /// PROOF: proofs/filters.md#exact-at-double-times
+/// PROOF: proofs/filters.md#fixed-size-exact-at-doubles
 template <class Query>
 class LazyExactAtDoubles final : public filters::ExactAtDoubles {
  public:
@@ -113,16 +116,11 @@ class LazyExactAtDoubles final : public filters::ExactAtDoubles {
   std::optional<exact::IntegerQuery> integer_;
 };
 
-/// The default pipeline: culling, filters, exact path. The culling and filter stages make no
-/// heap allocation; the exact stages do.
-template <class Query, class Culled, class Filter, class Exact>
-CcdResult filtered_ccd(const Query& q, const CcdOptions& options, Culled culled, Filter filter,
-                       Exact exact_path) {
+/// The default pipeline after culling: filters, exact path.
+template <class Query, class Filter, class Exact>
+CcdResult filters_then_exact(const Query& q, const CcdOptions& options, Filter filter,
+                             Exact exact_path) {
   CcdResult r;
-  if (culled(q)) {
-    r.decided_by = Stage::culling;
-    return r;
-  }
   LazyExactAtDoubles<Query> exact_at_doubles(q);
   const filters::FilterOutcome f = filter(q, options, exact_at_doubles);
   switch (f.verdict) {
@@ -143,6 +141,24 @@ CcdResult filtered_ccd(const Query& q, const CcdOptions& options, Culled culled,
     case filters::FilterOutcome::Verdict::uncertain: break;
   }
   return exact_path(to_rational(q), options);
+}
+
+/// The default pipeline: culling, filters, exact path. The culling and filter stages make no
+/// heap allocation, nor do the exact stages at double times within their fixed-size bounds;
+/// the rational exact path does. A query far from unit scale is first scaled by a power of two
+/// when that is exact (the same verdict and TOI; culling, exact, is unaffected by it).
+/// PROOF: proofs/filters.md#power-of-two-normalisation
+template <class Query, class Culled, class Filter, class Exact>
+CcdResult filtered_ccd(const Query& q, const CcdOptions& options, Culled culled, Filter filter,
+                       Exact exact_path) {
+  if (culled(q)) {
+    CcdResult r;
+    r.decided_by = Stage::culling;
+    return r;
+  }
+  if (const int s = detail::normalising_exponent(q); s != 0)
+    return filters_then_exact(detail::scaled_by_power_of_two(q, s), options, filter, exact_path);
+  return filters_then_exact(q, options, filter, exact_path);
 }
 
 bool all_finite(const VertexFaceQuery& q) {
