@@ -22,6 +22,7 @@
 #include "exactccd/discrete.hpp"
 #include "exactccd/rational_query.hpp"
 #include "exactccd/scene.hpp"
+#include "tests/fp_host/issue9_query.hpp"
 #include "tests/random_queries.hpp"
 
 #if defined(__x86_64__)
@@ -74,23 +75,8 @@ bool same(const CcdResult& a, const CcdResult& b) {
          same_bits(a.toi_hi, b.toi_hi) && a.decided_by == b.decided_by;
 }
 
-/// The vertex-face query of issue 9: normal coordinates around 2^-338, whose cubic's
-/// coefficients (~2^-1014) and their products underflow into the subnormal range.
-VertexFaceQuery issue_example() {
-  VertexFaceQuery q;
-  q.p_t0 = {0x1.aab1c61f7f9dap-338, -0x1.e1ef9284f41ep-339, -0x1.5a51f81272d58p-339};
-  q.a_t0 = {0x1.4269e20b15724p-338, 0x1.5568922adc9fp-338, 0x1.90b88adca3faap-338};
-  q.b_t0 = {0x1.82f749d8bc38cp-339, -0x1.a9afa9c8e98aep-339, -0x1.727a774581258p-338};
-  q.c_t0 = {0x1.dc481382d3bcap-338, 0x1.4ad954f0592f8p-339, -0x1.6447c14db359ep-338};
-  q.p_t1 = {-0x1.3727506d293aep-338, 0x1.7a5b5f1061c02p-338, -0x1.4adf27a799287p-338};
-  q.a_t1 = {-0x1.225c59ded729ep-338, -0x1.e642c24349be8p-341, 0x1.94af9e2f5d798p-339};
-  q.b_t1 = {0x1.3e922784f5e96p-338, -0x1.329379daddddcp-340, 0x1.95f907fcff02p-339};
-  q.c_t1 = {0x1.44dbef531e216p-338, -0x1.74cb96014ae58p-338, 0x1.82ddfef46fe5ep-338};
-  return q;
-}
-
 TEST(FpEnvironment, IssueExampleUnderFlushToZeroAndDenormalsAreZero) {
-  const VertexFaceQuery q = issue_example();
+  const VertexFaceQuery q = issue9_query();
   // The exact path (rationals, no floating point) is the independent reference; the issue's
   // report gives the same tightest pair.
   const CcdResult exact = exact_ccd(to_rational(q));
@@ -157,7 +143,7 @@ TEST(FpEnvironment, ScaledRandomQueriesEqualCleanResultsUnderEveryHostState) {
 /// Every mode, both query types, and the rational API leave the state as found; a throwing
 /// call does too.
 TEST(FpEnvironment, StateRestoredOnReturnAndOnThrowForEveryEntryPoint) {
-  const VertexFaceQuery vf = issue_example();
+  const VertexFaceQuery vf = issue9_query();
   EdgeEdgeQuery ee;
   ee.ea0_t0 = {0, 0, -1}, ee.ea1_t0 = {0, 0, 1}, ee.eb0_t0 = {-1, 1, 0}, ee.eb1_t0 = {1, 1, 0};
   ee.ea0_t1 = ee.ea0_t0, ee.ea1_t1 = ee.ea1_t0, ee.eb0_t1 = {-1, -1, 0}, ee.eb1_t1 = {1, -1, 0};
