@@ -85,18 +85,19 @@ int normalising_exponent(const Query& q) {
   return lowest + s >= -1074 ? s : 0;
 }
 
-/// The query with every coordinate times 2^s (exact by the choice of s).
+/// x times 2^s, coordinate-wise (exact by the choice of s).
+inline Eigen::Vector3d scaled_by_power_of_two(const Eigen::Vector3d& x, int s) {
+  return {std::ldexp(x.x(), s), std::ldexp(x.y(), s), std::ldexp(x.z(), s)};
+}
+
+/// The query with every coordinate times 2^s.
 inline VertexFaceQuery scaled_by_power_of_two(const VertexFaceQuery& q, int s) {
-  auto f = [s](const Eigen::Vector3d& x) -> Eigen::Vector3d {
-    return {std::ldexp(x.x(), s), std::ldexp(x.y(), s), std::ldexp(x.z(), s)};
-  };
+  const auto f = [s](const Eigen::Vector3d& x) { return scaled_by_power_of_two(x, s); };
   return {f(q.p_t0), f(q.a_t0), f(q.b_t0), f(q.c_t0), f(q.p_t1), f(q.a_t1), f(q.b_t1), f(q.c_t1)};
 }
 
 inline EdgeEdgeQuery scaled_by_power_of_two(const EdgeEdgeQuery& q, int s) {
-  auto f = [s](const Eigen::Vector3d& x) -> Eigen::Vector3d {
-    return {std::ldexp(x.x(), s), std::ldexp(x.y(), s), std::ldexp(x.z(), s)};
-  };
+  const auto f = [s](const Eigen::Vector3d& x) { return scaled_by_power_of_two(x, s); };
   return {f(q.ea0_t0), f(q.ea1_t0), f(q.eb0_t0), f(q.eb1_t0),
           f(q.ea0_t1), f(q.ea1_t1), f(q.eb0_t1), f(q.eb1_t1)};
 }
