@@ -17,7 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "exact/exact_ccd.hpp"
 #include "exact/integer_query.hpp"
+#include "exact/small_polynomial.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "tests/random_queries.hpp"
@@ -160,13 +162,15 @@ TEST(Allocation, CounterSeesLibraryAllocations) {
   q.v = {Eigen::Vector3d(0.25, 0.25, 1), Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
          Eigen::Vector3d(0, 1, 0),       Eigen::Vector3d(0.25, 0.25, -1), Eigen::Vector3d(0, 0, 0),
          Eigen::Vector3d(1, 0, 0),       Eigen::Vector3d(0, 1, 0)};
-  CcdOptions exact_mode;
-  exact_mode.mode = Mode::exact;
-  std::uint64_t n = 0;
-  const CcdResult r = decide_counting(q, exact_mode, &n);
+  // The rational path (the reference) builds GMP rationals and polynomials.
+  const RationalQuery rq = to_rational(q.vertex_face());
+  const CcdOptions options;
+  const std::uint64_t start = g_allocations;
+  const CcdResult r = exact::vertex_face_ccd_exact(rq, options);
+  const std::uint64_t n = g_allocations - start;
   EXPECT_TRUE(r.collides);
   EXPECT_EQ(r.toi_lo, 0.5);
-  EXPECT_GT(n, 0u) << "the counting allocators missed the exact path's allocations";
+  EXPECT_GT(n, 0u) << "the counting allocators missed the rational path's allocations";
 
   // And a plain operator new in this thread is counted.
   const std::uint64_t before = g_allocations;
@@ -199,8 +203,6 @@ TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnRandomQueries) {
     // The generators must reach the stages under test, or this test proves nothing.
     EXPECT_GT(a.of(Stage::culling), scaled_count(1000)) << what;
     EXPECT_GT(a.of(Stage::filter), scaled_count(1000)) << what;
-    // The rational exact path allocates (reported above); it must be seen doing so.
-    EXPECT_GT(a.allocating(Stage::exact), 0u) << what;
   }
 }
 
@@ -320,6 +322,63 @@ TEST(Allocation, GmpComputationsAtDoubleTimesAreSeen) {
   EXPECT_EQ(r.decided_by, Stage::exact_at_double);
   EXPECT_GT(exact::gmp_computations_in_this_thread(), gmp_before);
   EXPECT_GT(count, 0u);
+}
+
+/// The exact stage at double brackets (Mode::exact, and the default path's last stage)
+/// allocates nothing for a query it decides without a GMP step (no common factor, square-free
+/// part or bracket finer than the doubles, and every width within the fixed ones); its GMP
+/// steps are seen allocating.
+/// PROOF: proofs/exact_ccd.md#exact-at-double-brackets
+TEST(Allocation, ExactStageAtBracketsDoesNotAllocateWithoutGmpSteps) {
+  std::uint64_t fixed = 0, gmp = 0, gmp_allocating = 0;
+  std::vector<std::string> offenders;
+  auto decide = [&](const DoubleQuery& q, CcdOptions options) {
+    const std::uint64_t steps = exact::gmp_polynomial_steps_in_this_thread();
+    const std::uint64_t integer_gmp = exact::gmp_computations_in_this_thread();
+    std::uint64_t count = 0;
+    const CcdResult r = decide_counting(q, options, &count);
+    if (r.decided_by != Stage::exact) return;
+    if (exact::gmp_polynomial_steps_in_this_thread() != steps ||
+        exact::gmp_computations_in_this_thread() != integer_gmp) {
+      ++gmp;
+      gmp_allocating += count > 0;
+      return;
+    }
+    ++fixed;
+    if (count > 0 && offenders.size() < 5)
+      offenders.push_back(std::to_string(count) + " allocation(s), " + describe(r) + ", " +
+                          describe(q));
+  };
+  CcdOptions exact_mode;
+  exact_mode.mode = Mode::exact;
+  for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
+    const auto type = query_type_from_path(path);
+    ASSERT_TRUE(type) << path;
+    for (const QueryRecord& r : read_query_file(path, *type).queries) {
+      DoubleQuery q;
+      q.type = *type;
+      for (int i = 0; i < 8; ++i)
+        ASSERT_TRUE(exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) &&
+                    exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) &&
+                    exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()));
+      decide(q, exact_mode);
+      decide(q, CcdOptions{});
+    }
+  }
+  const std::uint64_t seed = seed_from_environment(kDefaultSeed);
+  const std::uint64_t n = scaled_count(600, scale_from_environment());
+  for (const Generator& g : all_generators())
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const DoubleQuery q = generate(g, seed, i);
+      decide(q, exact_mode);
+      decide(q, CcdOptions{});
+    }
+  std::printf("exact stage: %llu decisions without GMP steps, %llu with (%llu allocating)\n",
+              static_cast<unsigned long long>(fixed), static_cast<unsigned long long>(gmp),
+              static_cast<unsigned long long>(gmp_allocating));
+  for (const std::string& o : offenders) ADD_FAILURE() << o;
+  EXPECT_GT(fixed, scaled_count(5000));
+  EXPECT_GT(gmp_allocating, 0u) << "GMP steps must be seen allocating, or the counter is blind";
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "core/predicates/fp_environment.hpp"
 #include "core/src/float_only_ccd.hpp"
 #include "core/src/power_of_two_scaling.hpp"
+#include "exact/algebraic_at_doubles.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exact/integer_query.hpp"
 #include "filters/ccd_filters.hpp"
@@ -92,6 +93,19 @@ CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
 
 namespace {
 
+/// The exact path of a double query: the exact stage at double brackets, and the rational path
+/// (the reference) past the stage's step caps (never reached on any test or benchmark set).
+/// PROOF: proofs/exact_ccd.md#exact-at-double-brackets
+CcdResult exact_path_of(const VertexFaceQuery& q, const CcdOptions& options) {
+  if (std::optional<CcdResult> r = exact::vertex_face_ccd_at_doubles(q, options)) return *r;
+  return exact::vertex_face_ccd_exact(to_rational(q), options);
+}
+
+CcdResult exact_path_of(const EdgeEdgeQuery& q, const CcdOptions& options) {
+  if (std::optional<CcdResult> r = exact::edge_edge_ccd_at_doubles(q, options)) return *r;
+  return exact::edge_edge_ccd_exact(to_rational(q), options);
+}
+
 /// Exact answers at double times in integer arithmetic (exact/integer_query.hpp), built
 /// lazily (queries the float stages decide never build it): fixed-size stack integers within
 /// the proven bounds, GMP beyond them.
@@ -140,7 +154,7 @@ CcdResult filters_then_exact(const Query& q, const CcdOptions& options, Filter f
       return r;
     case filters::FilterOutcome::Verdict::uncertain: break;
   }
-  return exact_path(to_rational(q), options);
+  return exact_path(q, options);
 }
 
 /// The default pipeline: culling, filters, exact path. The culling and filter stages make no
@@ -180,11 +194,11 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& option
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   switch (options.mode) {
     case Mode::float_only: return float_only::vertex_face_ccd(query, options);
-    case Mode::exact: return exact::vertex_face_ccd_exact(to_rational(query), options);
+    case Mode::exact: return exact_path_of(query, options);
     case Mode::filtered: break;
   }
   return filtered_ccd(query, options, filters::vertex_face_culled, filters::vertex_face_filter,
-                      exact::vertex_face_ccd_exact);
+                      [](const VertexFaceQuery& q, const CcdOptions& o) { return exact_path_of(q, o); });
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
@@ -193,11 +207,11 @@ CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   switch (options.mode) {
     case Mode::float_only: return float_only::edge_edge_ccd(query, options);
-    case Mode::exact: return exact::edge_edge_ccd_exact(to_rational(query), options);
+    case Mode::exact: return exact_path_of(query, options);
     case Mode::filtered: break;
   }
   return filtered_ccd(query, options, filters::edge_edge_culled, filters::edge_edge_filter,
-                      exact::edge_edge_ccd_exact);
+                      [](const EdgeEdgeQuery& q, const CcdOptions& o) { return exact_path_of(q, o); });
 }
 
 }  // namespace exactccd

@@ -1,0 +1,177 @@
+// PROOF: proofs/exact_ccd.md#exact-at-double-brackets
+#include "exact/algebraic_at_doubles.hpp"
+
+#include <gmpxx.h>
+
+#include <cstdint>
+#include <optional>
+#include <tuple>
+
+#include "core/predicates/inclusion.hpp"
+#include "exact/fixed_width_dispatch.hpp"
+#include "exact/integer_cubic.hpp"
+#include "exact/bracketed_root.hpp"
+#include "exact/small_polynomial.hpp"
+
+namespace exactccd::exact {
+
+namespace {
+
+thread_local std::uint64_t g_unresolved = 0;
+
+template <int N, int D>
+SmallPolynomial small(const predicates::FixedPoly<FixedInt<N>, D>& g, long bits) {
+  return SmallPolynomial::from_fixed(g.c.data(), D + 1, bits);
+}
+template <int D>
+SmallPolynomial small(const predicates::FixedPoly<mpz_class, D>& g, long) {
+  return SmallPolynomial::from_mpz(g.c.data(), D + 1);
+}
+
+template <class CI>
+using Moving = predicates::MovingPoint<CI>;
+
+template <class CI>
+Moving<CI> moving_point(const IntegerCoordinates& q, int row) {
+  Moving<CI> m;
+  predicates::FixedPoly<CI, 1>* axes[3] = {&m.x, &m.y, &m.z};
+  for (int axis = 0; axis < 3; ++axis) {
+    const CI x0 = integer_coordinate<CI>(q, row, axis);
+    CI d = integer_coordinate<CI>(q, row + 4, axis);
+    d -= x0;
+    axes[axis]->c = {x0, d};
+  }
+  return m;
+}
+
+/// Every inclusion polynomial has coefficients below 2^(2L + 6).
+/// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
+long inclusion_bits(int coordinate_bits) { return 2L * coordinate_bits + 6; }
+
+template <class CI>
+bool contact_at(const IntegerCoordinates& q, const Moving<CI> (&x)[4], BracketedRoot& r) {
+  const long bits = inclusion_bits(q.bits);
+  auto sign_at = [&](const auto& g) { return r.sign_of(small(g, bits)); };
+  return q.type == QueryType::vertex_face
+             ? predicates::point_in_triangle_at(x[0], x[1], x[2], x[3], sign_at)
+             : predicates::segments_intersect_at(x[0], x[1], x[2], x[3], sign_at);
+}
+
+/// The same candidates as exact/exact_ccd.cpp (vertex_edge_candidates): the first non-zero
+/// component of cross(y - x, p - x), else (p - x).(p - y).
+/// PROOF: proofs/exact_ccd.md#lemma-vertex-edge-candidates
+template <class CI>
+SmallPolynomial vertex_edge_candidate(const Moving<CI>& p, const Moving<CI>& x,
+                                      const Moving<CI>& y, long bits) {
+  const auto n = cross(y - x, p - x);
+  for (int k = 0; k < 3; ++k) {
+    SmallPolynomial c = small(n[k], bits);
+    if (!c.is_zero()) return c;
+  }
+  return small(dot(p - x, p - y), bits);
+}
+
+CcdResult no_contact() {
+  CcdResult r;
+  r.decided_by = Stage::exact;
+  return r;
+}
+
+CcdResult contact(const BracketedRoot& root, const CcdOptions& options) {
+  CcdResult r;
+  r.decided_by = Stage::exact;
+  r.collides = true;
+  std::tie(r.toi_lo, r.toi_hi) = root.enclosure(options.toi_width);
+  return r;
+}
+
+template <class CI>
+CcdResult decide(const IntegerCoordinates& q, const SmallPolynomial& cubic,
+                 const CcdOptions& options) {
+  Moving<CI> x[4];
+  for (int i = 0; i < 4; ++i) x[i] = moving_point<CI>(q, i);
+  if (!cubic.is_zero()) {  // contact implies coplanarity: only the cubic's roots are candidates
+    SmallPolynomial square_free;
+    RootIterator roots(cubic, options.t_max, &square_free);
+    while (std::optional<BracketedRoot> r = roots.next())
+      if (contact_at(q, x, *r)) return contact(*r, options);
+    return no_contact();
+  }
+  // Coplanar throughout: contact at t = 0, else the first contact lies on an edge.
+  BracketedRoot zero = BracketedRoot::at(nullptr, 0.0);
+  if (contact_at(q, x, zero)) return contact(zero, options);
+  const long bits = inclusion_bits(q.bits);
+  SmallPolynomial candidates[4], square_free[4];
+  int count = 0;
+  if (q.type == QueryType::vertex_face) {
+    candidates[count++] = vertex_edge_candidate(x[0], x[1], x[2], bits);
+    candidates[count++] = vertex_edge_candidate(x[0], x[2], x[3], bits);
+    candidates[count++] = vertex_edge_candidate(x[0], x[3], x[1], bits);
+  } else {
+    candidates[count++] = vertex_edge_candidate(x[0], x[2], x[3], bits);
+    candidates[count++] = vertex_edge_candidate(x[1], x[2], x[3], bits);
+    candidates[count++] = vertex_edge_candidate(x[2], x[0], x[1], bits);
+    candidates[count++] = vertex_edge_candidate(x[3], x[0], x[1], bits);
+  }
+  std::optional<BracketedRoot> best;
+  for (int k = 0; k < count; ++k) {
+    if (candidates[k].degree() < 1) continue;
+    RootIterator roots(candidates[k], options.t_max, &square_free[k]);
+    while (std::optional<BracketedRoot> r = roots.next()) {
+      if (r->is_exact() && r->lo() == 0) continue;  // t = 0 was tried
+      if (best && !earlier(*r, *best)) break;       // ascending: no later root is earlier
+      if (contact_at(q, x, *r)) {
+        best = *r;
+        break;
+      }
+    }
+  }
+  return best ? contact(*best, options) : no_contact();
+}
+
+SmallPolynomial cubic_of(const IntegerCoordinates& q) {
+  const long bits = cubic_coefficient_bits(q.bits);
+  const int limbs = fixed_limbs_for(bits);
+  if (limbs == 0) {
+    mpz_class c[4];
+    coplanarity_coefficients(q, c);
+    return SmallPolynomial::from_mpz(c, 4);
+  }
+  return with_limbs(limbs, [&](auto n) {
+    FixedInt<decltype(n)::value> c[4];
+    coplanarity_coefficients(q, c);
+    return SmallPolynomial::from_fixed(c, 4, bits);
+  });
+}
+
+std::optional<CcdResult> at_doubles(const IntegerCoordinates& q, const CcdOptions& options) {
+  try {
+    const SmallPolynomial cubic = cubic_of(q);
+    // The coordinate type holds every inclusion polynomial: a few widths suffice.
+    const int limbs = fixed_limbs_for(inclusion_bits(q.bits));
+    if (limbs != 0 && limbs <= 2) return decide<FixedInt<2>>(q, cubic, options);
+    if (limbs != 0 && limbs <= 4) return decide<FixedInt<4>>(q, cubic, options);
+    if (limbs != 0 && limbs <= 8) return decide<FixedInt<8>>(q, cubic, options);
+    if (limbs != 0) return decide<FixedInt<16>>(q, cubic, options);
+    return decide<mpz_class>(q, cubic, options);
+  } catch (const UnresolvedAtDoubles&) {
+    ++g_unresolved;
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::optional<CcdResult> vertex_face_ccd_at_doubles(const VertexFaceQuery& q,
+                                                    const CcdOptions& options) {
+  return at_doubles(integer_coordinates(q), options);
+}
+
+std::optional<CcdResult> edge_edge_ccd_at_doubles(const EdgeEdgeQuery& q,
+                                                  const CcdOptions& options) {
+  return at_doubles(integer_coordinates(q), options);
+}
+
+std::uint64_t unresolved_at_doubles_in_this_thread() noexcept { return g_unresolved; }
+
+}  // namespace exactccd::exact

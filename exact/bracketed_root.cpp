@@ -1,0 +1,240 @@
+// PROOF: proofs/exact_ccd.md#descartes-at-doubles
+// PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
+#include "exact/bracketed_root.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "core/predicates/double_bits.hpp"
+#include "exact/integer_cubic.hpp"
+
+namespace exactccd::exact {
+
+namespace {
+
+/// The doubles lo < hi as a dyadic bracket with a common exponent.
+DyadicBracket dyadic_bracket(double lo, double hi, int sign_lo) {
+  const Dyadic dl = dyadic(lo), dh = dyadic(hi);
+  DyadicBracket d;
+  d.K = static_cast<unsigned>(std::max({0, -dl.exponent, -dh.exponent}));
+  d.A = dl.mantissa == 0 ? mpz_class(0)
+                         : scaled_integer<mpz_class>(dl.mantissa, d.K + dl.exponent);
+  d.B = dh.mantissa == 0 ? mpz_class(0)
+                         : scaled_integer<mpz_class>(dh.mantissa, d.K + dh.exponent);
+  d.sign_lo = sign_lo;
+  return d;
+}
+
+/// Halves d: A, B and K grow by one bit, the middle's sign picks the half.
+void halve(const MpzPolynomial& p, DyadicBracket& d) {
+  d.A <<= 1;
+  d.B <<= 1;
+  ++d.K;
+  const mpz_class M = (d.A + d.B) >> 1;  // A + B is even: both were doubled
+  const int s = sign_at_dyadic(p, M, d.K);
+  if (s == 0) d.A = d.B = M;
+  else (s == d.sign_lo ? d.A : d.B) = M;
+}
+
+/// Sign variations of s[0..n), zeros skipped (Descartes).
+int variations(const int (&s)[4], int n) {
+  int v = 0, last = 0;
+  for (int i = 0; i < n; ++i) {
+    if (s[i] == 0) continue;
+    if (last != 0 && s[i] != last) ++v;
+    last = s[i];
+  }
+  return v;
+}
+
+bool one_strict_sign(const int (&s)[4], int n) {
+  bool same = s[0] != 0;
+  for (int i = 1; i < n && same; ++i) same = s[i] == s[0];
+  return same;
+}
+
+/// Beyond this many halvings past the doubles a query goes to the rational path; separations
+/// that small were never seen (the bound only keeps a pathological input from running long).
+constexpr int kMaxDyadicSteps = 4096;
+
+/// The exact sign of g at the root of p in d (p's roots in d simple; d's root unique).
+/// g(r) = 0 iff r is a root of h = gcd(p, g): h divides p, whose only root in d is r, simple,
+/// so h(r) = 0 iff h changes sign on d. Otherwise halve until g's Bernstein coefficients share
+/// one sign, which happens since g(r) != 0.
+/// PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
+int sign_in_dyadic_bracket(const MpzPolynomial& p, const MpzPolynomial& g, DyadicBracket d) {
+  if (d.is_exact()) return sign_at_dyadic(g, d.A, d.K);
+  const MpzPolynomial h = polynomial_gcd(p, g);
+  if (h.degree >= 1 && sign_at_dyadic(h, d.A, d.K) * sign_at_dyadic(h, d.B, d.K) < 0) return 0;
+  for (int step = 0; step < kMaxDyadicSteps; ++step) {
+    int s[4];
+    const int n = bernstein_signs_dyadic(g, d.A, d.B, d.K, s);
+    if (one_strict_sign(s, n)) return s[0];
+    halve(p, d);
+    if (d.is_exact()) return sign_at_dyadic(g, d.A, d.K);
+  }
+  throw UnresolvedAtDoubles{};
+}
+
+}  // namespace
+
+bool split_point(double lo, double hi, double* m) {
+  const std::uint64_t l = lo == 0 ? 0 : predicates::bits_of(lo), h = predicates::bits_of(hi);
+  if (h < l + 2) return false;
+  if ((lo == 0 && hi >= 0x1p-60) || (lo > 0 && hi <= 0x1p20 * lo)) {
+    const double mid = lo + (hi - lo) * 0.5;
+    if (lo < mid && mid < hi) {
+      *m = mid;
+      return true;
+    }
+  }
+  *m = predicates::double_of(l + (h - l) / 2);
+  return true;
+}
+
+bool BracketedRoot::refine() {
+  double m;
+  if (is_exact() || fine_ || !split_point(lo_, hi_, &m)) return false;
+  const int s = p_->sign_at(m);
+  if (s == 0) lo_ = hi_ = m;
+  else (s == sign_lo_ ? lo_ : hi_) = m;
+  return true;
+}
+
+std::pair<double, double> BracketedRoot::enclosure(double width) const {
+  if (is_exact() || fine_) return {lo_, hi_};
+  return guided_bisection(*p_, lo_, hi_, width);
+}
+
+int BracketedRoot::sign_of(const SmallPolynomial& g) {
+  if (g.is_zero()) return 0;
+  if (fine_) return sign_in_dyadic_bracket(to_mpz_polynomial(*p_), to_mpz_polynomial(g), *fine_);
+  for (int step = 0;; ++step) {
+    if (is_exact()) return g.sign_at(lo_);
+    int s[4];
+    const int n = g.bernstein_signs(lo_, hi_, s);
+    if (one_strict_sign(s, n)) return s[0];  // g has that sign on all of [lo, hi]
+    if (step < 2) {
+      if (!refine()) break;
+    } else if (step == 2) {  // straight to adjacent doubles: Newton-guided, a few signs
+      const auto [l, h] = guided_bisection(*p_, lo_, hi_, 0.0);
+      if (l == lo_ && h == hi_) break;
+      lo_ = l;
+      hi_ = h;
+    } else {
+      break;
+    }
+  }
+  // g changes sign within one pair of adjacent doubles.
+  return sign_in_dyadic_bracket(to_mpz_polynomial(*p_), to_mpz_polynomial(g),
+                                dyadic_bracket(lo_, hi_, sign_lo_));
+}
+
+RootIterator::RootIterator(const SmallPolynomial& p, double t_max,
+                           SmallPolynomial* square_free_storage)
+    : p_(&p), storage_(square_free_storage) {
+  if (p.degree() < 1) return;  // constants: no root (the zero polynomial is not passed)
+  if (p.sign_at(t_max) == 0) push({t_max, t_max, Kind::point});
+  push({0.0, t_max, Kind::interval});
+  if (p.sign_at(0.0) == 0) push({0.0, 0.0, Kind::point});
+}
+
+std::optional<BracketedRoot> RootIterator::next() {
+  while (size_ > 0) {
+    const Item it = stack_[--size_];
+    if (it.kind == Kind::point) return BracketedRoot::at(p_, it.lo);
+    if (it.kind == Kind::fine) {
+      DyadicBracket& d = fine_[static_cast<std::size_t>(it.index)];
+      return BracketedRoot(p_, it.lo, it.hi, std::move(d));
+    }
+    int s[4];
+    const int n = p_->bernstein_signs(it.lo, it.hi, s);
+    const int v = variations(s, n);
+    if (v == 0) continue;
+    if (v == 1 && s[0] != 0 && s[n - 1] != 0) return BracketedRoot(p_, it.lo, it.hi, s[0]);
+    double m;
+    if (!split_point(it.lo, it.hi, &m)) {
+      if (!square_free_) {
+        square_free_ = true;
+        *storage_ = square_free_part(*p_);
+        p_ = storage_;
+        push(it);  // the same roots, now simple
+        continue;
+      }
+      isolate_beyond_doubles(it);
+      continue;
+    }
+    const int sm = p_->sign_at(m);
+    push({m, it.hi, Kind::interval});
+    if (sm == 0) push({m, m, Kind::point});
+    push({it.lo, m, Kind::interval});
+  }
+  return std::nullopt;
+}
+
+void RootIterator::push(const Item& it) {
+  if (size_ == kMaxItems) throw UnresolvedAtDoubles{};
+  stack_[size_++] = it;
+}
+
+/// The roots of the square-free p strictly inside the adjacent doubles (lo, hi) (its ends
+/// are not roots: they were split points or interval ends tested), isolated by the same
+/// Descartes bisection on dyadic rationals; pushed so that they come out in ascending order.
+void RootIterator::isolate_beyond_doubles(const Item& it) {
+  const MpzPolynomial p = to_mpz_polynomial(*p_);
+  std::vector<DyadicBracket> found, pending;
+  pending.push_back(dyadic_bracket(it.lo, it.hi, p_->sign_at(it.lo)));
+  for (int step = 0; !pending.empty(); ++step) {
+    if (step == kMaxDyadicSteps) throw UnresolvedAtDoubles{};
+    DyadicBracket d = std::move(pending.back());
+    pending.pop_back();
+    if (d.is_exact()) {  // a dyadic root found at a split point
+      found.push_back(std::move(d));
+      continue;
+    }
+    int s[4];
+    const int n = bernstein_signs_dyadic(p, d.A, d.B, d.K, s);
+    const int v = variations(s, n);
+    if (v == 0) continue;
+    if (v == 1 && s[0] != 0 && s[n - 1] != 0) {
+      d.sign_lo = s[0];
+      found.push_back(std::move(d));
+      continue;
+    }
+    // Split at the middle M: the right half first onto `pending`, so the left comes out
+    // first; M itself when it is a root.
+    DyadicBracket left = d, right = d;
+    left.A <<= 1, left.B <<= 1, ++left.K;
+    right.A = left.A, right.B = left.B, right.K = left.K;
+    const mpz_class M = (left.A + left.B) >> 1;
+    left.B = M;
+    right.A = M;
+    pending.push_back(std::move(right));
+    if (sign_at_dyadic(p, M, left.K) == 0) {
+      DyadicBracket point;
+      point.A = point.B = M;
+      point.K = left.K;
+      pending.push_back(std::move(point));
+    }
+    pending.push_back(std::move(left));
+  }
+  // `found` is ascending (left halves before points before right halves); pushed in reverse
+  // so that the stack pops them ascending.
+  for (auto i = found.size(); i-- > 0;) {
+    fine_.push_back(std::move(found[i]));
+    push({it.lo, it.hi, Kind::fine, static_cast<int>(fine_.size() - 1)});
+  }
+}
+
+bool earlier(BracketedRoot& r, BracketedRoot& b) {
+  for (;;) {
+    if (r.lo() >= b.hi()) return false;  // r >= r.lo >= b.hi >= b
+    if (r.hi() < b.lo()) return true;
+    if (r.hi() == b.lo()) return !(r.is_exact() && b.is_exact());  // equal only if both are it
+    BracketedRoot& wider = (r.hi() - r.lo()) >= (b.hi() - b.lo()) ? r : b;
+    BracketedRoot& other = &wider == &r ? b : r;
+    if (!wider.refine() && !other.refine()) return false;  // the same adjacent pair
+  }
+}
+
+}  // namespace exactccd::exact

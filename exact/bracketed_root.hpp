@@ -1,0 +1,111 @@
+// Roots of small integer polynomials bracketed between doubles, and exact signs of other
+// polynomials at them: the root isolation (Descartes' rule on Bernstein coefficients) and the
+// sign evaluation of the fast exact stage (exact/algebraic_at_doubles.hpp). Fixed-size integers
+// on doubles; GMP only for common factors, square-free parts and brackets finer than the
+// doubles.
+// PROOF: proofs/exact_ccd.md#descartes-at-doubles
+// PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
+#pragma once
+
+#include <gmpxx.h>
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "exact/small_polynomial.hpp"
+
+namespace exactccd::exact {
+
+/// Thrown where the stage gives up (a step cap reached, a full root stack); the caller then
+/// decides with the rational path.
+struct UnresolvedAtDoubles {};
+
+/// A double strictly inside (lo, hi), 0 <= lo < hi: the rounded arithmetic middle while the
+/// interval spans few binades (Descartes' rule needs short intervals), else the middle in bit
+/// order (a root near 0 is reached in at most 64 halvings); false when no double is inside.
+/// Any point inside is correct; the choice only sets the speed.
+bool split_point(double lo, double hi, double* m);
+
+/// A bracket on dyadic rationals beyond the doubles (GMP): [A 2^-K, B 2^-K], A < B, holding
+/// one simple root of p with p(A 2^-K) of sign `sign_lo` (non-zero) and p(B 2^-K) of the
+/// other; or the exact root A 2^-K when A == B.
+struct DyadicBracket {
+  mpz_class A, B;
+  unsigned K = 0;
+  int sign_lo = 0;
+  bool is_exact() const { return A == B; }
+};
+
+/// A root r of the polynomial p: exact (lo == hi, a double), or the only root of p in the open
+/// interval (lo, hi) of doubles, simple, with p(lo) and p(hi) non-zero of opposite signs; or,
+/// when lo and hi are adjacent doubles holding several roots of p, one of them in a dyadic
+/// bracket (`fine`) inside (lo, hi). p must outlive the root.
+class BracketedRoot {
+ public:
+  static BracketedRoot at(const SmallPolynomial* p, double t) { return {p, t, t, 0}; }
+  BracketedRoot(const SmallPolynomial* p, double lo, double hi, int sign_lo)
+      : p_(p), lo_(lo), hi_(hi), sign_lo_(sign_lo) {}
+  BracketedRoot(const SmallPolynomial* p, double lo, double hi, DyadicBracket fine)
+      : p_(p), lo_(lo), hi_(hi), sign_lo_(0), fine_(std::move(fine)) {}
+
+  bool is_exact() const { return lo_ == hi_; }
+  bool is_beyond_doubles() const { return fine_.has_value(); }
+  double lo() const { return lo_; }
+  double hi() const { return hi_; }
+
+  /// Halves the bracket (may find r exactly); false when no double lies strictly inside.
+  bool refine();
+
+  /// The reported enclosure: exact; the adjacent doubles around a root beyond the doubles; or
+  /// guided bisection to `width` (0: the tightest pair of doubles, canonical).
+  std::pair<double, double> enclosure(double width) const;
+
+  /// The exact sign of g(r); may narrow the bracket. Throws UnresolvedAtDoubles past the
+  /// step cap. PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
+  int sign_of(const SmallPolynomial& g);
+
+ private:
+  const SmallPolynomial* p_;
+  double lo_, hi_;
+  int sign_lo_;
+  std::optional<DyadicBracket> fine_;
+};
+
+/// r < b exactly, or false when r >= b or when both lie strictly inside the same pair of
+/// adjacent doubles (then either gives the same reported enclosure). May refine both.
+bool earlier(BracketedRoot& r, BracketedRoot& b);
+
+/// The roots of a non-zero polynomial p in [0, t_max] (t_max a double in (0, 1]), in
+/// ascending order, each once. Descartes' rule on Bernstein coefficients over intervals with
+/// double ends: no sign variation, no root inside; one, exactly one (simple); more, split at a
+/// double. An interval without a double inside that still shows two variations holds a
+/// multiple root or several roots within one ulp: p is replaced by its square-free part (the
+/// same roots, simple) in *square_free_storage, and if that is not enough the interval's roots
+/// are isolated on dyadic rationals (GMP). Both p and the storage must outlive the roots.
+/// PROOF: proofs/exact_ccd.md#descartes-at-doubles
+class RootIterator {
+ public:
+  RootIterator(const SmallPolynomial& p, double t_max, SmallPolynomial* square_free_storage);
+  std::optional<BracketedRoot> next();
+
+ private:
+  enum class Kind : std::uint8_t { interval, point, fine };
+  struct Item {
+    double lo, hi;
+    Kind kind;
+    int index = 0;  // fine: into fine_
+  };
+  void push(const Item& it);
+  void isolate_beyond_doubles(const Item& it);
+
+  static constexpr int kMaxItems = 192;
+  const SmallPolynomial* p_;
+  SmallPolynomial* storage_;
+  bool square_free_ = false;
+  Item stack_[kMaxItems];
+  int size_ = 0;
+  std::vector<DyadicBracket> fine_;  // GMP steps only: never filled on the fast path
+};
+
+}  // namespace exactccd::exact

@@ -1,0 +1,309 @@
+#include "exact/small_polynomial.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "exact/fixed_width_dispatch.hpp"
+#include "exact/integer_cubic.hpp"
+
+namespace exactccd::exact {
+
+namespace {
+
+thread_local std::uint64_t g_gmp_steps = 0;
+
+/// r *= T for a GMP time numerator beyond 64 bits.
+inline void multiply_by(mpz_class& r, const mpz_class& T) { r *= T; }
+
+/// 2^(d k) p(T 2^-k) by Horner's rule. Reduction modulo 2^(64N) commutes with every step, so the
+/// FixedInt result is exact when the final value fits (its bound selected N).
+template <class Int, class Time>
+Int scaled_value(const Int (&c)[4], int d, const Time& T, unsigned k) {
+  Int r = c[d];
+  for (int i = d - 1; i >= 0; --i) {
+    multiply_by(r, T);
+    add_shifted(r, c[i], k * static_cast<unsigned>(d - i));
+  }
+  return r;
+}
+
+/// The signs of the Bernstein coefficients of p (degree d) on [A 2^-K, (A + H) 2^-K]: the
+/// Taylor shift q(s) = 2^(d K) p((A + H s) 2^-K) by Horner's rule over polynomials in s, then
+/// M b_j = sum_i M C(j, i) / C(d, i) q_i with M = lcm_i C(d, i) (3, 2, 1, 1 for d = 3, 2, 1, 0).
+/// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
+template <class Int>
+void bernstein_signs_of(const Int (&c)[4], int d, const Int& A, const Int& H, unsigned K,
+                        int (&signs)[4]) {
+  Int q[4] = {c[d], Int(0), Int(0), Int(0)};
+  for (int i = d - 1; i >= 0; --i) {
+    const int deg = d - 1 - i;  // degree of q before this step
+    q[deg + 1] = q[deg] * H;
+    for (int j = deg; j >= 1; --j) {
+      Int t = q[j] * A;
+      add_product(t, q[j - 1], H);
+      q[j] = t;
+    }
+    q[0] = q[0] * A;
+    add_shifted(q[0], c[i], K * static_cast<unsigned>(d - i));
+  }
+  switch (d) {
+    case 0: signs[0] = sign_of(q[0]); return;
+    case 1: {
+      signs[0] = sign_of(q[0]);
+      Int b1 = q[0];
+      b1 += q[1];
+      signs[1] = sign_of(b1);
+      return;
+    }
+    case 2: {
+      signs[0] = sign_of(q[0]);
+      Int b1 = q[0];  // 2 b1 = 2 q0 + q1
+      b1 += q[0];
+      b1 += q[1];
+      signs[1] = sign_of(b1);
+      Int b2 = q[0];  // b2 = q0 + q1 + q2
+      b2 += q[1];
+      b2 += q[2];
+      signs[2] = sign_of(b2);
+      return;
+    }
+    default: {
+      signs[0] = sign_of(q[0]);
+      Int three_q0 = q[0];
+      multiply_by(three_q0, 3u);
+      Int b1 = three_q0;  // 3 b1 = 3 q0 + q1
+      b1 += q[1];
+      signs[1] = sign_of(b1);
+      Int b2 = three_q0;  // 3 b2 = 3 q0 + 2 q1 + q2
+      b2 += q[1];
+      b2 += q[1];
+      b2 += q[2];
+      signs[2] = sign_of(b2);
+      Int b3 = q[0];  // b3 = q0 + q1 + q2 + q3
+      b3 += q[1];
+      b3 += q[2];
+      b3 += q[3];
+      signs[3] = sign_of(b3);
+      return;
+    }
+  }
+}
+
+template <int N>
+FixedInt<N> fixed_from_mpz(const mpz_class& z) {
+  std::uint64_t limbs[N] = {};
+  std::size_t count = 0;
+  mpz_export(limbs, &count, -1, sizeof limbs[0], 0, 0, z.get_mpz_t());
+  const FixedInt<N> m = FixedInt<N>::from_limbs(limbs);
+  return sgn(z) < 0 ? -m : m;
+}
+
+/// The double t in [0, 1] as T 2^-k; std::domain_error otherwise.
+DyadicTime unit_time(double t) {
+  DyadicTime d;
+  if (!dyadic_time(t, &d))
+    throw std::domain_error("exactccd: polynomial sign at a time outside [0, 1]");
+  return d;
+}
+
+}  // namespace
+
+std::uint64_t gmp_polynomial_steps_in_this_thread() noexcept { return g_gmp_steps; }
+void count_gmp_polynomial_step() noexcept { ++g_gmp_steps; }
+
+SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count) {
+  ++g_gmp_steps;
+  SmallPolynomial p;
+  long bits = 0;
+  for (int i = 0; i < count; ++i) {
+    bits = std::max(bits, bit_length(c[i]));
+    if (sgn(c[i]) != 0) p.degree_ = i;
+  }
+  p.bits_ = bits;
+  if (fixed_limbs_for(bits) == 0) {
+    p.in_gmp_ = true;
+    for (int i = 0; i < 4; ++i) p.gmp_[i] = i < count ? c[i] : mpz_class(0);
+    return p;
+  }
+  for (int i = 0; i < 4; ++i)
+    p.fixed_[i] = i < count ? fixed_from_mpz<kMaxFixedLimbs>(c[i]) : Stored(0);
+  return p;
+}
+
+std::array<mpz_class, 4> SmallPolynomial::mpz_coefficients() const {
+  if (in_gmp_) return gmp_;
+  return {to_mpz(fixed_[0]), to_mpz(fixed_[1]), to_mpz(fixed_[2]), to_mpz(fixed_[3])};
+}
+
+int SmallPolynomial::sign_at(double t, Approximation* value) const {
+  if (degree_ < 0) {
+    if (value) *value = {};
+    return 0;
+  }
+  const DyadicTime d = unit_time(t);
+  const int limbs =
+      in_gmp_ ? 0 : fixed_limbs_for(polynomial_value_bits(bits_, degree_, d.exponent));
+  const long scale = static_cast<long>(degree_) * d.exponent;  // p(t) = 2^(-d k) r
+  if (limbs == 0) {
+    ++g_gmp_steps;
+    const std::array<mpz_class, 4> m = mpz_coefficients();
+    const mpz_class c[4] = {m[0], m[1], m[2], m[3]};
+    const mpz_class r = scaled_value(c, degree_, d.numerator, d.exponent);
+    if (value) {
+      *value = approximate(r);
+      value->exponent -= scale;
+    }
+    return sgn(r);
+  }
+  return with_limbs(limbs, [&](auto n) {
+    constexpr int N = decltype(n)::value;
+    const FixedInt<N> c[4] = {fixed_[0].resized<N>(), fixed_[1].resized<N>(),
+                              fixed_[2].resized<N>(), fixed_[3].resized<N>()};
+    const FixedInt<N> r = scaled_value(c, degree_, d.numerator, d.exponent);
+    if (value) {
+      *value = approximate(r);
+      value->exponent -= scale;
+    }
+    return r.sign();
+  });
+}
+
+void SmallPolynomial::approximate_coefficients(Approximation (&c)[4]) const {
+  for (int i = 0; i < 4; ++i) c[i] = in_gmp_ ? approximate(gmp_[i]) : approximate(fixed_[i]);
+}
+
+int SmallPolynomial::bernstein_signs(double a, double b, int (&signs)[4]) const {
+  if (!(0 <= a && a < b && b <= 1))
+    throw std::domain_error("exactccd: Bernstein coefficients need 0 <= a < b <= 1");
+  if (degree_ < 0) {
+    signs[0] = 0;
+    return 1;
+  }
+  const Dyadic da = dyadic(a), db = dyadic(b);
+  const int K = std::max({0, -da.exponent, -db.exponent});
+  const auto shift_a = static_cast<unsigned>(K + da.exponent);
+  const auto shift_b = static_cast<unsigned>(K + db.exponent);
+  const int limbs =
+      in_gmp_ ? 0 : fixed_limbs_for(bernstein_bits(bits_, degree_, K));
+  if (limbs == 0) {
+    ++g_gmp_steps;
+    const std::array<mpz_class, 4> m = mpz_coefficients();
+    const mpz_class c[4] = {m[0], m[1], m[2], m[3]};
+    const mpz_class A = da.mantissa == 0 ? mpz_class(0) : scaled_integer<mpz_class>(da.mantissa, shift_a);
+    const mpz_class B = scaled_integer<mpz_class>(db.mantissa, shift_b);
+    const mpz_class H = B - A;
+    bernstein_signs_of(c, degree_, A, H, static_cast<unsigned>(K), signs);
+    return degree_ + 1;
+  }
+  with_limbs(limbs, [&](auto n) {
+    constexpr int N = decltype(n)::value;
+    const FixedInt<N> c[4] = {fixed_[0].resized<N>(), fixed_[1].resized<N>(),
+                              fixed_[2].resized<N>(), fixed_[3].resized<N>()};
+    const FixedInt<N> A =
+        da.mantissa == 0 ? FixedInt<N>(0) : FixedInt<N>::scaled(da.mantissa, shift_a);
+    const FixedInt<N> H = FixedInt<N>::scaled(db.mantissa, shift_b) - A;
+    bernstein_signs_of(c, degree_, A, H, static_cast<unsigned>(K), signs);
+  });
+  return degree_ + 1;
+}
+
+// ---- GMP steps ---------------------------------------------------------------------------------
+
+namespace {
+
+void set_degree(MpzPolynomial& p) {
+  p.degree = -1;
+  for (int i = 3; i >= 0; --i)
+    if (sgn(p.c[i]) != 0) {
+      p.degree = i;
+      return;
+    }
+}
+
+/// Content 1 and a positive leading coefficient.
+void make_primitive(MpzPolynomial& p) {
+  if (p.degree < 0) return;
+  mpz_class g = 0;
+  for (int i = 0; i <= p.degree; ++i) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), p.c[i].get_mpz_t());
+  if (sgn(p.c[p.degree]) < 0) g = -g;
+  for (int i = 0; i <= p.degree; ++i) mpz_divexact(p.c[i].get_mpz_t(), p.c[i].get_mpz_t(), g.get_mpz_t());
+}
+
+/// The pseudo-remainder of a by b (deg b >= 0): lc(b)^e a - Q b of degree < deg b.
+MpzPolynomial pseudo_remainder(MpzPolynomial r, const MpzPolynomial& b) {
+  while (r.degree >= b.degree) {
+    const int shift = r.degree - b.degree;
+    const mpz_class lead = r.c[r.degree];
+    for (int i = 0; i <= r.degree; ++i) r.c[i] *= b.c[b.degree];
+    for (int i = 0; i <= b.degree; ++i) r.c[i + shift] -= lead * b.c[i];
+    set_degree(r);  // the leading term cancelled exactly
+  }
+  return r;
+}
+
+}  // namespace
+
+MpzPolynomial to_mpz_polynomial(const SmallPolynomial& p) {
+  ++g_gmp_steps;
+  MpzPolynomial m;
+  m.c = p.mpz_coefficients();
+  set_degree(m);
+  return m;
+}
+
+SmallPolynomial to_small_polynomial(const MpzPolynomial& p) {
+  return SmallPolynomial::from_mpz(p.c.data(), 4);
+}
+
+MpzPolynomial polynomial_gcd(MpzPolynomial a, MpzPolynomial b) {
+  if (a.degree < b.degree) std::swap(a, b);
+  while (b.degree >= 0) {
+    MpzPolynomial r = pseudo_remainder(a, b);
+    make_primitive(r);
+    a = std::move(b);
+    b = std::move(r);
+  }
+  make_primitive(a);
+  return a;
+}
+
+int sign_at_dyadic(const MpzPolynomial& p, const mpz_class& T, unsigned k) {
+  ++g_gmp_steps;
+  if (p.degree < 0) return 0;
+  const mpz_class c[4] = {p.c[0], p.c[1], p.c[2], p.c[3]};
+  return sgn(scaled_value(c, p.degree, T, k));
+}
+
+int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz_class& B,
+                           unsigned K, int (&signs)[4]) {
+  if (p.degree < 0) {
+    signs[0] = 0;
+    return 1;
+  }
+  const mpz_class c[4] = {p.c[0], p.c[1], p.c[2], p.c[3]};
+  const mpz_class H = B - A;
+  bernstein_signs_of(c, p.degree, A, H, K, signs);
+  return p.degree + 1;
+}
+
+SmallPolynomial square_free_part(const SmallPolynomial& p) {
+  const MpzPolynomial a = to_mpz_polynomial(p);
+  if (a.degree < 1) throw std::invalid_argument("exactccd: square-free part of a constant");
+  MpzPolynomial derivative;
+  for (int i = 1; i <= a.degree; ++i) derivative.c[i - 1] = a.c[i] * i;
+  set_degree(derivative);
+  const MpzPolynomial h = polynomial_gcd(a, derivative);
+  if (h.degree < 1) return p;
+  // a / h: h is primitive and divides a over the rationals, so the quotient has integer
+  // coefficients (Gauss's lemma) and every division below is exact.
+  MpzPolynomial r = a, q;
+  for (int k = a.degree - h.degree; k >= 0; --k) {
+    mpz_divexact(q.c[k].get_mpz_t(), r.c[k + h.degree].get_mpz_t(), h.c[h.degree].get_mpz_t());
+    for (int i = 0; i <= h.degree; ++i) r.c[i + k] -= q.c[k] * h.c[i];
+  }
+  set_degree(q);
+  return to_small_polynomial(q);
+}
+
+}  // namespace exactccd::exact

@@ -1,0 +1,108 @@
+// Integer polynomials of degree at most 3 in the time t, with exact signs at double times in
+// [0, 1] and exact signs of their Bernstein coefficients on intervals with double ends, each
+// computed in the smallest FixedInt its bit-length bound admits (GMP beyond). The fast exact
+// stage (exact/algebraic_at_doubles.hpp) brackets roots with them; the rare algebraic steps
+// (common factors, square-free parts) run in GMP.
+// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
+#pragma once
+
+#include <gmpxx.h>
+
+#include <array>
+#include <cstdint>
+
+#include "exact/fixed_int.hpp"
+#include "exact/guided_bisection.hpp"
+#include "exact/integer_arithmetic.hpp"
+#include "exact/integer_bounds.hpp"
+
+namespace exactccd::exact {
+
+/// Bits of 2^(d k) p(T 2^-k) for coefficients below 2^b, degree d, 0 <= T <= 2^k.
+constexpr long polynomial_value_bits(long coefficient_bits, int degree, long time_exponent) {
+  return coefficient_bits + degree * time_exponent + 2;
+}
+
+/// Bits of the scaled Bernstein coefficients (lcm of the binomials) x 2^(d K) on [a, b],
+/// a = A 2^-K, b = B 2^-K, 0 <= A < B <= 2^K.
+constexpr long bernstein_bits(long coefficient_bits, int degree, long time_exponent) {
+  return coefficient_bits + degree * time_exponent + 8;
+}
+
+/// The integer polynomial sum c[i] t^i, degree <= 3.
+class SmallPolynomial final : public CubicAtDoubles {
+ public:
+  SmallPolynomial() = default;  ///< the zero polynomial
+
+  /// From `count` <= 4 coefficients below 2^bits in magnitude (a proven bound).
+  template <int N>
+  static SmallPolynomial from_fixed(const FixedInt<N>* c, int count, long bits);
+  static SmallPolynomial from_mpz(const mpz_class* c, int count);
+
+  int degree() const { return degree_; }  ///< -1 for the zero polynomial
+  bool is_zero() const { return degree_ < 0; }
+  long bits() const { return bits_; }
+
+  /// The exact sign of p(t) for a double t in [0, 1].
+  int sign_at(double t) const { return sign_at(t, nullptr); }
+
+  /// The signs of p's Bernstein coefficients of its own degree on [a, b] (doubles,
+  /// 0 <= a < b <= 1); returns how many (degree + 1). Their sign variations bound the roots in
+  /// (a, b) (Descartes); all of one strict sign: p has that sign on [a, b].
+  int bernstein_signs(double a, double b, int (&signs)[4]) const;
+
+  std::array<mpz_class, 4> mpz_coefficients() const;
+
+  // CubicAtDoubles (guided_bisection): exact sign at a double t in [0, 1], rounded values.
+  int sign_at(double t, Approximation* value) const override;
+  void approximate_coefficients(Approximation (&c)[4]) const override;
+
+ private:
+  using Stored = FixedInt<kMaxFixedLimbs>;
+  int degree_ = -1;
+  long bits_ = 0;
+  bool in_gmp_ = false;  // coefficients in gmp_ (beyond the widest FixedInt)
+  Stored fixed_[4] = {Stored(Stored::Uninitialized{}), Stored(Stored::Uninitialized{}),
+                      Stored(Stored::Uninitialized{}), Stored(Stored::Uninitialized{})};
+  std::array<mpz_class, 4> gmp_;
+};
+
+template <int N>
+SmallPolynomial SmallPolynomial::from_fixed(const FixedInt<N>* c, int count, long bits) {
+  static_assert(N <= kMaxFixedLimbs, "wider than the stored coefficients");
+  SmallPolynomial p;
+  p.bits_ = bits;
+  for (int i = 0; i < 4; ++i) {
+    p.fixed_[i] = i < count ? c[i].template resized<kMaxFixedLimbs>() : Stored(0);
+    if (i < count && c[i].sign() != 0) p.degree_ = i;
+  }
+  return p;
+}
+
+// ---- GMP steps of the exact stage (rare: only where doubles cannot decide) -------------------
+
+/// How many GMP steps (any function below, or an evaluation beyond the fixed widths) the
+/// calling thread ran: tells tests which decisions stayed in fixed-size integers.
+std::uint64_t gmp_polynomial_steps_in_this_thread() noexcept;
+void count_gmp_polynomial_step() noexcept;
+
+struct MpzPolynomial {
+  std::array<mpz_class, 4> c;
+  int degree = -1;
+};
+
+MpzPolynomial to_mpz_polynomial(const SmallPolynomial& p);
+/// The primitive greatest common divisor (content 1, positive leading coefficient); the zero
+/// polynomial when both are zero.
+MpzPolynomial polynomial_gcd(MpzPolynomial a, MpzPolynomial b);
+/// p divided by its gcd with p' (same roots, each simple); p of degree >= 1.
+SmallPolynomial square_free_part(const SmallPolynomial& p);
+SmallPolynomial to_small_polynomial(const MpzPolynomial& p);
+
+/// Beyond the doubles (GMP): the exact sign of p at T 2^-k, and the signs of p's Bernstein
+/// coefficients on [A 2^-K, B 2^-K] (0 <= A < B); the latter returns how many.
+int sign_at_dyadic(const MpzPolynomial& p, const mpz_class& T, unsigned k);
+int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz_class& B,
+                           unsigned K, int (&signs)[4]);
+
+}  // namespace exactccd::exact

@@ -1,0 +1,242 @@
+// The integer polynomials of the exact stage at double brackets (exact/small_polynomial.hpp)
+// and their bracketed roots (exact/bracketed_root.hpp), against rational arithmetic written
+// here independently (GMP mpq: direct evaluation, Taylor shift by composition, the Bernstein
+// coefficients from their definition, roots known from the construction).
+// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
+// PROOF: proofs/exact_ccd.md#descartes-at-doubles
+// PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "core/predicates/fp_environment.hpp"
+#include "exact/bracketed_root.hpp"
+#include "exact/small_polynomial.hpp"
+#include "test_scale.hpp"
+
+namespace exactccd::exact {
+namespace {
+
+using Q = mpq_class;
+
+struct RationalPolynomial {
+  std::vector<Q> c;  // c[i] of t^i
+  Q at(const Q& t) const {
+    Q r = 0;
+    for (std::size_t i = c.size(); i-- > 0;) r = r * t + c[i];
+    return r;
+  }
+};
+
+RationalPolynomial rational(const std::array<mpz_class, 4>& c, int degree) {
+  RationalPolynomial p;
+  for (int i = 0; i <= degree; ++i) p.c.emplace_back(c[static_cast<std::size_t>(i)]);
+  return p;
+}
+
+/// A random integer of exactly `bits` bits (or 0), random sign.
+mpz_class random_integer(std::mt19937_64& rng, int bits) {
+  if (bits == 0) return 0;
+  mpz_class z = 1;
+  for (int b = 1; b < bits; ++b) z = 2 * z + static_cast<int>(rng() & 1);
+  return (rng() & 1) ? mpz_class(-z) : z;
+}
+
+/// A double in [0, 1]: 0, 1, full-precision values of every binade down to subnormals, and
+/// short dyadics.
+double random_time(std::mt19937_64& rng) {
+  switch (rng() % 6) {
+    case 0: return (rng() & 1) ? 0.0 : 1.0;
+    case 1: return std::ldexp(static_cast<double>(rng() >> 11), -53);
+    case 2: {
+      const int e = -static_cast<int>(rng() % 1074);
+      return std::ldexp(1.0 + static_cast<double>(rng() >> 12) * 0x1p-52, e - 1);
+    }
+    case 3: return static_cast<double>(rng() % 1025) / 1024.0;
+    case 4: return std::ldexp(static_cast<double>(rng() >> 11), -53 - static_cast<int>(rng() % 200));
+    default: return static_cast<double>(rng() >> 11) * 0x1p-53;
+  }
+}
+
+std::array<mpz_class, 4> random_coefficients(std::mt19937_64& rng, int degree, int bits) {
+  std::array<mpz_class, 4> c;
+  for (int i = 0; i <= degree; ++i)
+    c[static_cast<std::size_t>(i)] = random_integer(rng, static_cast<int>(rng() % (bits + 1)));
+  if (degree >= 0 && c[static_cast<std::size_t>(degree)] == 0) c[static_cast<std::size_t>(degree)] = 1;
+  return c;
+}
+
+/// The Bernstein coefficients of p on [a, b] from the definition: p(a + (b - a) s) =
+/// sum_j q_j s^j by composition, then beta_j = sum_{i<=j} C(j,i)/C(d,i) q_i.
+std::vector<Q> bernstein(const RationalPolynomial& p, const Q& a, const Q& b) {
+  const int d = static_cast<int>(p.c.size()) - 1;
+  std::vector<Q> q(static_cast<std::size_t>(d + 1), Q(0));
+  std::vector<Q> power = {Q(1)};  // (a + h s)^i
+  const Q h = b - a;
+  for (int i = 0; i <= d; ++i) {
+    for (std::size_t j = 0; j < power.size(); ++j) q[j] += p.c[static_cast<std::size_t>(i)] * power[j];
+    std::vector<Q> next(power.size() + 1, Q(0));
+    for (std::size_t j = 0; j < power.size(); ++j) {
+      next[j] += power[j] * a;
+      next[j + 1] += power[j] * h;
+    }
+    power = next;
+  }
+  auto binom = [](int n, int k) {
+    long r = 1;
+    for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
+    return r;
+  };
+  std::vector<Q> beta(static_cast<std::size_t>(d + 1), Q(0));
+  for (int j = 0; j <= d; ++j)
+    for (int i = 0; i <= j; ++i)
+      beta[static_cast<std::size_t>(j)] += Q(binom(j, i), binom(d, i)) * q[static_cast<std::size_t>(i)];
+  return beta;
+}
+
+class SmallPolynomialTest : public ::testing::Test {
+ protected:
+  predicates::FpEnvironmentGuard nearest{predicates::Rounding::to_nearest};
+};
+
+TEST_F(SmallPolynomialTest, ValuesMatchRationalEvaluation) {
+  std::mt19937_64 rng(0x5a11);
+  const int n = static_cast<int>(test::scaled_count(20000));
+  for (int trial = 0; trial < n; ++trial) {
+    const int degree = static_cast<int>(rng() % 4);
+    const int bits = trial % 3 == 0 ? 1100 : (trial % 3 == 1 ? 200 : 60);
+    const auto c = random_coefficients(rng, degree, bits);
+    const SmallPolynomial p = SmallPolynomial::from_mpz(c.data(), 4);
+    const double t = random_time(rng);
+    ASSERT_EQ(p.sign_at(t), sgn(rational(c, degree).at(Q(t)))) << "t = " << t;
+  }
+}
+
+TEST_F(SmallPolynomialTest, BernsteinSignsMatchRationalBernstein) {
+  std::mt19937_64 rng(0xbe25);
+  const int n = static_cast<int>(test::scaled_count(20000));
+  for (int trial = 0; trial < n; ++trial) {
+    const int degree = static_cast<int>(rng() % 4);
+    const int bits = trial % 3 == 0 ? 1000 : (trial % 3 == 1 ? 150 : 40);
+    const auto c = random_coefficients(rng, degree, bits);
+    const SmallPolynomial p = SmallPolynomial::from_mpz(c.data(), 4);
+    double a = random_time(rng), b = random_time(rng);
+    if (a == b) continue;
+    if (a > b) std::swap(a, b);
+    int signs[4];
+    const int count = p.bernstein_signs(a, b, signs);
+    const std::vector<Q> beta = bernstein(rational(c, degree), Q(a), Q(b));
+    ASSERT_EQ(count, static_cast<int>(beta.size()));
+    for (int j = 0; j < count; ++j)
+      ASSERT_EQ(signs[j], sgn(beta[static_cast<std::size_t>(j)]))
+          << "degree " << degree << " [" << a << ", " << b << "] j = " << j;
+  }
+}
+
+/// Products of (den t - num) for rational roots, times a positive constant.
+SmallPolynomial with_roots(const std::vector<Q>& roots, long scale = 1) {
+  std::vector<mpz_class> c = {mpz_class(scale)};
+  for (const Q& r : roots) {
+    std::vector<mpz_class> next(c.size() + 1, mpz_class(0));
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      next[i + 1] += c[i] * r.get_den();
+      next[i] -= c[i] * r.get_num();
+    }
+    c = next;
+  }
+  return SmallPolynomial::from_mpz(c.data(), static_cast<int>(c.size()));
+}
+
+Q pow2(int e) { return e >= 0 ? Q(mpz_class(1) << e) : Q(1, mpz_class(1) << -e); }
+
+TEST_F(SmallPolynomialTest, RootIteratorFindsEveryRootInOrder) {
+  const Q third(1, 3), tenth(1, 10);
+  const Q near(Q(3, 10) + pow2(-70));  // within one ulp of 3/10, distinct
+  struct Case {
+    std::vector<Q> roots;  // with multiplicity
+    double t_max;
+  };
+  const std::vector<Case> cases = {
+      {{third}, 1.0},
+      {{Q(0), Q(1, 2), Q(1)}, 1.0},          // ends and a split point
+      {{third, third}, 1.0},                 // double root, not a double
+      {{third, third, third}, 1.0},          // triple root
+      {{Q(3, 10), near}, 1.0},               // two roots within one ulp
+      {{Q(3, 10), near, Q(3, 10) - pow2(-80)}, 1.0},
+      {{Q(1, 4), Q(1, 4), Q(7, 8)}, 1.0},    // double root at a double
+      {{tenth, Q(2), Q(-1)}, 1.0},           // roots outside [0, 1]
+      {{third, Q(2, 3)}, 0.5},               // t_max cuts the second
+      {{Q(1, 2)}, 0.5},                      // root at t_max
+      {{pow2(-1000), pow2(-900)}, 1.0},      // tiny roots
+  };
+  for (const Case& c : cases) {
+    const SmallPolynomial p = with_roots(c.roots);
+    std::vector<Q> expected;
+    for (const Q& r : c.roots)
+      if (r >= 0 && r <= Q(c.t_max) &&
+          std::find(expected.begin(), expected.end(), r) == expected.end())
+        expected.push_back(r);
+    std::sort(expected.begin(), expected.end());
+    SmallPolynomial square_free;
+    RootIterator it(p, c.t_max, &square_free);
+    std::vector<BracketedRoot> found;
+    while (auto r = it.next()) found.push_back(*r);
+    ASSERT_EQ(found.size(), expected.size()) << "case with " << c.roots.size() << " roots";
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      const Q& r = expected[i];
+      if (found[i].is_exact()) {
+        EXPECT_EQ(Q(found[i].lo()), r);
+      } else {
+        EXPECT_LT(Q(found[i].lo()), r);
+        EXPECT_GT(Q(found[i].hi()), r);
+      }
+    }
+  }
+}
+
+TEST_F(SmallPolynomialTest, SignAtRootMatchesRationalPath) {
+  const Q third(1, 3);
+  const SmallPolynomial p = with_roots({third, Q(3, 4), Q(-5)});
+  struct Case {
+    std::vector<Q> g_roots;
+    long scale;
+  };
+  const std::vector<Case> cases = {
+      {{third}, 1},                       // common factor: g(r) = 0
+      {{third, Q(1, 7)}, -3},             // common factor, other root
+      {{third + pow2(-70)}, 1},           // g's root within one ulp, above
+      {{third - pow2(-90), Q(2)}, 1},     // below, quadratic
+      {{third + pow2(-200), third - pow2(-200)}, -1},
+      {{Q(1, 2)}, 2},                     // far
+      {{}, -7},                           // constant
+  };
+  for (const Case& c : cases) {
+    const SmallPolynomial g = with_roots(c.g_roots, c.scale);
+    Q expected = c.scale;
+    for (const Q& r : c.g_roots) expected *= third * r.get_den() - r.get_num();
+    SmallPolynomial square_free;
+    RootIterator it(p, 1.0, &square_free);
+    std::optional<BracketedRoot> r = it.next();
+    ASSERT_TRUE(r.has_value());
+    ASSERT_FALSE(r->is_exact());
+    EXPECT_EQ(r->sign_of(g), sgn(expected)) << c.g_roots.size() << " roots, scale " << c.scale;
+  }
+}
+
+TEST_F(SmallPolynomialTest, GcdAndSquareFreePart) {
+  const Q third(1, 3);
+  const SmallPolynomial p = with_roots({third, third, Q(1, 2)}, 6);
+  const SmallPolynomial s = square_free_part(p);
+  EXPECT_EQ(s.degree(), 2);
+  EXPECT_EQ(s.sign_at(0.5), 0);
+  const MpzPolynomial h =
+      polynomial_gcd(to_mpz_polynomial(p), to_mpz_polynomial(with_roots({third, Q(1, 5)})));
+  ASSERT_EQ(h.degree, 1);
+  EXPECT_EQ(h.c[1] * third + h.c[0], 0);  // 3t - 1, primitive
+  EXPECT_GT(h.c[1], 0);
+}
+
+}  // namespace
+}  // namespace exactccd::exact
