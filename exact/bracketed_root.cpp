@@ -25,17 +25,6 @@ DyadicBracket dyadic_bracket(double lo, double hi, int sign_lo) {
   return d;
 }
 
-/// Halves d: A, B and K grow by one bit, the middle's sign picks the half.
-void halve(const MpzPolynomial& p, DyadicBracket& d) {
-  d.A <<= 1;
-  d.B <<= 1;
-  ++d.K;
-  const mpz_class M = (d.A + d.B) >> 1;  // A + B is even: both were doubled
-  const int s = sign_at_dyadic(p, M, d.K);
-  if (s == 0) d.A = d.B = M;
-  else (s == d.sign_lo ? d.A : d.B) = M;
-}
-
 /// Sign variations of s[0..n), zeros skipped (Descartes).
 int variations(const int (&s)[4], int n) {
   int v = 0, last = 0;
@@ -53,27 +42,16 @@ bool one_strict_sign(const int (&s)[4], int n) {
   return same;
 }
 
-/// Beyond this many halvings past the doubles a query goes to the rational path; separations
-/// that small were never seen (the bound only keeps a pathological input from running long).
+/// Beyond this many dyadic brackets while isolating roots closer than one ulp a query goes to
+/// the rational path (the bound only keeps a pathological input from running long).
 constexpr int kMaxDyadicSteps = 4096;
 
-/// The exact sign of g at the root of p in d (p's roots in d simple; d's root unique).
-/// g(r) = 0 iff r is a root of h = gcd(p, g): h divides p, whose only root in d is r, simple,
-/// so h(r) = 0 iff h changes sign on d. Otherwise halve until g's Bernstein coefficients share
-/// one sign, which happens since g(r) != 0.
+/// The exact sign of g at the root of p in d (the only root of p there, simple; p non-zero at
+/// the ends): exact at an exact root, else the Sturm-Tarski query.
 /// PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
-int sign_in_dyadic_bracket(const MpzPolynomial& p, const MpzPolynomial& g, DyadicBracket d) {
+int sign_in_dyadic_bracket(const MpzPolynomial& p, const MpzPolynomial& g, const DyadicBracket& d) {
   if (d.is_exact()) return sign_at_dyadic(g, d.A, d.K);
-  const MpzPolynomial h = polynomial_gcd(p, g);
-  if (h.degree >= 1 && sign_at_dyadic(h, d.A, d.K) * sign_at_dyadic(h, d.B, d.K) < 0) return 0;
-  for (int step = 0; step < kMaxDyadicSteps; ++step) {
-    int s[4];
-    const int n = bernstein_signs_dyadic(g, d.A, d.B, d.K, s);
-    if (one_strict_sign(s, n)) return s[0];
-    halve(p, d);
-    if (d.is_exact()) return sign_at_dyadic(g, d.A, d.K);
-  }
-  throw UnresolvedAtDoubles{};
+  return tarski_sign_at_root(p, g, d.A, d.B, d.K);
 }
 
 }  // namespace

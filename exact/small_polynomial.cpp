@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "exact/fixed_width_dispatch.hpp"
+#include "core/predicates/fp_environment.hpp"
 #include "exact/integer_cubic.hpp"
 
 namespace exactccd::exact {
@@ -124,11 +125,96 @@ SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count) {
   if (fixed_limbs_for(bits) == 0) {
     p.in_gmp_ = true;
     for (int i = 0; i < 4; ++i) p.gmp_[i] = i < count ? c[i] : mpz_class(0);
-    return p;
+  } else {
+    for (int i = 0; i < 4; ++i)
+      p.fixed_[i] = i < count ? fixed_from_mpz<kMaxFixedLimbs>(c[i]) : Stored(0);
   }
-  for (int i = 0; i < 4; ++i)
-    p.fixed_[i] = i < count ? fixed_from_mpz<kMaxFixedLimbs>(c[i]) : Stored(0);
+  if (bits > kWideFilterBits) p.set_wide_enclosure();
   return p;
+}
+
+// ---- the wide-range interval filter ------------------------------------------------------------
+// PROOF: proofs/exact_ccd.md#wide-interval-filter
+
+void SmallPolynomial::set_wide_enclosure() {
+#if EXACTCCD_WIDE_INTERVAL
+  const std::array<mpz_class, 4> c = mpz_coefficients();
+  for (int i = 0; i < 4; ++i) wide_c_[i] = enclosure_of(c[i]);
+  wide_ = true;
+#endif
+}
+
+int SmallPolynomial::filtered_sign_at(double t, Approximation* value) const {
+#if EXACTCCD_WIDE_INTERVAL
+  if (!wide_ || degree_ < 0) return 0;
+  // The bounds leave the guard's scope through volatile stores, which stay ordered before the
+  // rounding mode is restored.
+  volatile long double lo, hi;
+  {
+    const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
+    const WideInterval x{t, t};
+    WideInterval r = wide_c_[degree_];
+    for (int i = degree_ - 1; i >= 0; --i) r = r * x + wide_c_[i];
+    lo = r.lo;
+    hi = r.hi;
+  }
+  const int s = certain_sign({lo, hi});
+  if (s != 0 && value) {  // guidance only: the upper bound's leading bits
+    int e = 0;
+    value->mantissa = static_cast<GuideReal>(std::frexp(static_cast<long double>(hi), &e));
+    value->exponent = e;
+  }
+  return s;
+#else
+  (void)t, (void)value;
+  return 0;
+#endif
+}
+
+bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[4]) const {
+#if EXACTCCD_WIDE_INTERVAL
+  if (!wide_ || degree_ < 0) return false;
+  volatile long double lo[4], hi[4];  // leave the guard's scope as in filtered_sign_at
+  {
+    const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
+    // The Taylor shift q(s) = p(a + h s), h = b - a enclosed, by Horner's rule over polynomials
+    // in s; then the Bernstein coefficients times lcm C(d, i), as in the exact evaluation.
+    const WideInterval A{a, a};
+    const WideInterval H{-(static_cast<long double>(a) - b), static_cast<long double>(b) - a};
+    const int d = degree_;
+    WideInterval q[4] = {wide_c_[d], {0, 0}, {0, 0}, {0, 0}};
+    for (int i = d - 1; i >= 0; --i) {
+      const int deg = d - 1 - i;
+      q[deg + 1] = q[deg] * H;
+      for (int j = deg; j >= 1; --j) q[j] = q[j] * A + q[j - 1] * H;
+      q[0] = q[0] * A + wide_c_[i];
+    }
+    const WideInterval two{2, 2}, three{3, 3};
+    WideInterval beta[4] = {};
+    switch (d) {
+      case 0: beta[0] = q[0]; break;
+      case 1: beta[0] = q[0], beta[1] = q[0] + q[1]; break;
+      case 2: beta[0] = q[0], beta[1] = two * q[0] + q[1], beta[2] = q[0] + q[1] + q[2]; break;
+      default:
+        beta[0] = q[0];
+        beta[1] = three * q[0] + q[1];
+        beta[2] = three * q[0] + two * q[1] + q[2];
+        beta[3] = q[0] + q[1] + q[2] + q[3];
+    }
+    for (int j = 0; j <= d; ++j) {
+      lo[j] = beta[j].lo;
+      hi[j] = beta[j].hi;
+    }
+  }
+  for (int j = 0; j <= degree_; ++j) {
+    signs[j] = certain_sign({lo[j], hi[j]});
+    if (signs[j] == 0) return false;
+  }
+  return true;
+#else
+  (void)a, (void)b, (void)signs;
+  return false;
+#endif
 }
 
 std::array<mpz_class, 4> SmallPolynomial::mpz_coefficients() const {
@@ -142,6 +228,7 @@ int SmallPolynomial::sign_at(double t, Approximation* value) const {
     return 0;
   }
   const DyadicTime d = unit_time(t);
+  if (const int s = filtered_sign_at(t, value)) return s;
   const int limbs =
       in_gmp_ ? 0 : fixed_limbs_for(polynomial_value_bits(bits_, degree_, d.exponent));
   const long scale = static_cast<long>(degree_) * d.exponent;  // p(t) = 2^(-d k) r
@@ -180,6 +267,7 @@ int SmallPolynomial::bernstein_signs(double a, double b, int (&signs)[4]) const 
     signs[0] = 0;
     return 1;
   }
+  if (filtered_bernstein_signs(a, b, signs)) return degree_ + 1;
   const Dyadic da = dyadic(a), db = dyadic(b);
   const int K = std::max({0, -da.exponent, -db.exponent});
   const auto shift_a = static_cast<unsigned>(K + da.exponent);
@@ -285,6 +373,102 @@ int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz
   const mpz_class H = B - A;
   bernstein_signs_of(c, p.degree, A, H, K, signs);
   return p.degree + 1;
+}
+
+namespace {
+
+/// Integer polynomials of degree <= 5 (p' g before its reduction modulo p).
+struct WidePolynomial {
+  mpz_class c[6];
+  int degree = -1;
+  void set_degree() {
+    degree = -1;
+    for (int i = 5; i >= 0; --i)
+      if (sgn(c[i]) != 0) {
+        degree = i;
+        return;
+      }
+  }
+};
+
+WidePolynomial widen(const MpzPolynomial& p) {
+  WidePolynomial w;
+  for (int i = 0; i < 4; ++i) w.c[i] = p.c[static_cast<std::size_t>(i)];
+  w.set_degree();
+  return w;
+}
+
+/// A positive multiple of -(a mod b) (deg b >= 0), divided by its content: the next element of
+/// a signed remainder sequence up to a positive factor, which changes no sign.
+WidePolynomial negated_remainder(WidePolynomial r, const WidePolynomial& b) {
+  const int sign_lead = sgn(b.c[b.degree]);
+  int multiplications = 0;
+  while (r.degree >= b.degree) {
+    const int shift = r.degree - b.degree;
+    const mpz_class lead = r.c[r.degree];
+    for (int i = 0; i <= r.degree; ++i) r.c[i] *= b.c[b.degree];
+    for (int i = 0; i <= b.degree; ++i) r.c[i + shift] -= lead * b.c[i];
+    r.set_degree();
+    ++multiplications;
+  }
+  // r = lc(b)^m (a mod b); -(a mod b) has the sign of -sign(lc(b))^m r.
+  const bool negate = !(sign_lead < 0 && multiplications % 2 == 1);
+  mpz_class g = 0;
+  for (int i = 0; i <= r.degree; ++i) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), r.c[i].get_mpz_t());
+  for (int i = 0; i <= r.degree; ++i) {
+    mpz_divexact(r.c[i].get_mpz_t(), r.c[i].get_mpz_t(), g.get_mpz_t());
+    if (negate) r.c[i] = -r.c[i];
+  }
+  return r;
+}
+
+int sign_at_dyadic(const WidePolynomial& p, const mpz_class& T, unsigned k) {
+  if (p.degree < 0) return 0;
+  mpz_class r = p.c[p.degree];
+  for (int i = p.degree - 1; i >= 0; --i) {
+    r *= T;
+    r += p.c[i] << (k * static_cast<unsigned>(p.degree - i));
+  }
+  return sgn(r);
+}
+
+}  // namespace
+
+int tarski_sign_at_root(const MpzPolynomial& p, const MpzPolynomial& g, const mpz_class& A,
+                        const mpz_class& B, unsigned K) {
+  ++g_gmp_steps;
+  if (g.degree < 0) return 0;
+  // S0 = p, S1 = positive multiple of (p' g mod p), S_{k+1} = -(S_{k-1} mod S_k) up to a
+  // positive factor; at most five elements (degrees strictly decrease from 3).
+  WidePolynomial s[6];
+  s[0] = widen(p);
+  WidePolynomial product;
+  for (int i = 1; i <= p.degree; ++i)
+    for (int j = 0; j <= g.degree; ++j)
+      product.c[i - 1 + j] += p.c[static_cast<std::size_t>(i)] * i * g.c[static_cast<std::size_t>(j)];
+  product.set_degree();
+  // p' g mod p, as a positive multiple: -(negated remainder) would flip it; negate back.
+  s[1] = negated_remainder(product, s[0]);
+  for (int i = 0; i <= s[1].degree; ++i) s[1].c[i] = -s[1].c[i];
+  int count = 2;
+  while (count < 6 && s[count - 1].degree >= 0) {
+    if (s[count - 1].degree == 0) break;
+    s[count] = negated_remainder(s[count - 2], s[count - 1]);
+    if (s[count].degree < 0) break;
+    ++count;
+  }
+  if (s[1].degree < 0) count = 1;  // p' g is a multiple of p... impossible for square-free p
+  auto variations = [&](const mpz_class& T) {
+    int v = 0, last = 0;
+    for (int i = 0; i < count; ++i) {
+      const int si = sign_at_dyadic(s[i], T, K);
+      if (si == 0) continue;
+      if (last != 0 && si != last) ++v;
+      last = si;
+    }
+    return v;
+  };
+  return variations(A) - variations(B);
 }
 
 SmallPolynomial square_free_part(const SmallPolynomial& p) {

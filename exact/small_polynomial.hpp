@@ -15,6 +15,7 @@
 #include "exact/guided_bisection.hpp"
 #include "exact/integer_arithmetic.hpp"
 #include "exact/integer_bounds.hpp"
+#include "exact/wide_interval.hpp"
 
 namespace exactccd::exact {
 
@@ -28,6 +29,10 @@ constexpr long polynomial_value_bits(long coefficient_bits, int degree, long tim
 constexpr long bernstein_bits(long coefficient_bits, int degree, long time_exponent) {
   return coefficient_bits + degree * time_exponent + 8;
 }
+
+/// Coefficients wider than this get the wide-range interval filter (exact/wide_interval.hpp):
+/// below it the fixed-size evaluations are already cheap.
+constexpr long kWideFilterBits = 320;
 
 /// The integer polynomial sum c[i] t^i, degree <= 3.
 class SmallPolynomial final : public CubicAtDoubles {
@@ -59,12 +64,22 @@ class SmallPolynomial final : public CubicAtDoubles {
 
  private:
   using Stored = FixedInt<kMaxFixedLimbs>;
+  /// Encloses the coefficients for the wide-range filter when bits_ > kWideFilterBits.
+  void set_wide_enclosure();
+  /// The certified sign from the filter, 0 when it cannot tell (then decide exactly).
+  int filtered_sign_at(double t, Approximation* value) const;
+  bool filtered_bernstein_signs(double a, double b, int (&signs)[4]) const;
+
   int degree_ = -1;
   long bits_ = 0;
   bool in_gmp_ = false;  // coefficients in gmp_ (beyond the widest FixedInt)
   Stored fixed_[4] = {Stored(Stored::Uninitialized{}), Stored(Stored::Uninitialized{}),
                       Stored(Stored::Uninitialized{}), Stored(Stored::Uninitialized{})};
   std::array<mpz_class, 4> gmp_;
+#if EXACTCCD_WIDE_INTERVAL
+  bool wide_ = false;
+  WideInterval wide_c_[4];
+#endif
 };
 
 template <int N>
@@ -76,6 +91,7 @@ SmallPolynomial SmallPolynomial::from_fixed(const FixedInt<N>* c, int count, lon
     p.fixed_[i] = i < count ? c[i].template resized<kMaxFixedLimbs>() : Stored(0);
     if (i < count && c[i].sign() != 0) p.degree_ = i;
   }
+  if (bits > kWideFilterBits) p.set_wide_enclosure();
   return p;
 }
 
@@ -104,5 +120,12 @@ SmallPolynomial to_small_polynomial(const MpzPolynomial& p);
 int sign_at_dyadic(const MpzPolynomial& p, const mpz_class& T, unsigned k);
 int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz_class& B,
                            unsigned K, int (&signs)[4]);
+
+/// The sign of g at the only root r of p in the open interval (A 2^-K, B 2^-K), where p does not
+/// vanish at the ends: the Sturm-Tarski query Var(a) - Var(b) of the signed remainder sequence
+/// of p and (p' g mod p), whose cost does not depend on how close r is to a root of g.
+/// PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
+int tarski_sign_at_root(const MpzPolynomial& p, const MpzPolynomial& g, const mpz_class& A,
+                        const mpz_class& B, unsigned K);
 
 }  // namespace exactccd::exact

@@ -133,27 +133,44 @@ class FpEnvironmentGuard {
 
 #if defined(__i386__) || defined(__x86_64__)
 /// The x87 unit (long double): the guided TOI bisection computes its probes in extended
-/// precision. Probes only guide (exact signs decide), but a caller's unmasked x87 exception
-/// would trap there: all masked, 64-bit precision, round to nearest; the caller's whole x87
-/// environment (control word and sticky flags) is restored on return.
+/// precision, and the wide-range interval filter of the exact stage (exact/wide_interval.hpp)
+/// its bounds, rounding upward. Probes only guide (exact signs decide), but a caller's unmasked
+/// x87 exception would trap there: all masked, 64-bit precision, the requested rounding (to
+/// nearest by default); the caller's whole x87 environment (control word and sticky flags) is
+/// restored on return.
 class X87EnvironmentGuard {
  public:
-  X87EnvironmentGuard() noexcept {
-    asm volatile("fnstenv %0" : "=m"(saved_));  // also masks all x87 exceptions
-    const std::uint16_t wanted = 0x037f;
-    asm volatile("fldcw %0" : : "m"(wanted));
+  explicit X87EnvironmentGuard(Rounding rounding = Rounding::to_nearest) noexcept {
+    asm volatile("fnstenv %0" : "=m"(saved_) : : "memory");  // also masks all x87 exceptions
+    // Exceptions masked (0x3f), 64-bit precision (0x300), rounding control 00 or 10 (up).
+    const std::uint16_t wanted = rounding == Rounding::upward ? 0x0b7f : 0x037f;
+    asm volatile("fldcw %0" : : "m"(wanted) : "memory");
   }
-  ~X87EnvironmentGuard() { asm volatile("fldenv %0" : : "m"(saved_)); }
+  /// Restores the caller's control word and status flags, but not the tag word nor the stack
+  /// top: those describe the register stack as it is now (the compiler may keep long doubles
+  /// in x87 registers across this point; an old tag word would mark them empty, and the next
+  /// push would then overflow the stack into the indefinite NaN).
+  ~X87EnvironmentGuard() {
+    Environment now;
+    asm volatile("fnstenv %0" : "=m"(now) : : "memory");
+    now.words[0] = saved_.words[0];                                    // control word
+    now.words[1] = (saved_.words[1] & ~kTop) | (now.words[1] & kTop);  // flags, current top
+    asm volatile("fldenv %0" : : "m"(now) : "memory");
+  }
   X87EnvironmentGuard(const X87EnvironmentGuard&) = delete;
   X87EnvironmentGuard& operator=(const X87EnvironmentGuard&) = delete;
 
  private:
-  struct {
+  static constexpr std::uint32_t kTop = 0x3800;  // status word bits 11-13
+  struct Environment {
     std::uint32_t words[7];  // the 28-byte protected-mode x87 environment
-  } saved_{};
+  };
+  Environment saved_{};
 };
 #else
-struct X87EnvironmentGuard {};
+struct X87EnvironmentGuard {
+  explicit X87EnvironmentGuard(Rounding = Rounding::to_nearest) noexcept {}
+};
 #endif
 
 }  // namespace exactccd::predicates

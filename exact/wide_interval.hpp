@@ -1,0 +1,64 @@
+// Interval arithmetic in x87 extended precision (64-bit significands, exponents to 2^16383),
+// rounding upward: a certified filter in front of the exact stage's integer evaluations when
+// the polynomials' coefficients have hundreds or thousands of bits (queries whose coordinates'
+// exponents spread widely), where the exact integers cost far more than their few significant
+// bits need. Every value of the stage (coefficients below 2^6400, products of them with times
+// in [0, 1]) lies far inside the exponent range, so nothing overflows; bounds are rounded
+// outward by the upward rounding mode and negation. Only where long double is the x87 format;
+// elsewhere the filter is off and the exact evaluation decides alone.
+// PROOF: proofs/exact_ccd.md#wide-interval-filter
+#pragma once
+
+#include <gmpxx.h>
+
+#include <cfloat>
+#include <cmath>
+
+#if (defined(__x86_64__) || defined(__i386__)) && LDBL_MANT_DIG == 64
+#define EXACTCCD_WIDE_INTERVAL 1
+#else
+#define EXACTCCD_WIDE_INTERVAL 0
+#endif
+
+namespace exactccd::exact {
+
+#if EXACTCCD_WIDE_INTERVAL
+
+/// [lo, hi]. Every operation below assumes the x87 rounds upward
+/// (predicates::X87EnvironmentGuard(Rounding::upward)); a lower bound is the negation of an
+/// upper bound of the negated value.
+struct WideInterval {
+  long double lo, hi;
+};
+
+inline WideInterval operator+(const WideInterval& a, const WideInterval& b) {
+  return {-((-a.lo) - b.lo), a.hi + b.hi};
+}
+
+inline WideInterval operator*(const WideInterval& a, const WideInterval& b) {
+  const long double h1 = a.lo * b.lo, h2 = a.lo * b.hi, h3 = a.hi * b.lo, h4 = a.hi * b.hi;
+  const long double l1 = (-a.lo) * b.lo, l2 = (-a.lo) * b.hi, l3 = (-a.hi) * b.lo,
+                    l4 = (-a.hi) * b.hi;
+  const long double hi = std::fmax(std::fmax(h1, h2), std::fmax(h3, h4));
+  const long double minus_lo = std::fmax(std::fmax(l1, l2), std::fmax(l3, l4));
+  return {-minus_lo, hi};
+}
+
+/// +1 or -1 when the interval excludes 0, else 0 (uncertain: the caller decides exactly).
+inline int certain_sign(const WideInterval& x) { return x.lo > 0 ? 1 : (x.hi < 0 ? -1 : 0); }
+
+/// An enclosure of the integer z: mpz_get_d_2exp truncates toward zero to 53 bits, so |z| lies
+/// in [|d|, |d| + 2^-53] 2^e; both ends are exact in 64-bit significands.
+inline WideInterval enclosure_of(const mpz_class& z) {
+  if (sgn(z) == 0) return {0.0L, 0.0L};
+  long e = 0;
+  const double d = mpz_get_d_2exp(&e, z.get_mpz_t());
+  const long double near = std::ldexp(static_cast<long double>(d), static_cast<int>(e));
+  const long double far =
+      std::ldexp(static_cast<long double>(d) + (d < 0 ? -0x1p-53L : 0x1p-53L), static_cast<int>(e));
+  return d < 0 ? WideInterval{far, near} : WideInterval{near, far};
+}
+
+#endif
+
+}  // namespace exactccd::exact
