@@ -138,8 +138,7 @@ SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count) {
 
 void SmallPolynomial::set_wide_enclosure() {
 #if EXACTCCD_WIDE_INTERVAL
-  const std::array<mpz_class, 4> c = mpz_coefficients();
-  for (int i = 0; i < 4; ++i) wide_c_[i] = enclosure_of(c[i]);
+  for (int i = 0; i < 4; ++i) wide_c_[i] = in_gmp_ ? enclosure_of(gmp_[i]) : enclosure_of(fixed_[i]);
   wide_ = true;
 #endif
 }

@@ -13,6 +13,9 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+
+#include "exact/fixed_int.hpp"
 
 #if (defined(__x86_64__) || defined(__i386__)) && LDBL_MANT_DIG == 64
 #define EXACTCCD_WIDE_INTERVAL 1
@@ -47,7 +50,7 @@ inline WideInterval operator*(const WideInterval& a, const WideInterval& b) {
 /// +1 or -1 when the interval excludes 0, else 0 (uncertain: the caller decides exactly).
 inline int certain_sign(const WideInterval& x) { return x.lo > 0 ? 1 : (x.hi < 0 ? -1 : 0); }
 
-/// An enclosure of the integer z: mpz_get_d_2exp truncates toward zero to 53 bits, so |z| lies
+/// An enclosure of the integer z (GMP): mpz_get_d_2exp truncates toward zero to 53 bits, so |z| lies
 /// in [|d|, |d| + 2^-53] 2^e; both ends are exact in 64-bit significands.
 inline WideInterval enclosure_of(const mpz_class& z) {
   if (sgn(z) == 0) return {0.0L, 0.0L};
@@ -57,6 +60,23 @@ inline WideInterval enclosure_of(const mpz_class& z) {
   const long double far =
       std::ldexp(static_cast<long double>(d) + (d < 0 ? -0x1p-53L : 0x1p-53L), static_cast<int>(e));
   return d < 0 ? WideInterval{far, near} : WideInterval{near, far};
+}
+
+/// An enclosure of the FixedInt x without GMP: its leading 64 bits M at position s give
+/// M 2^s <= |x| <= (M + 1) 2^s, both exact long doubles (M + 1 <= 2^64).
+template <int N>
+WideInterval enclosure_of(const FixedInt<N>& x) {
+  const FixedInt<N> m = x.magnitude();
+  int top = N - 1;
+  while (top >= 0 && m.limb(top) == 0) --top;
+  if (top < 0) return {0.0L, 0.0L};
+  const int lz = __builtin_clzll(m.limb(top));
+  const std::uint64_t below = top > 0 ? m.limb(top - 1) : 0;
+  const std::uint64_t lead = lz == 0 ? m.limb(top) : (m.limb(top) << lz) | (below >> (64 - lz));
+  const int shift = 64 * top - lz;  // the weight of lead's lowest bit
+  const long double near = std::ldexp(static_cast<long double>(lead), shift);
+  const long double far = std::ldexp(static_cast<long double>(lead) + 1.0L, shift);
+  return x.is_negative() ? WideInterval{-far, -near} : WideInterval{near, far};
 }
 
 #endif
