@@ -187,7 +187,7 @@ TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnRandomQueries) {
     StageAllocations a;
     for (Family family : kAllFamilies) {
       const Generator g{family, type};
-      for (std::uint64_t i = 0; i < n; ++i) {
+      for (std::uint64_t i = 0; i < affordable_count(g, n); ++i) {
         std::mt19937_64 rng;
         const DoubleQuery q = generate(g, seed, i, rng);
         // Over [0, 1] (semi-static stage enabled) and over [0, t_max < 1] with a coarse width.
@@ -295,7 +295,7 @@ TEST(Allocation, ExactStagesAtDoubleTimesDoNotAllocateWithinTheFixedWidths) {
   const std::uint64_t seed = seed_from_environment(kDefaultSeed);
   const std::uint64_t n = scaled_count(1500, scale_from_environment());
   for (const Generator& g : all_generators())
-    for (std::uint64_t i = 0; i < n; ++i)
+    for (std::uint64_t i = 0; i < affordable_count(g, n); ++i)
       decide_at_double_times(generate(g, seed, i), CcdOptions{}, &a);
   std::printf("at double times: %llu queries within the fixed widths, %llu with GMP "
               "computations (%llu of them allocating)\n",
@@ -368,7 +368,7 @@ TEST(Allocation, ExactStageAtBracketsDoesNotAllocateWithoutGmpSteps) {
   const std::uint64_t seed = seed_from_environment(kDefaultSeed);
   const std::uint64_t n = scaled_count(600, scale_from_environment());
   for (const Generator& g : all_generators())
-    for (std::uint64_t i = 0; i < n; ++i) {
+    for (std::uint64_t i = 0; i < affordable_count(g, n); ++i) {
       const DoubleQuery q = generate(g, seed, i);
       decide(q, exact_mode);
       decide(q, CcdOptions{});

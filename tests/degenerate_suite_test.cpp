@@ -3,8 +3,9 @@
 // path and through the exact path (double API in Mode::exact, and exact_ccd on the file's
 // rationals) must reproduce the file's truth column and the TOI sidecar's tightest pair bit
 // for bit; the manifest's counts must be the files'; and regenerating the suite in memory
-// from the manifest's seed and parameters must give the shipped files byte for byte, so the
-// suite cannot drift from the generator.
+// from the manifest's seed, parameters and family list must give the shipped files byte for
+// byte, so the suite cannot drift from the generator. (The generator may offer families the
+// suite was not written with: the manifest lists the suite's own.)
 //
 // The suite's truth and TOIs were computed by the exact path when it was generated; what makes
 // them trustworthy is tests/families_test.cpp, which checks every base-family member against
@@ -52,6 +53,13 @@ std::string read_text(const fs::path& p) {
 const nlohmann::json& manifest() {
   static const nlohmann::json m = nlohmann::json::parse(read_text(kSuite / "manifest.json"));
   return m;
+}
+
+/// The suite's families, as its manifest lists them.
+std::vector<std::string> suite_family_names() {
+  std::vector<std::string> names;
+  for (const auto& f : manifest().at("families")) names.push_back(f.at("name"));
+  return names;
 }
 
 /// One sidecar line: index,collides,toi_lo,toi_hi.
@@ -144,18 +152,31 @@ TEST(DegenerateSuite, ManifestListsEveryFamilyWithTheFilesCounts) {
     ASSERT_EQ(sidecar.size(), file.queries.size());
     for (std::size_t i = 0; i < sidecar.size(); ++i)
       EXPECT_EQ(sidecar[i].collides, file.queries[i].truth) << "query " << i;
+    EXPECT_TRUE(fam::is_family_name(name));
     EXPECT_EQ(f.at("base"), fam::base_of(name));
     EXPECT_EQ(f.at("type"),
               to_string(type == "vertex-face" ? QueryType::vertex_face : QueryType::edge_edge));
-    // Each base family has both verdicts.
-    if (f.at("base") == name) {
+    // Each base family (a construction; random families have none) has both verdicts.
+    if (f.at("base") == name && !fam::is_random_family(name)) {
       EXPECT_GT(collisions, 0u);
       EXPECT_LT(collisions, file.queries.size());
     }
     total += file.queries.size();
   }
-  const std::vector<std::string> all = fam::all_family_names();
-  EXPECT_EQ(names, std::set<std::string>(all.begin(), all.end()));
+  EXPECT_EQ(names.size(), families.size());  // no family twice
+  // Every base family of the suite comes with all the variants the suite has of any of them.
+  std::set<std::string> bases, suffixes;
+  for (const std::string& name : names) {
+    const std::size_t at = name.find('@');
+    if (at == std::string::npos)
+      bases.insert(name);
+    else
+      suffixes.insert(name.substr(at));
+  }
+  for (const std::string& base : bases)
+    for (const std::string& suffix : suffixes)
+      if (!fam::is_random_family(base)) EXPECT_EQ(names.count(base + suffix), 1u) << base + suffix;
+  EXPECT_GE(bases.size(), 25u);
   EXPECT_GE(total, 2000u);
   // The folder holds nothing else that `check` would read: one data_0.csv per family (the
   // toi_0.csv sidecars are not query files).
@@ -190,12 +211,12 @@ TEST(DegenerateSuite, DefaultAndExactPathsReproduceTruthAndToi) {
   std::cout << "[ suite    ] " << queries << " queries, " << collisions << " collisions\n";
 }
 
-// The shipped files are what the generator writes today for the manifest's seed and
-// per-family count.
+// The shipped files are what the generator writes today for the manifest's seed, per-family
+// count and families.
 TEST(DegenerateSuite, RegeneratingGivesTheShippedFilesByteForByte) {
   const std::uint64_t seed = manifest().at("seed");
   const int per_family = manifest().at("per_family");
-  const fam::Corpus corpus = fam::generate_corpus(seed, per_family);
+  const fam::Corpus corpus = fam::generate_corpus(seed, per_family, suite_family_names());
   EXPECT_EQ(fam::manifest_text(corpus), read_text(kSuite / "manifest.json"));
   for (const fam::GeneratedFamily& g : corpus.families) {
     const fs::path folder = kSuite / fam::family_folder(g.family);

@@ -280,7 +280,7 @@ std::uint64_t count(std::uint64_t n) { return scaled_count(n, scale_from_environ
 TEST(ExactAtDoublesDifferential, RandomFamilies) {
   Tally tally;
   for (const Generator& g : all_generators()) {
-    const std::uint64_t n = count(1500);
+    const std::uint64_t n = affordable_count(g, count(1500));
     for (std::uint64_t i = 0; i < n; ++i) {
       Rng rng;
       const DoubleQuery q = generate(g, test_seed(), i, rng);

@@ -16,11 +16,13 @@
 #include <tbb/global_control.h>
 #include <unistd.h>
 
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -95,19 +97,37 @@ void expect_answer(const fam::Member& m, const CcdResult& r, const std::string& 
 
 TEST(Families, NamesVariantsAndArguments) {
   const auto& bases = fam::base_family_names();
-  EXPECT_EQ(bases.size(), 25u);
-  EXPECT_EQ(fam::variants().size(), 6u);
+  EXPECT_EQ(bases.size(), 29u);
+  const auto& randoms = fam::random_family_names();
+  EXPECT_EQ(randoms.size(), 8u);
+  EXPECT_EQ(fam::variants().size(), 12u);
   const std::vector<std::string> all = fam::all_family_names();
-  EXPECT_EQ(all.size(), bases.size() * 7);
+  EXPECT_EQ(all.size(), bases.size() * 13 + randoms.size());
   EXPECT_EQ(std::set<std::string>(all.begin(), all.end()).size(), all.size());
+  for (const std::string& name : all) EXPECT_TRUE(fam::is_family_name(name)) << name;
   EXPECT_EQ(fam::base_of("vf_interior@s1e-12"), "vf_interior");
   EXPECT_EQ(fam::base_of("ee_crossing@t1e8"), "ee_crossing");
   EXPECT_EQ(fam::base_of("ee_crossing"), "ee_crossing");
+  EXPECT_EQ(fam::base_of("vf_resting@p2^-1000"), "vf_resting");
+  EXPECT_EQ(fam::base_of("ee_stacked@p2^1000"), "ee_stacked");
+  EXPECT_EQ(fam::base_of("vf_wide_exponent_1000"), "vf_wide_exponent_1000");
+  EXPECT_TRUE(fam::is_random_family("ee_huge_triangle_subnormal_motion"));
+  EXPECT_FALSE(fam::is_random_family("ee_resting"));
+  EXPECT_EQ(fam::base_of("vf_wide_exponent_1000@p2^100"), "");  // random families: no variants
   EXPECT_EQ(fam::base_of("ee_crossing@s2"), "");
+  EXPECT_EQ(fam::base_of("ee_crossing@p2^7"), "");
   EXPECT_EQ(fam::base_of("nope"), "");
   EXPECT_THROW(fam::generate_base_family("nope", 1, 14), std::invalid_argument);
   EXPECT_THROW(fam::generate_base_family("vf_t0", 1, 1), std::invalid_argument);
+  EXPECT_THROW(fam::generate_base_family("vf_wide_exponent_100", 1, 14), std::invalid_argument);
+  EXPECT_THROW(fam::generate_random_family("vf_t0", 1, 14), std::invalid_argument);
+  EXPECT_THROW(fam::generate_random_family("vf_wide_exponent_100", 1, 1), std::invalid_argument);
   EXPECT_THROW(fam::generate_families(1, 14, {"vf_t0@s3"}), std::invalid_argument);
+  // Variants: the rounded ones first (their index is part of the suite's naming), then the
+  // powers of two, each 2^k exactly.
+  EXPECT_STREQ(fam::variants()[4].suffix, "@t1e4");
+  for (const fam::Variant& v : fam::variants())
+    if (v.power_of_two != 0) EXPECT_EQ(v.scale, std::ldexp(1.0, v.power_of_two)) << v.suffix;
 }
 
 TEST(Families, EachFamilyHasCollidingAndNonCollidingMembers) {
@@ -231,24 +251,151 @@ TEST(Families, VariantsAreTheBaseMembersScaledOrTranslated) {
   std::map<std::string, const fam::Family*> by_name;
   for (const fam::Family& f : families) by_name[f.name] = &f;
   ASSERT_EQ(families.size(), fam::all_family_names().size());
+  std::size_t exact_members = 0, inexact_members = 0;
   for (const fam::Family& f : families) {
     if (!f.is_variant()) continue;
     SCOPED_TRACE(f.name);
     const fam::Family& base = *by_name.at(f.base);
+    const bool power_of_two = f.parameters.at("transform") == "power_of_two";
     EXPECT_EQ(f.type, base.type);
     ASSERT_EQ(f.members.size(), base.members.size());
     EXPECT_TRUE((f.scale != 1.0) != (f.offset != 0.0));
     for (std::size_t i = 0; i < f.members.size(); ++i) {
       const fam::Member& m = f.members[i];
-      EXPECT_FALSE(m.claim_known);
       EXPECT_EQ(m.source, static_cast<int>(i));
+      bool exact = true;  // every product x 2^k a double
       for (int row = 0; row < 8; ++row)
         for (int axis = 0; axis < 3; ++axis) {
-          const double x = base.members[i].points[row][axis];
-          EXPECT_EQ(m.points[row][axis], f.offset != 0.0 ? x + f.offset : x * f.scale);
+          const double x = base.members[i].points[row][axis], y = m.points[row][axis];
+          if (f.offset != 0.0) {
+            EXPECT_EQ(y, x + f.offset);
+          } else if (!power_of_two || std::isfinite(x * f.scale)) {
+            EXPECT_EQ(y, x * f.scale);  // a power of two: exact unless it underflows
+            exact = exact && mpq_class(y) == mpq_class(x) * mpq_class(f.scale);
+          } else {
+            EXPECT_EQ(y, std::copysign(std::numeric_limits<double>::max(), x));
+            exact = false;
+          }
         }
+      if (power_of_two) {
+        // Exactly scaled members keep their base member's claim; the others carry none.
+        EXPECT_EQ(m.exact_scaling, exact);
+        EXPECT_EQ(m.claim_known, exact);
+        exact_members += exact;
+        inexact_members += !exact;
+        if (exact) {
+          EXPECT_EQ(m.collides, base.members[i].collides);
+          EXPECT_EQ(m.toi, base.members[i].toi);
+          EXPECT_EQ(m.partner, base.members[i].partner);
+        }
+      } else {
+        EXPECT_FALSE(m.claim_known);
+      }
     }
   }
+  // Both occur: +-100 and +-300 are exact on these magnitudes, 2^1000 overflows the
+  // tunneling families' 2^40, 2^-1000 loses one-ulp moves of subnormal size.
+  EXPECT_GT(exact_members, 0u);
+  EXPECT_GT(inexact_members, 0u);
+}
+
+// The power-of-two variants' claims hold: the exact path on the rational query and the default
+// path reproduce the verdict and the tightest TOI pair of every member that keeps its claim,
+// and a near miss still lies at its (scaled) distance from its colliding partner.
+TEST(Families, PowerOfTwoVariantsKeepTheirClaimsWhereExact) {
+  std::size_t claims = 0, dropped = 0;
+  for (const fam::Family& base : base_families()) {
+    for (const fam::Variant& v : fam::variants()) {
+      if (v.power_of_two == 0) continue;
+      const fam::Family f = fam::make_variant(base, v);
+      for (std::size_t i = 0; i < f.members.size(); ++i) {
+        const fam::Member& m = f.members[i];
+        if (!m.claim_known) {
+          ++dropped;
+          continue;
+        }
+        ++claims;
+        const RationalQuery q = rational(f.type, m.points);
+        expect_answer(m, exactccd::exact_ccd(q), where(f, i) + ", exact_ccd");
+        expect_answer(m, exactccd::test::double_api_ccd(q), where(f, i) + ", default");
+        if (m.collides) continue;
+        const fam::Member& partner = f.members[static_cast<std::size_t>(m.partner)];
+        if (!partner.exact_scaling) continue;
+        for (std::size_t k = 0; k < m.moved.size(); ++k) {
+          const int row = m.moved[k].row, axis = m.moved[k].axis;
+          EXPECT_EQ(mpq_class(m.points[row][axis]) - mpq_class(partner.points[row][axis]),
+                    m.direction[k] * mpq_class(m.distance))
+              << where(f, i) << " row " << row << " axis " << axis;
+        }
+      }
+    }
+  }
+  std::cout << "[ claims   ] " << claims << " power-of-two members keep their claim, " << dropped
+            << " do not\n";
+  EXPECT_GT(claims, dropped);
+  EXPECT_GT(dropped, 0u);
+}
+
+// The random families: claim-less, deterministic, every coordinate finite, the exponents
+// spread as named (wide: every coordinate a normal double with exponent in [-E, E], spread over
+// most of that range in each family; huge: coordinates at 2^900 .. 2^1001 next to subnormal
+// ones), and the exact path decides every member (the corpus writes its answers).
+TEST(Families, RandomFamiliesSpreadTheirExponentsWithoutClaims) {
+  for (const std::string& name : fam::random_family_names()) {
+    SCOPED_TRACE(name);
+    const fam::Family f = fam::generate_random_family(name, 7, 20);
+    EXPECT_FALSE(f.is_variant());
+    EXPECT_EQ(f.base, name);
+    EXPECT_EQ(f.type, name.rfind("vf_", 0) == 0 ? QueryType::vertex_face : QueryType::edge_edge);
+    ASSERT_EQ(f.members.size(), 20u);
+    const fam::Family again = fam::generate_random_family(name, 7, 20);
+    const fam::Family other = fam::generate_random_family(name, 8, 20);
+    int lowest = INT_MAX, highest = INT_MIN;
+    std::size_t subnormal = 0, same = 0, same_other = 0;
+    for (std::size_t i = 0; i < f.members.size(); ++i) {
+      const fam::Member& m = f.members[i];
+      EXPECT_FALSE(m.claim_known);
+      EXPECT_EQ(m.label, "random");
+      same += m.points == again.members[i].points;
+      same_other += m.points == other.members[i].points;
+      for (const Eigen::Vector3d& p : m.points)
+        for (int k = 0; k < 3; ++k) {
+          ASSERT_TRUE(std::isfinite(p[k]));
+          if (p[k] == 0) continue;
+          lowest = std::min(lowest, std::ilogb(p[k]));
+          highest = std::max(highest, std::ilogb(p[k]));
+          subnormal += std::fpclassify(p[k]) == FP_SUBNORMAL;
+        }
+    }
+    EXPECT_EQ(same, f.members.size());  // deterministic
+    EXPECT_EQ(same_other, 0u);          // and the seed matters
+    const std::size_t at = name.rfind('_');
+    if (name.find("wide_exponent") != std::string::npos) {
+      const int spread = std::stoi(name.substr(at + 1));
+      EXPECT_EQ(subnormal, 0u);
+      EXPECT_GE(lowest, -spread);
+      EXPECT_LE(highest, spread);
+      EXPECT_GT(highest - lowest, spread);  // 480 exponents drawn: far more than half the range
+    } else {
+      EXPECT_GT(subnormal, 0u);
+      EXPECT_GE(highest, 900);
+      EXPECT_LE(highest, 1002);
+      EXPECT_LT(lowest, -1022);
+    }
+  }
+  // The exact path decides them (no construction to contradict), and the corpus has both
+  // verdicts over the random families.
+  const fam::Corpus corpus = fam::generate_corpus(7, 6, fam::random_family_names());
+  ASSERT_EQ(corpus.families.size(), fam::random_family_names().size());
+  std::size_t collisions = 0, queries = 0;
+  for (const fam::GeneratedFamily& g : corpus.families) {
+    EXPECT_TRUE(fam::claim_mismatches(g).empty());
+    EXPECT_EQ(g.exact.size(), 6u);
+    collisions += g.collisions();
+    queries += g.exact.size();
+  }
+  EXPECT_GT(collisions, 0u);
+  EXPECT_LT(collisions, queries);
 }
 
 TEST(Families, GenerationIsDeterministic) {
@@ -410,6 +557,36 @@ TEST_F(GenerateCommand, WritesTheLayoutAndCheckAgrees) {
   ASSERT_EQ(run(again + " --force").status, 0);
   EXPECT_EQ(read(suite / "vf_interior/vertex-face/data_0.csv"), before);
   EXPECT_TRUE(fs::exists(suite / "ee_crossing@t1e8/edge-edge/data_0.csv"));
+}
+
+// The new kinds of family through the command: a random family (truth from the exact path),
+// a power-of-two variant (its exact members' claims checked: exit status 0) and a base family.
+TEST_F(GenerateCommand, WritesRandomAndPowerOfTwoFamilies) {
+  const fs::path suite = dir_ / "suite";
+  const Run r = run("generate --out '" + suite.string() +
+                    "' --seed 4 --per-family 7 --families "
+                    "vf_wide_exponent_1000,ee_resting@p2^-1000,vf_stacked");
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  const nlohmann::json manifest = nlohmann::json::parse(read(suite / "manifest.json"));
+  ASSERT_EQ(manifest.at("families").size(), 3u);
+  std::set<std::string> names;
+  for (const auto& f : manifest.at("families")) {
+    const std::string name = f.at("name"), type = f.at("type");
+    names.insert(name);
+    EXPECT_EQ(f.at("queries"), 7);
+    const exactccd::QueryFile file = exactccd::read_query_file(
+        (suite / name / type / "data_0.csv").string(),
+        type == "vertex-face" ? QueryType::vertex_face : QueryType::edge_edge);
+    EXPECT_EQ(file.queries.size(), 7u) << name;
+    if (name == "ee_resting@p2^-1000") {
+      EXPECT_EQ(f.at("parameters").at("transform"), "power_of_two");
+      EXPECT_EQ(f.at("parameters").at("exponent"), -1000);
+    }
+  }
+  EXPECT_EQ(names, (std::set<std::string>{"vf_wide_exponent_1000", "ee_resting@p2^-1000",
+                                          "vf_stacked"}));
+  const Run check = run("check '" + suite.string() + "'");
+  EXPECT_EQ(check.status, 0) << check.out << check.err;
 }
 
 }  // namespace

@@ -13,6 +13,13 @@
 // arithmetic. x(t0) = X - tc d and x(t1) = X + (1 - tc) d are exact too, and x(tc) = X. Some
 // generators then move a few coordinates by a few ulps (std::nextafter), which leaves a
 // near-degenerate query that is hard for floating-point filters.
+//
+// Wide-exponent families spread the binary exponents within one query (up to 2^-1074 next to
+// 2^1000), and every family's query is, one time in four, scaled by 2^k with k in
+// [-1000, 1000] when that is exact: the same answer at another magnitude.
+//
+// Draws happen in statement order: never two random draws among the arguments of one call
+// (their order is unspecified in C++); braced lists and separate declarations are ordered.
 #pragma once
 
 #include <gmpxx.h>
@@ -24,6 +31,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <limits>
 #include <random>
 #include <string>
@@ -47,6 +55,8 @@ struct DoubleQuery {
   /// The time at which the generator planted an exact contact or degeneracy (before any
   /// perturbation or inexact scaling); NaN when none.
   double planted_time = std::numeric_limits<double>::quiet_NaN();
+  /// k when the generator scaled the whole query by 2^k at the end (exactly), else 0.
+  int power_of_two = 0;
 
   VertexFaceQuery vertex_face() const { return {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}; }
   EdgeEdgeQuery edge_edge() const { return {v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}; }
@@ -105,12 +115,34 @@ enum class Family : std::uint8_t {
   /// Degenerate primitives throughout: zero-length edges, parallel or collinear edges,
   /// triangles that are segments or points, collinear triangle vertices; half perturbed.
   degenerate_primitives,
+  /// Every coordinate a random double: random sign, a full random 53-bit significand and a
+  /// binary exponent uniform in [-100, 100], independently per coordinate (contacts are rare;
+  /// the exponent spread within one query is what is hard).
+  wide_exponent_100,
+  /// The same with exponents in [-300, 300].
+  wide_exponent_300,
+  /// The same with exponents in [-1000, 1000].
+  wide_exponent_1000,
+  /// A huge triangle or edge (coordinates 2^900 .. 2^1001) in a plane through the origin, the
+  /// other primitive near the origin with subnormal coordinates and subnormal motion across,
+  /// onto or along that plane; or the huge one moved by subnormal displacements next to a
+  /// subnormal one. Exponent spreads of about 2000 within one query.
+  huge_triangle_subnormal_motion,
+  /// Resting contact, exact: a vertex on the face (weights k/8) at t = 0, both moving within
+  /// the face's fixed plane or the vertex riding a moving face; edges sliding along each other
+  /// (collinear overlap, or crossing in a common plane). Half perturbed by a few ulps.
+  resting_contact,
+  /// Faces stacked in parallel planes at exact gaps 2^-20 .. 2^-52 of their size (some gaps
+  /// 0: coplanar), with tangential motion; some gaps close or flip during the step.
+  stacked_coplanar,
 };
 
-inline constexpr std::array<Family, 8> kAllFamilies = {
+inline constexpr std::array<Family, 14> kAllFamilies = {
     Family::uniform_box,          Family::small_integer_grid,  Family::short_motion,
     Family::planted_contact,      Family::planted_contact_ulps, Family::contact_at_endpoints,
-    Family::coplanar_throughout,  Family::degenerate_primitives};
+    Family::coplanar_throughout,  Family::degenerate_primitives, Family::wide_exponent_100,
+    Family::wide_exponent_300,    Family::wide_exponent_1000,  Family::huge_triangle_subnormal_motion,
+    Family::resting_contact,      Family::stacked_coplanar};
 
 inline const char* to_string(Family f) {
   switch (f) {
@@ -122,6 +154,12 @@ inline const char* to_string(Family f) {
     case Family::contact_at_endpoints: return "contact_at_endpoints";
     case Family::coplanar_throughout: return "coplanar_throughout";
     case Family::degenerate_primitives: return "degenerate_primitives";
+    case Family::wide_exponent_100: return "wide_exponent_100";
+    case Family::wide_exponent_300: return "wide_exponent_300";
+    case Family::wide_exponent_1000: return "wide_exponent_1000";
+    case Family::huge_triangle_subnormal_motion: return "huge_triangle_subnormal_motion";
+    case Family::resting_contact: return "resting_contact";
+    case Family::stacked_coplanar: return "stacked_coplanar";
   }
   return "unknown";
 }
@@ -135,15 +173,49 @@ struct Generator {
   }
 };
 
+/// How many times fewer queries of a family a test takes than of the others when it loops
+/// over every generator with one count: the exact path (and the default path, which falls
+/// back to it) costs 0.05-0.2 ms per query on the ordinary families, but about 1 ms (spread
+/// +-100), 5 ms (+-300), 50 ms, up to 0.5 s (+-1000), and up to 1.5 ms (edge-edge
+/// huge_triangle_subnormal_motion) on wide exponent spreads (at 547347a, issue 10). Lower
+/// these as the exact path gets faster.
+inline std::uint64_t exact_cost_divisor(Family f) {
+  switch (f) {
+    case Family::wide_exponent_100: return 10;
+    case Family::wide_exponent_300: return 50;
+    case Family::wide_exponent_1000: return 500;
+    case Family::huge_triangle_subnormal_motion: return 10;
+    default: return 1;
+  }
+}
+
+/// Whether the family's coordinates are of ordinary magnitude (before the final power-of-two
+/// scaling): every family but the wide exponent spreads.
+inline bool ordinary_magnitudes(Family f) {
+  return f != Family::wide_exponent_100 && f != Family::wide_exponent_300 &&
+         f != Family::wide_exponent_1000 && f != Family::huge_triangle_subnormal_motion;
+}
+
+/// n / exact_cost_divisor(g.family), at least 1: a loop's count for generator g.
+inline std::uint64_t affordable_count(const Generator& g, std::uint64_t n) {
+  return std::max<std::uint64_t>(1, n / exact_cost_divisor(g.family));
+}
+
+/// Number of generators: every family for both query types.
+inline constexpr std::size_t kGeneratorCount = 2 * kAllFamilies.size();
+
 /// All generators, vertex-face first.
-inline std::array<Generator, 16> all_generators() {
-  std::array<Generator, 16> g{};
+inline std::array<Generator, kGeneratorCount> all_generators() {
+  std::array<Generator, kGeneratorCount> g{};
   for (std::size_t i = 0; i < kAllFamilies.size(); ++i) {
     g[i] = {kAllFamilies[i], QueryType::vertex_face};
     g[i + kAllFamilies.size()] = {kAllFamilies[i], QueryType::edge_edge};
   }
   return g;
 }
+
+/// Permutes the axes and mirrors some of them at random (defined below).
+inline void permute_and_mirror_axes(DoubleQuery* q, std::mt19937_64& rng);
 
 namespace detail {
 
@@ -317,7 +389,13 @@ inline std::array<Eigen::Vector3d, 8> coplanar_positions(Rng& rng, const Grid& g
   Eigen::Vector3d u, v;
   for (int k = 0; k < 3; ++k) u[k] = uniform_int(rng, -3, 3), v[k] = uniform_int(rng, -3, 3);
   std::array<Eigen::Vector3d, 8> x;
-  for (auto& p : x) p = (o + dyadic(rng, g.bits, g.range) * u) + dyadic(rng, g.bits, g.range) * v;
+  for (auto& p : x) {
+    // One draw per statement (argument order is unspecified); beta first, as GCC evaluated
+    // the former one-expression form, so that the queries are unchanged.
+    const double beta = dyadic(rng, g.bits, g.range);
+    const double alpha = dyadic(rng, g.bits, g.range);
+    p = (o + alpha * u) + beta * v;
+  }
   return x;
 }
 
@@ -381,25 +459,412 @@ inline void perturb_ulps(Rng& rng, std::array<Eigen::Vector3d, 8>& x) {
   }
 }
 
+
+// ---- wide exponent spreads (wide_exponent_*, huge_triangle_subnormal_motion) -----------------
+
+/// A random double: random sign, a full random 53-bit significand (2^e (1 + f), f a random
+/// 52-bit fraction), binary exponent e uniform in [lo, hi] (within [-1022, 1023]: a normal
+/// double).
+inline double random_full_double(Rng& rng, int lo, int hi) {
+  const std::uint64_t significand = (rng() >> 11) | (std::uint64_t{1} << 52);
+  const int e = uniform_int(rng, lo, hi);
+  const double m = std::ldexp(static_cast<double>(significand), e - 52);
+  return coin(rng) ? m : -m;
+}
+
+/// Exponent uniform in [-spread, spread].
+inline double wide_exponent_double(Rng& rng, int spread) {
+  return random_full_double(rng, -spread, spread);
+}
+
+/// Magnitude in [2^900, 2^1001), random sign.
+inline double huge_double(Rng& rng) { return random_full_double(rng, 900, 1000); }
+
+/// A random multiple of 2^-1074 below 2^(bits - 1074) in magnitude (bits <= 48: below 2^-1026,
+/// a subnormal or 0), random sign. Sums and differences of a few such numbers, and their
+/// doubles and quadruples, stay below 2^-1022 and on the 2^-1074 grid: exact.
+inline double subnormal_double(Rng& rng, int bits) {
+  const double m = std::ldexp(static_cast<double>(rng() >> (64 - bits)), -1074);
+  return coin(rng) ? m : -m;
+}
+
+/// Signed subnormal offsets of a primitive from a plane at t = 0 and t = 1: crossing it at
+/// t = 1/2 (planted) or at another time, touching it at t = 0 or t = 1, in it throughout,
+/// missing it (one side throughout), or random. `planted` receives the time the offsets vanish
+/// at when it is dyadic (NaN otherwise).
+inline std::array<double, 2> subnormal_offsets(Rng& rng, int bits, double* planted) {
+  const double g = subnormal_double(rng, bits);
+  const double h = subnormal_double(rng, bits);
+  *planted = std::numeric_limits<double>::quiet_NaN();
+  switch (uniform_int(rng, 0, 6)) {
+    case 0: *planted = 0.5; return {g, -g};
+    case 1: return {g, std::signbit(g) == std::signbit(h) ? -h : h};  // crosses (or touches)
+    case 2: *planted = 0.0; return {0.0, h};
+    case 3: *planted = 1.0; return {g, 0.0};
+    case 4: *planted = 0.0; return {0.0, 0.0};
+    case 5: return {g, std::signbit(g) == std::signbit(h) ? h : -h};  // one side throughout
+    default: return {g, h};
+  }
+}
+
+/// huge_triangle_subnormal_motion. Axes (u, v, w); the huge primitive lies in the plane
+/// w = 2^m u (m in {0, 1, 2}; w = 0 when untilted) through the origin, the small one has
+/// coordinates below 2^-1024 on the 2^-1074 grid, so that every coordinate below is computed
+/// exactly. Vertex-face: a huge triangle around the origin (one vertex per quadrant pair) and
+/// p with subnormal (u, v) and subnormal offsets from the plane; or (untilted) the huge
+/// triangle's w coordinates moved by subnormal amounts and p subnormal, static or moving.
+/// Edge-edge: a huge edge through the origin (a1 = -2^j a0) or not, and a subnormal edge with
+/// offsets from the plane; or the huge edge's w coordinates moved by subnormal amounts. Then
+/// the axes are permuted and mirrored.
+inline void huge_and_subnormal(Rng& rng, QueryType type, DoubleQuery* q) {
+  const int bits = uniform_int(rng, 1, 48);
+  const bool vice_versa = coin(rng, 3);  // the huge primitive moves by subnormal amounts
+  const int m = vice_versa || coin(rng, 3) ? -1 : uniform_int(rng, 0, 2);  // -1: untilted
+  const auto plane_w = [m](double u) { return m < 0 ? 0.0 : std::ldexp(u, m); };
+  const auto small_point = [&rng, bits] {
+    const double u = subnormal_double(rng, bits);
+    const double v = subnormal_double(rng, bits);
+    return std::array<double, 2>{u, v};
+  };
+  // The huge primitive's rows at t = 0 (and t = 1 until moved), with w on the plane.
+  const auto huge_rows = [&](std::initializer_list<int> rows,
+                             const std::vector<std::array<double, 2>>& uv) {
+    std::size_t i = 0;
+    for (int r : rows) {
+      const std::array<double, 2>& p = uv[i++];
+      q->v[r] = q->v[r + 4] = {p[0], p[1], plane_w(p[0])};
+    }
+  };
+  // Subnormal w motion of the huge primitive (vice versa).
+  const auto lift = [&](std::initializer_list<int> rows) {
+    for (int r : rows) {
+      if (!coin(rng, 3)) q->v[r][2] = subnormal_double(rng, bits);
+      q->v[r + 4][2] = subnormal_double(rng, bits);
+    }
+  };
+  // A small point at t = 0 and t = 1: on the plane plus offsets, or free and subnormal.
+  const auto small_rows = [&](int row, const std::array<double, 2>& offsets) {
+    const std::array<double, 2> p0 = small_point();
+    const std::array<double, 2> p1 = coin(rng, 4) ? p0 : small_point();
+    q->v[row] = {p0[0], p0[1], plane_w(p0[0]) + offsets[0]};
+    q->v[row + 4] = {p1[0], p1[1], plane_w(p1[0]) + offsets[1]};
+  };
+  double planted = std::numeric_limits<double>::quiet_NaN();
+  if (type == QueryType::vertex_face) {
+    // Quadrants (+, +), (-, +), (+-, -): the origin is often inside the triangle.
+    std::vector<std::array<double, 2>> tri(3);
+    for (int i = 0; i < 3; ++i) {
+      const double u = std::fabs(huge_double(rng));
+      const double v = std::fabs(huge_double(rng));
+      tri[i] = {i == 0 ? u : i == 1 ? -u : (coin(rng) ? u : -u), i == 2 ? -v : v};
+    }
+    huge_rows({1, 2, 3}, tri);
+    if (vice_versa) lift({1, 2, 3});
+    small_rows(0, subnormal_offsets(rng, bits, &planted));
+  } else {
+    std::vector<std::array<double, 2>> edge(2);
+    {
+      const double u = huge_double(rng);
+      const double v = huge_double(rng);
+      edge[0] = {u, v};
+    }
+    if (coin(rng)) {  // through the origin
+      const int j = uniform_int(rng, -2, 2);
+      edge[1] = {-std::ldexp(edge[0][0], j), -std::ldexp(edge[0][1], j)};
+    } else {
+      const double u = huge_double(rng);
+      const double v = huge_double(rng);
+      edge[1] = {u, v};
+    }
+    huge_rows({0, 1}, edge);
+    if (vice_versa) lift({0, 1});
+    const std::array<double, 2> g = subnormal_offsets(rng, bits, &planted);
+    small_rows(2, g);
+    small_rows(3, coin(rng) ? g : subnormal_offsets(rng, bits, &planted));
+    planted = std::numeric_limits<double>::quiet_NaN();  // two ends' offsets: not tracked
+    if (coin(rng))  // the small edge first
+      for (int k : {0, 4}) std::swap(q->v[k], q->v[k + 2]), std::swap(q->v[k + 1], q->v[k + 3]);
+  }
+  // Where the small primitive meets the plane of a static huge one (when dyadic).
+  q->planted_time = vice_versa ? std::numeric_limits<double>::quiet_NaN() : planted;
+  permute_and_mirror_axes(q, rng);
+}
+
+// ---- resting contact and stacked faces ---------------------------------------------------------
+
+/// The plane o + alpha u + beta v, u and v small integer vectors (not parallel), o dyadic of
+/// grid g; with alpha and beta on grid g (or k/8 combinations of such) every point is exact.
+struct Plane {
+  Eigen::Vector3d o, u, v;
+  Eigen::Vector3d at(double alpha, double beta) const { return (o + alpha * u) + beta * v; }
+};
+
+inline Plane random_plane(Rng& rng, const Grid& g) {
+  Plane P;
+  P.o = dyadic_point(rng, g.bits, g.range);
+  do {
+    for (int k = 0; k < 3; ++k) {
+      P.u[k] = uniform_int(rng, -3, 3);
+      P.v[k] = uniform_int(rng, -3, 3);
+    }
+  } while (P.u[1] * P.v[2] == P.u[2] * P.v[1] && P.u[2] * P.v[0] == P.u[0] * P.v[2] &&
+           P.u[0] * P.v[1] == P.u[1] * P.v[0]);  // u x v = 0: parallel (or zero)
+  return P;
+}
+
+using Point2d = std::array<double, 2>;
+
+inline Point2d dyadic_point2(Rng& rng, const Grid& g) {
+  const double a = dyadic(rng, g.bits, g.range);
+  const double b = dyadic(rng, g.bits, g.range);
+  return {a, b};
+}
+
+/// Affine weights k/8 of a point of the closed triangle: inside, on an edge or at a vertex.
+inline void closed_face_weights(Rng& rng, double w[3]) {
+  do plane_weights(rng, w);
+  while (w[0] < 0 || w[1] < 0 || w[2] < 0);
+}
+
+inline Point2d weighted(const double w[3], const Point2d& a, const Point2d& b, const Point2d& c) {
+  return {(w[0] * a[0] + w[1] * b[0]) + w[2] * c[0], (w[0] * a[1] + w[1] * b[1]) + w[2] * c[1]};
+}
+
+/// x + s (y - x), s = k/8 in [0, 1].
+inline Point2d along(const Point2d& x, const Point2d& y, double s) {
+  return {x[0] + s * (y[0] - x[0]), x[1] + s * (y[1] - x[1])};
+}
+
+/// The ends of a segment through X: X - s d and X + (1 - s) d, s = k/8 in [0, 1].
+inline std::array<Point2d, 2> segment_through(Rng& rng, const Point2d& X, const Grid& g) {
+  const double s = uniform_int(rng, 0, 8) / 8.0;
+  const Point2d d = dyadic_point2(rng, g);
+  return {Point2d{X[0] - s * d[0], X[1] - s * d[1]},
+          Point2d{X[0] + (1 - s) * d[0], X[1] + (1 - s) * d[1]}};
+}
+
+/// Two segments of the plane crossing (or touching at an end: s = 0 or 1) at one point.
+inline std::array<Point2d, 4> crossing_segments(Rng& rng, const Grid& g) {
+  const Point2d a0 = dyadic_point2(rng, g);
+  const Point2d a1 = dyadic_point2(rng, g);
+  const Point2d X = along(a0, a1, uniform_int(rng, 0, 8) / 8.0);
+  const std::array<Point2d, 2> b = segment_through(rng, X, g);
+  return {a0, a1, b[0], b[1]};
+}
+
+/// resting_contact. All weights k/8 on the grids of random_grid: every coordinate is exact
+/// (as in planted), so each relation below holds exactly in doubles.
+/// - vertex-face, in the plane: triangle and vertex move within one fixed plane (the triangle
+///   rigidly or each vertex on its own); p(0) is on the closed face, p(1) on it too (other
+///   weights) or anywhere in the plane: contact at t = 0, coplanar throughout.
+/// - vertex-face, riding: p is a fixed k/8 combination of the moving vertices (any motion):
+///   on the face throughout.
+/// - edge-edge, collinear: four points on one line, the edges overlapping at t = 0 (and at
+///   t = 1 or not) as they slide along it.
+/// - edge-edge, crossing: both edges in one plane, crossing (or touching at an end) at t = 0,
+///   crossing again at t = 1 or anywhere in the plane.
+inline void resting(Rng& rng, QueryType type, DoubleQuery* q) {
+  const Grid g = random_grid(rng);
+  if (type == QueryType::vertex_face) {
+    if (coin(rng, 4)) {  // riding a moving face
+      std::array<Moving, 4> m;
+      for (auto& x : m) x = random_moving(rng, g);
+      double w[3];
+      closed_face_weights(rng, w);
+      m[0] = combine(w[0], m[1], w[1], m[2], w[2], m[3]);
+      q->v = positions(m, 0.0);
+      return;
+    }
+    const Plane P = random_plane(rng, g);
+    std::array<Point2d, 3> t0, t1;
+    for (auto& x : t0) x = dyadic_point2(rng, g);
+    const bool rigid = coin(rng);
+    const Point2d shift = dyadic_point2(rng, g);
+    for (int i = 0; i < 3; ++i)
+      t1[i] = rigid ? Point2d{t0[i][0] + shift[0], t0[i][1] + shift[1]} : dyadic_point2(rng, g);
+    double w[3];
+    closed_face_weights(rng, w);
+    const Point2d p0 = weighted(w, t0[0], t0[1], t0[2]);
+    Point2d p1;
+    if (coin(rng)) {
+      closed_face_weights(rng, w);
+      p1 = weighted(w, t1[0], t1[1], t1[2]);
+    } else {
+      p1 = dyadic_point2(rng, g);
+    }
+    q->v[0] = P.at(p0[0], p0[1]);
+    q->v[4] = P.at(p1[0], p1[1]);
+    for (int i = 0; i < 3; ++i) {
+      q->v[1 + i] = P.at(t0[i][0], t0[i][1]);
+      q->v[5 + i] = P.at(t1[i][0], t1[i][1]);
+    }
+    return;
+  }
+  if (coin(rng)) {  // collinear: o + s e
+    const Eigen::Vector3d o = dyadic_point(rng, g.bits, g.range);
+    Eigen::Vector3d e;
+    do
+      for (int k = 0; k < 3; ++k) e[k] = uniform_int(rng, -3, 3);
+    while (e.isZero());
+    const auto overlapping = [&] {  // a0, a1, b0, b1 parameters, b0 within [a0, a1]
+      const double a0 = dyadic(rng, g.bits, g.range);
+      const double a1 = dyadic(rng, g.bits, g.range);
+      const double b0 = a0 + (uniform_int(rng, 0, 8) / 8.0) * (a1 - a0);
+      const double b1 = dyadic(rng, g.bits, g.range);
+      return std::array<double, 4>{a0, a1, b0, b1};
+    };
+    const std::array<double, 4> s0 = overlapping();
+    std::array<double, 4> s1;
+    if (coin(rng)) {
+      s1 = overlapping();
+    } else {
+      for (double& x : s1) x = dyadic(rng, g.bits, g.range);
+    }
+    for (int i = 0; i < 4; ++i) {
+      q->v[i] = o + s0[i] * e;
+      q->v[i + 4] = o + s1[i] * e;
+    }
+  } else {  // crossing in a common plane
+    const Plane P = random_plane(rng, g);
+    const std::array<Point2d, 4> x0 = crossing_segments(rng, g);
+    std::array<Point2d, 4> x1;
+    if (coin(rng)) {
+      x1 = crossing_segments(rng, g);
+    } else {
+      for (auto& x : x1) x = dyadic_point2(rng, g);
+    }
+    for (int i = 0; i < 4; ++i) {
+      q->v[i] = P.at(x0[i][0], x0[i][1]);
+      q->v[i + 4] = P.at(x1[i][0], x1[i][1]);
+    }
+  }
+  if (coin(rng))  // edge b first
+    for (int k : {0, 4}) std::swap(q->v[k], q->v[k + 2]), std::swap(q->v[k + 1], q->v[k + 3]);
+}
+
+/// stacked_coplanar. Layers z = s1 x + s2 y + gap, slopes s1, s2 in {-1/2, ..., 1/2} (k/4);
+/// x and y are multiples of 2^-10 of magnitude at most 5/4, so s1 x + s2 y is a multiple of
+/// 2^-12 of magnitude at most 5/4; the gap is 0 or +-2^-k, k in [20, 52]: every z is a
+/// multiple of 2^-52 below 2 in magnitude, hence a double (their spacing there is at most
+/// 2^-52), and every coordinate is exact. One primitive (the triangle; edge a) lies in the
+/// layer gap 0, the other in the layer of gap g0 at t = 0 and g1 at t = 1 (g1 = g0 mostly:
+/// stacked throughout; else 0 or -g0: the gap closes at t = 1 or flips at t = 1/2). Each
+/// vertex slides tangentially within its layer; the small primitive lies over the other
+/// (weights k/8, crossing projections) or anywhere. Then the axes are permuted and mirrored.
+inline void stacked(Rng& rng, QueryType type, DoubleQuery* q) {
+  const double s1 = uniform_int(rng, -2, 2) / 4.0;
+  const double s2 = uniform_int(rng, -2, 2) / 4.0;
+  double g0 = 0.0;
+  if (!coin(rng, 4)) {
+    const double sign = coin(rng) ? 1.0 : -1.0;
+    g0 = std::ldexp(sign, -uniform_int(rng, 20, 52));
+  }
+  double g1 = g0;
+  double planted = std::numeric_limits<double>::quiet_NaN();
+  switch (uniform_int(rng, 0, 7)) {
+    case 0: g1 = 0, planted = 1.0; break;
+    case 1: g1 = -g0, planted = 0.5; break;
+    default: break;
+  }
+  const auto xy = [&rng] {
+    const double x = uniform_int(rng, -64, 64) / 64.0;
+    const double y = uniform_int(rng, -64, 64) / 64.0;
+    return Point2d{x, y};
+  };
+  const auto at = [s1, s2](const Point2d& p, double gap) {
+    return Eigen::Vector3d(p[0], p[1], (s1 * p[0] + s2 * p[1]) + gap);
+  };
+  // Tangential motion: a common slide by at most 1/4 (rigid) or each point on its own.
+  const bool rigid = coin(rng);
+  const Point2d slide = {uniform_int(rng, -16, 16) / 64.0, uniform_int(rng, -16, 16) / 64.0};
+  const auto moved = [&](const Point2d& p) {
+    return rigid ? Point2d{p[0] + slide[0], p[1] + slide[1]} : xy();
+  };
+  const bool over = !coin(rng, 4);  // the small primitive over the other one
+  if (type == QueryType::vertex_face) {
+    std::array<Point2d, 3> t0, t1;
+    for (auto& x : t0) x = xy();
+    for (int i = 0; i < 3; ++i) t1[i] = moved(t0[i]);
+    double w[3];
+    closed_face_weights(rng, w);
+    const Point2d p0 = over ? weighted(w, t0[0], t0[1], t0[2]) : xy();
+    const Point2d p1 = moved(p0);
+    q->v[0] = at(p0, g0);
+    q->v[4] = at(p1, g1);
+    for (int i = 0; i < 3; ++i) {
+      q->v[1 + i] = at(t0[i], 0.0);
+      q->v[5 + i] = at(t1[i], 0.0);
+    }
+  } else {
+    // Crossing segments on the grid 2^-6 in [-1, 1]: ends multiples of 2^-9 within [-2, 2],
+    // halved (exactly) into [-1, 1].
+    std::array<Point2d, 4> x0 = crossing_segments(rng, Grid{6, 1});
+    for (auto& p : x0) p = {0.5 * p[0], 0.5 * p[1]};
+    if (!over)
+      for (int i = 2; i < 4; ++i) x0[i] = xy();
+    for (int i = 0; i < 4; ++i) {
+      const double gap0 = i < 2 ? 0.0 : g0, gap1 = i < 2 ? 0.0 : g1;
+      q->v[i] = at(x0[i], gap0);
+      q->v[i + 4] = at(moved(x0[i]), gap1);
+    }
+    if (coin(rng))  // edge b first
+      for (int k : {0, 4}) std::swap(q->v[k], q->v[k + 2]), std::swap(q->v[k + 1], q->v[k + 3]);
+  }
+  q->planted_time = planted;
+  permute_and_mirror_axes(q, rng);
+}
+
 }  // namespace detail
+
+/// The seed of query `index` of generator g under `seed`.
+inline std::uint64_t query_seed(std::uint64_t seed, const Generator& g, std::uint64_t index) {
+  const std::uint64_t tag = (static_cast<std::uint64_t>(g.family) << 8) |
+                            static_cast<std::uint64_t>(g.type);
+  return mix64(mix64(seed ^ mix64(tag)) ^ index);
+}
 
 /// The per-query random engine of query `index` of generator g under `seed`.
 inline std::mt19937_64 query_rng(std::uint64_t seed, const Generator& g, std::uint64_t index) {
-  const std::uint64_t tag = (static_cast<std::uint64_t>(g.family) << 8) |
-                            static_cast<std::uint64_t>(g.type);
-  return std::mt19937_64(mix64(mix64(seed ^ mix64(tag)) ^ index));
+  return std::mt19937_64(query_seed(seed, g, index));
 }
 
-/// Query `index` of generator g under `seed`; `rng` continues the query's stream (for option
-/// choices that must be reproducible with the query).
-inline DoubleQuery generate(const Generator& g, std::uint64_t seed, std::uint64_t index,
-                            std::mt19937_64& rng) {
+/// The exponent k of the final power-of-two scaling of query `index` of g: k uniform in
+/// [-1000, 1000] for one query in four, 0 for the others. Drawn from a stream of its own, so
+/// that the unscaled query and the rest of the query's stream (the differential check's option
+/// choices) do not depend on it.
+inline int power_of_two_exponent(std::uint64_t seed, const Generator& g, std::uint64_t index) {
+  detail::Rng rng(mix64(query_seed(seed, g, index) ^ 0x2b992ddfa23249d6ULL));
+  if (!detail::coin(rng, 4)) return 0;
+  return detail::uniform_int(rng, -1000, 1000);
+}
+
+/// Multiplies every coordinate by 2^k when every product is a double (finite, and no bit lost
+/// below 2^-1074): scaling space by 2^k > 0 changes no contact and no contact time, so the
+/// scaled query has the same answer (and planted time). Returns whether it scaled; otherwise
+/// q is left as it was.
+inline bool scale_if_exact(DoubleQuery* q, int k) {
+  std::array<Eigen::Vector3d, 8> v;
+  for (int i = 0; i < 8; ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double x = q->v[i][c], s = std::ldexp(x, k);
+      if (!std::isfinite(s) || std::ldexp(s, -k) != x) return false;
+      v[i][c] = s;
+    }
+  q->v = v;
+  return true;
+}
+
+/// Query `index` of generator g under `seed` before the final power-of-two scaling; `rng`
+/// continues the query's stream.
+inline DoubleQuery generate_unscaled(const Generator& g, std::uint64_t seed, std::uint64_t index,
+                                     std::mt19937_64& rng) {
   using namespace detail;
   rng = query_rng(seed, g, index);
   DoubleQuery q;
   q.type = g.type;
   bool exact = true;
   bool perturb = false;
+  bool transform = true;  // random_transform: the families of ordinary magnitudes
   switch (g.family) {
     case Family::uniform_box: {
       std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -417,7 +882,11 @@ inline DoubleQuery generate(const Generator& g, std::uint64_t seed, std::uint64_
       std::uniform_real_distribution<double> u(0.0, 1.0), du(-0.1, 0.1);
       for (int i = 0; i < 4; ++i) {
         q.v[i] = {u(rng), u(rng), u(rng)};
-        q.v[i + 4] = q.v[i] + Eigen::Vector3d(du(rng), du(rng), du(rng));
+        // One draw per statement, z first, as GCC evaluated the former constructor arguments.
+        const double dz = du(rng);
+        const double dy = du(rng);
+        const double dx = du(rng);
+        q.v[i + 4] = q.v[i] + Eigen::Vector3d(dx, dy, dz);
       }
       exact = false;
       break;
@@ -445,8 +914,35 @@ inline DoubleQuery generate(const Generator& g, std::uint64_t seed, std::uint64_
       perturb = coin(rng);
       break;
     }
+    // The families below keep their magnitudes (a decimal scaling or a translation would
+    // overflow or round away what makes them hard); the final power-of-two scaling varies them.
+    case Family::wide_exponent_100:
+    case Family::wide_exponent_300:
+    case Family::wide_exponent_1000: {
+      const int spread = g.family == Family::wide_exponent_100   ? 100
+                         : g.family == Family::wide_exponent_300 ? 300
+                                                                 : 1000;
+      for (auto& p : q.v)
+        for (int k = 0; k < 3; ++k) p[k] = wide_exponent_double(rng, spread);
+      transform = false;
+      break;
+    }
+    case Family::huge_triangle_subnormal_motion:
+      huge_and_subnormal(rng, g.type, &q);
+      transform = false;
+      break;
+    case Family::resting_contact:
+      resting(rng, g.type, &q);
+      q.planted_time = 0.0;  // in contact at t = 0
+      perturb = coin(rng);
+      transform = false;
+      break;
+    case Family::stacked_coplanar:
+      stacked(rng, g.type, &q);
+      transform = false;
+      break;
   }
-  random_transform(rng, q.v, &exact);
+  if (transform) random_transform(rng, q.v, &exact);
   if (!exact) q.planted_time = std::numeric_limits<double>::quiet_NaN();
   if (perturb) {
     detail::perturb_ulps(rng, q.v);
@@ -455,9 +951,25 @@ inline DoubleQuery generate(const Generator& g, std::uint64_t seed, std::uint64_
   return q;
 }
 
+/// Query `index` of generator g under `seed`; `rng` continues the query's stream (for option
+/// choices that must be reproducible with the query). One query in four is the unscaled query
+/// times 2^k, k = power_of_two_exponent(...), when that is exact (q.power_of_two = k).
+inline DoubleQuery generate(const Generator& g, std::uint64_t seed, std::uint64_t index,
+                            std::mt19937_64& rng) {
+  DoubleQuery q = generate_unscaled(g, seed, index, rng);
+  const int k = power_of_two_exponent(seed, g, index);
+  if (k != 0 && scale_if_exact(&q, k)) q.power_of_two = k;
+  return q;
+}
+
 inline DoubleQuery generate(const Generator& g, std::uint64_t seed, std::uint64_t index) {
   std::mt19937_64 rng;
   return generate(g, seed, index, rng);
+}
+
+inline DoubleQuery generate_unscaled(const Generator& g, std::uint64_t seed, std::uint64_t index) {
+  std::mt19937_64 rng;
+  return generate_unscaled(g, seed, index, rng);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -85,7 +85,7 @@ std::vector<Case> cases() {
   const std::uint64_t seed = seed_from_environment(kDefaultSeed);
   const std::uint64_t n = scaled_count(300, scale_from_environment());
   for (const Generator& g : all_generators())
-    for (std::uint64_t i = 0; i < n; ++i) {
+    for (std::uint64_t i = 0; i < affordable_count(g, n); ++i) {
       const DoubleQuery q = generate(g, seed, i);
       out.push_back({q, CcdOptions{}});
       out.push_back({q, coarse});

@@ -85,10 +85,15 @@ int run_generate(const GenerateOptions& options) {
                      std::to_string(families::kMaxPerFamily) + "], got " +
                      std::to_string(options.per_family));
   for (const std::string& name : options.families)
-    if (!families::is_family_name(name))
+    if (!families::is_family_name(name)) {
+      std::string suffixes;
+      for (const families::Variant& v : families::variants())
+        suffixes += (suffixes.empty() ? "" : ", ") + std::string(v.suffix);
       throw UsageError("--families: unknown family '" + name +
-                       "' (a base family such as vf_interior, or <base>@s1e-12, @s1e-6, @s1e6, "
-                       "@s1e12, @t1e4, @t1e8; see exactccd generate --help)");
+                       "' (a base family such as vf_interior, a random family such as "
+                       "vf_wide_exponent_1000, or a base family with one of the suffixes " +
+                       suffixes + "; see exactccd generate --help)");
+    }
 
   if (options.out_dir.empty()) throw UsageError("--out: the folder name is empty");
   const fs::path root(options.out_dir);
@@ -113,13 +118,13 @@ int run_generate(const GenerateOptions& options) {
   std::printf("seed %llu, %d queries per family, exact path in %.2f s (%d threads)\n",
               static_cast<unsigned long long>(options.seed), options.per_family, seconds,
               tbb::this_task_arena::max_concurrency());
-  std::printf("%-30s %-12s %8s %11s %14s\n", "family", "type", "queries", "collisions",
+  std::printf("%-36s %-12s %8s %11s %14s\n", "family", "type", "queries", "collisions",
               "kept verdict");
   for (const families::GeneratedFamily& g : corpus.families) {
     char kept[32] = "-";
     if (g.family.is_variant())
       std::snprintf(kept, sizeof kept, "%zu/%zu", g.kept_verdict, g.family.members.size());
-    std::printf("%-30s %-12s %8zu %11zu %14s\n", g.family.name.c_str(), to_string(g.family.type),
+    std::printf("%-36s %-12s %8zu %11zu %14s\n", g.family.name.c_str(), to_string(g.family.type),
                 g.family.members.size(), g.collisions(), kept);
     queries += g.family.members.size();
     collisions += g.collisions();

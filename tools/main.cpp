@@ -317,17 +317,23 @@ int main(int argc, char** argv) {
       "Write reproducible families of hard and degenerate queries with exact truth and TOI "
       "(from the exact path): DIR/manifest.json and, per family, "
       "DIR/<family>/<vertex-face|edge-edge>/data_0.csv (benchmark CSV, exact fractions) and "
-      "toi_0.csv (index,collides,toi_lo,toi_hi). Each family has colliding members and near "
-      "misses 1 ulp and 2^-k away.");
+      "toi_0.csv (index,collides,toi_lo,toi_hi). Each base family has colliding members and "
+      "near misses 1 ulp and 2^-k away; the random families (wide exponent spreads) have no "
+      "construction and take their truth from the exact path.");
   {
     std::string bases;
     for (const std::string& name : exactccd::families::base_family_names())
       bases += (bases.empty() ? "" : ", ") + name;
+    std::string randoms;
+    for (const std::string& name : exactccd::families::random_family_names())
+      randoms += (randoms.empty() ? "" : ", ") + name;
     std::string suffixes;
     for (const auto& v : exactccd::families::variants())
       suffixes += (suffixes.empty() ? "" : ", ") + std::string(v.suffix);  // "@s1e-12, ..."
-    generate->footer("Families: " + bases + "; and each of them scaled or translated in "
-                     "double arithmetic, named <family>" + suffixes + ".\n\nExit "
+    generate->footer("Families: " + bases + "; each of them scaled or translated in double "
+                     "arithmetic (@s, @t: no claim) or scaled by 2^k (@p2^k: claims kept where "
+                     "exact), named <family>" + suffixes + "; and the random families without "
+                     "claims " + randoms + ".\n\nExit "
                      "status: 0 written, every member as constructed; 1 written, but some "
                      "member's exact verdict or TOI contradicts its construction (listed on "
                      "stderr); 2 bad command line, an unwritable folder, or an earlier run's "

@@ -40,9 +40,10 @@ struct Corpus {
 Corpus generate_corpus(std::uint64_t seed, int per_family,
                        const std::vector<std::string>& names = {});
 
-/// Base families: one line per member whose exact verdict or TOI contradicts the construction
-/// (collides; toi_lo <= t* <= toi_hi with the tightest pair: lo == hi == t* when t* is a
-/// double, else consecutive doubles around it). Empty when all agree; variants: empty.
+/// One line per member with a claim (base families; power-of-two variants where the scaling is
+/// exact) whose exact verdict or TOI contradicts it (collides; toi_lo <= t* <= toi_hi with the
+/// tightest pair: lo == hi == t* when t* is a double, else consecutive doubles around it).
+/// Empty when all agree; random families and rounded variants carry no claim: empty.
 std::vector<std::string> claim_mismatches(const GeneratedFamily& family);
 
 /// "<family>/<vertex-face|edge-edge>"

@@ -40,6 +40,8 @@ class Rng {
     return lo + static_cast<long>(engine_() % span);
   }
   bool coin() { return (engine_() >> 17) & 1u; }
+  /// 64 random bits.
+  std::uint64_t bits() { return engine_(); }
   int sign() { return coin() ? 1 : -1; }
   /// k / den, k uniform in [lo, hi].
   Q dyadic(long lo, long hi, long den) {
@@ -981,6 +983,229 @@ Construction ee_zero_length(Rng& r, int group) {
   return c;
 }
 
+// ---- resting contact and stacked faces ---------------------------------------------------------
+
+// A plane that is not vertical, P: z = s1 x + s2 y + c (slopes k/4 in [-1, 1], c = k/8 in
+// [-1, 1]), and h(x) = x_z - s1 x_x - s2 x_y - c, the vertical offset of a point from it. h is
+// affine, so h(x(t)) = (1 - t) h(x(0)) + t h(x(1)) for a linearly moving point: a point in P at
+// t = 0 and t = 1 is in P throughout, and a triangle or edge whose vertices are is contained in
+// P throughout. lift maps the xy plane affinely onto P (it preserves convex combinations), so a
+// point of a closed triangle or segment of the xy plane lifts to a point of the lifted one.
+struct TiltedPlane {
+  Q s1, s2, c;
+};
+
+TiltedPlane random_tilted_plane(Rng& r) {
+  TiltedPlane p;
+  p.s1 = r.dyadic(-4, 4, 4);
+  p.s2 = r.dyadic(-4, 4, 4);
+  p.c = r.dyadic(-8, 8, 8);
+  return p;
+}
+
+/// The point of P above (x, y) of a point of the xy plane.
+P3 lift(const TiltedPlane& p, const P3& xy) {
+  return p3(xy[0], xy[1], p.s1 * xy[0] + p.s2 * xy[1] + p.c);
+}
+
+/// A velocity parallel to P: (vx, vy, s1 vx + s2 vy), vx, vy = k/8 in [-1, 1].
+P3 in_plane_velocity(Rng& r, const TiltedPlane& p) {
+  const Q vx = r.dyadic(-8, 8, 8), vy = r.dyadic(-8, 8, 8);
+  return p3(vx, vy, p.s1 * vx + p.s2 * vy);
+}
+
+// A vertex resting on a face that moves within its (tilted) plane P; T(0) is the lift of a
+// random triangle of the xy plane, p(0) the lift of a point q of that triangle (inside, on an
+// edge or at a vertex), so p(0) is in T(0): t* = 0. Every vertex is in P at t = 0 and t = 1,
+// hence T(t) and p(t) lie in P throughout (coplanar motion).
+// - riding: T translates by an in-plane V and p moves with it (p on the face throughout);
+// - sliding: T translates by V, p by its own in-plane velocity W (it may leave the face);
+// - deforming: every vertex of T and p moves to its own point of P.
+// Near misses (any delta > 0): (a) p lifted by delta along z at both times: h(p(t)) = +-delta
+// for every t while T(t) lies in P, never coplanar; (b) riding, q on an edge or at a vertex:
+// p(0), p(1) moved by delta along an outward axis of an edge through q (outward_axes, x or y).
+// Project along z: T(t) projects onto the xy triangle translated by t V_xy and p(t) onto q +
+// delta e + t V_xy, so p(t) in T(t) would put q + delta e in the xy triangle; but q + delta e is
+// strictly outside that edge's half-plane.
+Construction vf_resting(Rng& r, int group) {
+  Construction c;
+  const TiltedPlane plane = random_tilted_plane(r);
+  const Triangle t = random_triangle(r);
+  const long kind = group % 3;
+  const Location loc = point_of_kind(r, t, static_cast<int>(r.uniform(0, 2)));
+  const P3 v = in_plane_velocity(r, plane);
+  for (int i = 0; i < 3; ++i) {
+    c.rows[1 + i] = lift(plane, t[i]);
+    c.rows[5 + i] = kind == 2 ? lift(plane, P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)})
+                              : c.rows[1 + i] + v;
+  }
+  c.rows[0] = lift(plane, loc.point);
+  if (kind == 0)
+    c.rows[4] = c.rows[0] + v;
+  else if (kind == 1)
+    c.rows[4] = c.rows[0] + in_plane_velocity(r, plane);
+  else
+    c.rows[4] = lift(plane, P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)});
+  c.toi = 0;
+  if (kind == 0 && !loc.outward.empty() && r.coin()) {
+    const auto [axis, sign] = r.pick(loc.outward);
+    c.moves = {{0, axis, sign}, {4, axis, sign}};
+  } else {
+    const int s = r.sign();
+    c.moves = {{0, 2, s}, {4, 2, s}};
+  }
+  c.kind = std::string(kind == 0 ? "riding-" : kind == 1 ? "sliding-" : "deforming-") + loc.kind;
+  return c;
+}
+
+// Edges sliding along each other, in contact at t = 0 (t* = 0).
+// - collinear: all four ends on the line L = {o + s d} at t = 0 and t = 1 (each end moving along
+//   L with its own speed), so both edges lie in L throughout; at t = 0, eb0 = ea0 + lambda
+//   (ea1 - ea0), lambda = k/8 in [0, 1], is a point of ea. Near miss: eb (its four rows) moved by
+//   delta along an axis e not parallel to d: eb then lies in the line L + delta e, parallel to
+//   L and distinct from it, throughout; parallel distinct lines do not meet.
+// - crossing / endpoint: both edges in a tilted plane P (ends lifted from the xy plane at both
+//   times), crossing at t = 0 at X = lift(ea0 + lambda (ea1 - ea0)) with eb = [X - mu w, X +
+//   (1 - mu) w] (lambda = k/8 in [0, 1], mu = k/8 in (0, 1) for a crossing, mu = 0 for an
+//   endpoint of eb on ea); each edge translates by its own in-plane velocity, or each end moves
+//   to its own point of P. Near miss: eb (four rows) lifted by delta along z: h = +-delta on eb
+//   throughout while ea lies in P.
+Construction ee_resting(Rng& r, int group) {
+  Construction c;
+  const long kind = group % 3;
+  if (kind == 0) {
+    const P3 o = random_vector(r);
+    P3 d;
+    do d = random_vector(r, 4);
+    while (sgn(dot(d, d)) == 0);
+    const Q a0 = r.dyadic(-8, 8, 8), a1 = r.dyadic(-8, 8, 8);
+    const Q b0 = canon(a0 + r.dyadic(0, 8, 8) * (a1 - a0)), b1 = r.dyadic(-8, 8, 8);
+    const std::array<Q, 4> s0 = {a0, a1, b0, b1};
+    for (int i = 0; i < 4; ++i) {
+      c.rows[i] = o + s0[i] * d;
+      c.rows[i + 4] = o + canon(s0[i] + r.dyadic(-8, 8, 8)) * d;
+    }
+    std::vector<int> axes;
+    for (int axis = 0; axis < 3; ++axis) {
+      P3 e = zero3();
+      e[axis] = 1;
+      if (sgn(dot(cross(d, e), cross(d, e))) != 0) axes.push_back(axis);
+    }
+    const int axis = r.pick(axes), s = r.sign();
+    c.moves = {{2, axis, s}, {3, axis, s}, {6, axis, s}, {7, axis, s}};
+    c.toi = 0;
+    c.kind = "collinear";
+    return c;
+  }
+  const TiltedPlane plane = random_tilted_plane(r);
+  P3 a0, a1, w;
+  do {
+    a0 = P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)};
+    a1 = P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)};
+    w = P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)};
+  } while (sgn(orient2(zero3(), a1 - a0, w)) == 0);  // not parallel (nor zero)
+  const P3 x = a0 + r.dyadic(0, 8, 8) * (a1 - a0);
+  const Q mu = kind == 1 ? r.dyadic(1, 7, 8) : Q(0);
+  const std::array<P3, 4> at0 = {a0, a1, x - mu * w, x + canon(1 - mu) * w};
+  const bool rigid = r.coin();
+  const P3 va = in_plane_velocity(r, plane), vb = in_plane_velocity(r, plane);
+  for (int i = 0; i < 4; ++i) {
+    c.rows[i] = lift(plane, at0[i]);
+    c.rows[i + 4] = rigid ? c.rows[i] + (i < 2 ? va : vb)
+                          : lift(plane, P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)});
+  }
+  const int s = r.sign();
+  c.moves = {{2, 2, s}, {3, 2, s}, {6, 2, s}, {7, 2, s}};
+  c.toi = 0;
+  c.kind = std::string(kind == 1 ? "crossing" : "endpoint") + (rigid ? "-translating" : "-free");
+  return c;
+}
+
+/// A gap 2^-20, 2^-30, 2^-40 or 2^-48 of random sign. The other coordinates of these builders
+/// are multiples of 2^-8 below 2^5 in magnitude (also after the frame), so a coordinate plus
+/// such a gap has at most 53 significant bits: a double (place() checks every coordinate and
+/// the builder is retried otherwise).
+Q random_gap(Rng& r) {
+  static const std::vector<int> kGaps = {20, 30, 40, 48};
+  return r.sign() * pow2(-r.pick(kGaps));
+}
+
+// Stacked faces: the triangle (edge ea) in a tilted plane P, moving within it (T(t), ea(t) in P
+// throughout, as in vf_resting), and the vertex (edge eb) in the parallel layer h = g(t).
+// - coplanar: g = 0 throughout: p (eb) rides on the face (crosses ea) with the same in-plane
+//   velocity, in contact from t = 0: t* = 0. Near misses: p (eb, four rows) lifted by delta
+//   along z at both times: g = +-delta throughout, never coplanar (a stack at gap delta).
+// - landing: g(t) = (1 - t) G with G = +-2^-20 .. 2^-48 (random_gap): the layer closes at t = 1,
+//   where p is on the face (eb crosses ea; both translated in-plane): g(t) != 0 for t < 1, so
+//   t* = 1. p (eb) also slides tangentially (its own in-plane velocity). Near misses: p(1)
+//   (eb0(1), eb1(1)) moved by delta along z in G's direction: g(t) = (1 - t) G + t sign(G)
+//   delta has one strict sign on [0, 1]: no contact.
+Construction vf_stacked(Rng& r, int group) {
+  Construction c;
+  const TiltedPlane plane = random_tilted_plane(r);
+  const Triangle t = random_triangle(r);
+  const bool landing = group % 2 == 1;
+  const Location loc = point_of_kind(r, t, static_cast<int>(r.uniform(0, 2)));
+  const P3 v = in_plane_velocity(r, plane);
+  for (int i = 0; i < 3; ++i) {
+    c.rows[1 + i] = lift(plane, t[i]);
+    c.rows[5 + i] = c.rows[1 + i] + v;
+  }
+  if (!landing) {
+    c.rows[0] = lift(plane, loc.point);
+    c.rows[4] = c.rows[0] + v;
+    c.toi = 0;
+    const int s = r.sign();
+    c.moves = {{0, 2, s}, {4, 2, s}};
+    c.kind = "coplanar-" + loc.kind;
+    return c;
+  }
+  const Q gap = random_gap(r);
+  c.rows[4] = lift(plane, loc.point) + v;
+  c.rows[0] = c.rows[4] - in_plane_velocity(r, plane) + p3(0, 0, gap);
+  c.toi = 1;
+  c.moves = {{4, 2, sgn(gap)}};
+  c.kind = "landing-" + loc.kind;
+  return c;
+}
+
+Construction ee_stacked(Rng& r, int group) {
+  Construction c;
+  const TiltedPlane plane = random_tilted_plane(r);
+  const bool landing = group % 2 == 1;
+  P3 a0, a1, w;
+  do {
+    a0 = P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)};
+    a1 = P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)};
+    w = P3{r.dyadic(-8, 8, 8), r.dyadic(-8, 8, 8), Q(0)};
+  } while (sgn(orient2(zero3(), a1 - a0, w)) == 0);
+  const P3 x = a0 + r.dyadic(0, 8, 8) * (a1 - a0);
+  const Q mu = r.dyadic(0, 8, 8);
+  const std::array<P3, 4> crossing = {a0, a1, x - mu * w, x + canon(1 - mu) * w};
+  const P3 v = in_plane_velocity(r, plane);
+  if (!landing) {
+    for (int i = 0; i < 4; ++i) {
+      c.rows[i] = lift(plane, crossing[i]);
+      c.rows[i + 4] = c.rows[i] + v;
+    }
+    c.toi = 0;
+    const int s = r.sign();
+    c.moves = {{2, 2, s}, {3, 2, s}, {6, 2, s}, {7, 2, s}};
+    c.kind = "coplanar";
+    return c;
+  }
+  const Q gap = random_gap(r);
+  const P3 vb = in_plane_velocity(r, plane);
+  for (int i = 0; i < 4; ++i) {
+    c.rows[i + 4] = lift(plane, crossing[i]) + v;
+    c.rows[i] = i < 2 ? lift(plane, crossing[i]) : c.rows[i + 4] - vb + p3(0, 0, gap);
+  }
+  c.toi = 1;
+  c.moves = {{6, 2, sgn(gap)}, {7, 2, sgn(gap)}};
+  c.kind = "landing";
+  return c;
+}
+
 // ---------------------------------------------------------------------------------------------
 // The family table
 
@@ -1047,6 +1272,16 @@ const std::vector<BaseFamily>& base_families() {
        "Rapid motion through a small or sliver triangle: the vertex ends 2^10 to 2^40 beyond "
        "the face (t* = H / (H + F), tiny); it crosses on an edge or at a vertex; near misses: "
        "moved laterally outward by 1 ulp / 2^-k."},
+      {"vf_resting", QueryType::vertex_face, vf_resting,
+       "Resting contact: the vertex on a face (inside, on an edge or at a vertex) of a tilted "
+       "plane from t = 0, the face moving within its plane (translating or deforming) and the "
+       "vertex riding on it or sliding in the plane; near misses: the vertex 1 ulp / 2^-k off "
+       "the plane, or (riding) moved 1 ulp / 2^-k outward in the plane."},
+      {"vf_stacked", QueryType::vertex_face, vf_stacked,
+       "Stacked faces: the vertex in the face's tilted plane riding on the face from t = 0 (near "
+       "misses: stacked 1 ulp / 2^-k above it), or in a parallel layer 2^-20 .. 2^-48 away "
+       "that closes exactly at t = 1 onto the face while both slide tangentially (near misses: "
+       "the layer stops 1 ulp / 2^-k short)."},
       {"ee_t0", QueryType::edge_edge, ee_t0,
        "Edges crossing exactly at t = 0 (interiors, or at an endpoint), then separating; near "
        "misses: the moving edge starts 1 ulp / 2^-k off the common plane."},
@@ -1089,6 +1324,16 @@ const std::vector<BaseFamily>& base_families() {
        "Rapid motion across a short edge: the moving edge ends 2^10 to 2^40 away and crosses "
        "the short edge's endpoint at t* = H / (H + F); near misses: the short edge shortened "
        "by 1 ulp / 2^-k."},
+      {"ee_resting", QueryType::edge_edge, ee_resting,
+       "Edges sliding along each other in contact from t = 0: collinear and overlapping, or "
+       "crossing (or an endpoint on the other edge) in a common tilted plane while each "
+       "translates or deforms within it; near misses: one edge moved 1 ulp / 2^-k off the line "
+       "or off the plane."},
+      {"ee_stacked", QueryType::edge_edge, ee_stacked,
+       "Stacked edges: crossing in a common tilted plane and translating together from t = 0 "
+       "(near misses: one stacked 1 ulp / 2^-k above), or in a parallel layer 2^-20 .. 2^-48 "
+       "away that closes exactly at t = 1 where they cross (near misses: the layer stops "
+       "1 ulp / 2^-k short)."},
   };
   return table;
 }
@@ -1097,6 +1342,179 @@ const BaseFamily& base_family(const std::string& name) {
   for (const BaseFamily& f : base_families())
     if (name == f.name) return f;
   throw std::invalid_argument("unknown family: " + name);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Random families: seeded random queries without a construction (no claim; the truth is the
+// exact path's).
+
+/// Random sign, a full random 53-bit significand, binary exponent uniform in [lo, hi] (within
+/// [-1022, 1023]: a normal double): 2^e (1 + f), f a random 52-bit fraction.
+double random_full_double(Rng& r, int lo, int hi) {
+  const std::uint64_t significand = (r.bits() >> 11) | (std::uint64_t{1} << 52);
+  const long e = r.uniform(lo, hi);
+  const double m = std::ldexp(static_cast<double>(significand), static_cast<int>(e) - 52);
+  return r.coin() ? m : -m;
+}
+
+/// A random multiple of 2^-1074 below 2^(bits - 1074) (bits <= 48: a subnormal or 0), random
+/// sign. Sums of two such numbers and their products by 2^m, m <= 2, stay below 2^-1022 on the
+/// 2^-1074 grid, hence exact.
+double random_subnormal(Rng& r, int bits) {
+  const double m = std::ldexp(static_cast<double>(r.bits() >> (64 - bits)), -1074);
+  return r.coin() ? m : -m;
+}
+
+struct RandomQuery {
+  QueryPoints points;
+  std::string kind;
+};
+
+/// Every coordinate independently random_full_double(-spread, spread).
+RandomQuery wide_exponent_query(Rng& r, int spread) {
+  RandomQuery q;
+  for (Eigen::Vector3d& p : q.points)
+    for (int k = 0; k < 3; ++k) p[k] = random_full_double(r, -spread, spread);
+  q.kind = "wide-exponent";
+  return q;
+}
+
+/// The subnormal offsets of a small point from the huge primitive's plane at t = 0 and t = 1.
+std::array<double, 2> subnormal_offsets(Rng& r, int bits, std::string* kind) {
+  const double g = random_subnormal(r, bits);
+  const double h = random_subnormal(r, bits);
+  switch (r.uniform(0, 5)) {
+    case 0: *kind = "crossing-1/2"; return {g, -g};
+    case 1: *kind = "crossing"; return {g, std::signbit(g) == std::signbit(h) ? -h : h};
+    case 2: *kind = "touch-t0"; return {0.0, h};
+    case 3: *kind = "touch-t1"; return {g, 0.0};
+    case 4: *kind = "in-plane"; return {0.0, 0.0};
+    default: *kind = "one-side"; return {g, std::signbit(g) == std::signbit(h) ? h : -h};
+  }
+}
+
+/// A huge triangle (edge) in the plane w = 2^m u through the origin (coordinates 2^900 ..
+/// 2^1001; m in {0, 1, 2}, or w = 0) and the other primitive near the origin with subnormal
+/// coordinates and subnormal offsets from that plane; or ("moving-huge") the huge primitive's w
+/// coordinates moved by subnormal amounts. Every coordinate is computed exactly. Axes (u, v,
+/// w) then permuted at random.
+RandomQuery huge_and_subnormal_query(Rng& r, QueryType type) {
+  RandomQuery q;
+  QueryPoints& x = q.points;
+  const int bits = static_cast<int>(r.uniform(1, 48));
+  const bool moving_huge = r.uniform(0, 2) == 0;
+  const int m = moving_huge || r.uniform(0, 2) == 0 ? -1 : static_cast<int>(r.uniform(0, 2));
+  const auto plane_w = [m](double u) { return m < 0 ? 0.0 : std::ldexp(u, m); };
+  const auto huge = [&r] {
+    const double u = random_full_double(r, 900, 1000);
+    const double v = random_full_double(r, 900, 1000);
+    return std::array<double, 2>{u, v};
+  };
+  const auto set_huge = [&](int row, const std::array<double, 2>& uv) {
+    x[row] = x[row + 4] = Eigen::Vector3d(uv[0], uv[1], plane_w(uv[0]));
+    if (moving_huge) {
+      if (r.uniform(0, 2) != 0) x[row][2] = random_subnormal(r, bits);
+      x[row + 4][2] = random_subnormal(r, bits);
+    }
+  };
+  const auto set_small = [&](int row, const std::array<double, 2>& offsets) {
+    const double u0 = random_subnormal(r, bits), v0 = random_subnormal(r, bits);
+    const double u1 = random_subnormal(r, bits), v1 = random_subnormal(r, bits);
+    x[row] = Eigen::Vector3d(u0, v0, plane_w(u0) + offsets[0]);
+    x[row + 4] = Eigen::Vector3d(u1, v1, plane_w(u1) + offsets[1]);
+  };
+  std::string offsets_kind;
+  if (type == QueryType::vertex_face) {
+    // Quadrants (+, +), (-, +), (+-, -): the origin is often inside the triangle.
+    for (int i = 0; i < 3; ++i) {
+      std::array<double, 2> uv = huge();
+      uv = {std::fabs(uv[0]), std::fabs(uv[1])};
+      if (i == 1 || (i == 2 && r.coin())) uv[0] = -uv[0];
+      if (i == 2) uv[1] = -uv[1];
+      set_huge(1 + i, uv);
+    }
+    set_small(0, subnormal_offsets(r, bits, &offsets_kind));
+  } else {
+    const std::array<double, 2> a0 = huge();
+    std::array<double, 2> a1;
+    const bool through_origin = r.coin();
+    if (through_origin) {
+      const int j = static_cast<int>(r.uniform(-2, 2));
+      a1 = {-std::ldexp(a0[0], j), -std::ldexp(a0[1], j)};
+    } else {
+      a1 = huge();
+    }
+    set_huge(0, a0);
+    set_huge(1, a1);
+    const std::array<double, 2> g = subnormal_offsets(r, bits, &offsets_kind);
+    set_small(2, g);
+    set_small(3, g);
+    if (r.coin())  // the small edge first
+      for (int k : {0, 4}) std::swap(x[k], x[k + 2]), std::swap(x[k + 1], x[k + 3]);
+    offsets_kind = std::string(through_origin ? "through-origin-" : "") + offsets_kind;
+  }
+  q.kind = (moving_huge ? "moving-huge-" : m < 0 ? "flat-" : "tilted-") + offsets_kind;
+  // A random signed permutation of the axes: exact, answer-preserving.
+  std::array<int, 3> axis = {0, 1, 2};
+  for (int i = 2; i > 0; --i) std::swap(axis[i], axis[r.uniform(0, i)]);
+  std::array<int, 3> sign;
+  for (int& s : sign) s = r.sign();
+  for (Eigen::Vector3d& p : x) {
+    const Eigen::Vector3d old = p;
+    for (int k = 0; k < 3; ++k) p[k] = sign[k] * old[axis[k]];
+  }
+  return q;
+}
+
+using RandomBuilder = RandomQuery (*)(Rng&, QueryType);
+
+struct RandomFamilySpec {
+  const char* name;
+  QueryType type;
+  RandomBuilder build;
+  const char* description;
+  int exponent_lo, exponent_hi;  // of the random coordinates, for the manifest
+};
+
+RandomQuery wide_100(Rng& r, QueryType) { return wide_exponent_query(r, 100); }
+RandomQuery wide_300(Rng& r, QueryType) { return wide_exponent_query(r, 300); }
+RandomQuery wide_1000(Rng& r, QueryType) { return wide_exponent_query(r, 1000); }
+
+const std::vector<RandomFamilySpec>& random_families() {
+  static const char* kWide =
+      "Every coordinate a random double: random sign, a full random 53-bit significand and a "
+      "binary exponent uniform in [-E, E], independently per coordinate (the exponent spread "
+      "within one query is what is hard). No claim: the truth is the exact path's.";
+  static const char* kHuge =
+      "A huge primitive (coordinates 2^900 .. 2^1001) in a plane through the origin and the "
+      "other one near the origin with subnormal coordinates and subnormal motion across, onto "
+      "or along that plane, or the huge one moved by subnormal amounts: exponent spreads of "
+      "about 2000 within one query. No claim: the truth is the exact path's.";
+  static const std::vector<RandomFamilySpec> table = {
+      {"vf_wide_exponent_100", QueryType::vertex_face, wide_100, kWide, -100, 100},
+      {"vf_wide_exponent_300", QueryType::vertex_face, wide_300, kWide, -300, 300},
+      {"vf_wide_exponent_1000", QueryType::vertex_face, wide_1000, kWide, -1000, 1000},
+      {"vf_huge_triangle_subnormal_motion", QueryType::vertex_face, huge_and_subnormal_query, kHuge,
+       -1074, 1000},
+      {"ee_wide_exponent_100", QueryType::edge_edge, wide_100, kWide, -100, 100},
+      {"ee_wide_exponent_300", QueryType::edge_edge, wide_300, kWide, -300, 300},
+      {"ee_wide_exponent_1000", QueryType::edge_edge, wide_1000, kWide, -1000, 1000},
+      {"ee_huge_triangle_subnormal_motion", QueryType::edge_edge, huge_and_subnormal_query, kHuge,
+       -1074, 1000},
+  };
+  return table;
+}
+
+const RandomFamilySpec& random_family(const std::string& name) {
+  for (const RandomFamilySpec& f : random_families())
+    if (name == f.name) return f;
+  throw std::invalid_argument("unknown family: " + name);
+}
+
+void check_per_family(int per_family) {
+  if (per_family < kMinPerFamily || per_family > kMaxPerFamily)
+    throw std::invalid_argument("per_family must lie in [" + std::to_string(kMinPerFamily) + ", " +
+                                std::to_string(kMaxPerFamily) + "]");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1215,16 +1633,41 @@ const std::vector<std::string>& base_family_names() {
   return names;
 }
 
+const std::vector<std::string>& random_family_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const RandomFamilySpec& f : random_families()) out.push_back(f.name);
+    return out;
+  }();
+  return names;
+}
+
+bool is_random_family(const std::string& name) {
+  const auto& names = random_family_names();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 const std::vector<Variant>& variants() {
   static const std::vector<Variant> v = {
-      {"@s1e-12", 1e-12, 0.0}, {"@s1e-6", 1e-6, 0.0}, {"@s1e6", 1e6, 0.0},
-      {"@s1e12", 1e12, 0.0},   {"@t1e4", 1.0, 1e4},   {"@t1e8", 1.0, 1e8},
+      {"@s1e-12", 1e-12, 0.0},
+      {"@s1e-6", 1e-6, 0.0},
+      {"@s1e6", 1e6, 0.0},
+      {"@s1e12", 1e12, 0.0},
+      {"@t1e4", 1.0, 1e4},
+      {"@t1e8", 1.0, 1e8},
+      {"@p2^-1000", std::ldexp(1.0, -1000), 0.0, -1000},
+      {"@p2^-300", std::ldexp(1.0, -300), 0.0, -300},
+      {"@p2^-100", std::ldexp(1.0, -100), 0.0, -100},
+      {"@p2^100", std::ldexp(1.0, 100), 0.0, 100},
+      {"@p2^300", std::ldexp(1.0, 300), 0.0, 300},
+      {"@p2^1000", std::ldexp(1.0, 1000), 0.0, 1000},
   };
   return v;
 }
 
 std::vector<std::string> all_family_names() {
   std::vector<std::string> out = base_family_names();
+  for (const std::string& name : random_family_names()) out.push_back(name);
   for (const Variant& v : variants())
     for (const std::string& base : base_family_names()) out.push_back(base + v.suffix);
   return out;
@@ -1233,6 +1676,7 @@ std::vector<std::string> all_family_names() {
 std::string base_of(const std::string& name) {
   const std::size_t at = name.find('@');
   const std::string base = name.substr(0, at);
+  if (at == std::string::npos && is_random_family(name)) return name;
   const auto& bases = base_family_names();
   if (std::find(bases.begin(), bases.end(), base) == bases.end()) return {};
   if (at == std::string::npos) return base;
@@ -1244,11 +1688,38 @@ std::string base_of(const std::string& name) {
 
 bool is_family_name(const std::string& name) { return !base_of(name).empty(); }
 
+Family generate_random_family(const std::string& name, std::uint64_t seed, int per_family) {
+  const RandomFamilySpec& spec = random_family(name);
+  check_per_family(per_family);
+  Rng rng(splitmix64(seed ^ fnv1a(name)));
+  Family family;
+  family.name = family.base = name;
+  family.type = spec.type;
+  family.description = spec.description;
+  std::map<std::string, int> kinds;
+  for (int i = 0; i < per_family; ++i) {
+    RandomQuery q = spec.build(rng, spec.type);
+    Member m;
+    m.points = q.points;
+    m.label = "random";
+    m.kind = q.kind;
+    ++kinds[m.kind];
+    family.members.push_back(std::move(m));
+  }
+  nlohmann::json kind_counts = nlohmann::json::object();
+  for (const auto& [k, v] : kinds) kind_counts[k] = v;
+  family.parameters = {
+      {"per_family", per_family},
+      {"claims", "none: the truth is the exact path's"},
+      {"binary_exponents", {spec.exponent_lo, spec.exponent_hi}},
+      {"kinds", kind_counts},
+  };
+  return family;
+}
+
 Family generate_base_family(const std::string& base, std::uint64_t seed, int per_family) {
   const BaseFamily& spec = base_family(base);
-  if (per_family < kMinPerFamily || per_family > kMaxPerFamily)
-    throw std::invalid_argument("per_family must lie in [" + std::to_string(kMinPerFamily) + ", " +
-                                std::to_string(kMaxPerFamily) + "]");
+  check_per_family(per_family);
   Rng rng(splitmix64(seed ^ fnv1a(base)));
   Family family;
   family.name = family.base = base;
@@ -1311,7 +1782,73 @@ Family generate_base_family(const std::string& base, std::uint64_t seed, int per
   return family;
 }
 
+namespace {
+
+/// x 2^k, and whether that is exact (a double, not an overflow nor a rounded underflow). An
+/// overflowing product is replaced by +-DBL_MAX, so that the member stays a finite query.
+double times_power_of_two(double x, int k, bool* exact) {
+  const double y = std::ldexp(x, k);
+  if (!std::isfinite(y)) {
+    *exact = false;
+    return std::copysign(std::numeric_limits<double>::max(), x);
+  }
+  if (std::ldexp(y, -k) != x) *exact = false;
+  return y;
+}
+
+/// Every coordinate times 2^k. Scaling space by 2^k > 0 maps the trajectories of a query onto
+/// those of the scaled one at the same times: a contact at t becomes a contact at t and
+/// conversely, so the verdict and t* are unchanged. A member whose products are all exact is
+/// that scaled query and keeps its base member's claim (and its near-miss bookkeeping, the
+/// distance scaled by 2^k); any other member carries no claim.
+Family power_of_two_variant(const Family& base, const Variant& variant) {
+  const int k = variant.power_of_two;
+  Family f;
+  f.name = base.name + variant.suffix;
+  f.base = base.name;
+  f.type = base.type;
+  f.scale = variant.scale;
+  f.description = base.description + " Every coordinate multiplied by 2^" + std::to_string(k) +
+                  ": members whose products are all doubles keep their claim (a power-of-two "
+                  "scaling changes neither verdict nor t*); the others (overflow, replaced by "
+                  "+-DBL_MAX, or bits lost below 2^-1074) carry none.";
+  std::size_t exact = 0;
+  for (std::size_t i = 0; i < base.members.size(); ++i) {
+    const Member& b = base.members[i];
+    Member m;
+    m.exact_scaling = true;
+    for (int r = 0; r < 8; ++r)
+      for (int a = 0; a < 3; ++a)
+        m.points[r][a] = times_power_of_two(b.points[r][a], k, &m.exact_scaling);
+    m.label = b.label;
+    m.kind = b.kind;
+    m.source = static_cast<int>(i);
+    exact += m.exact_scaling;
+    if (m.exact_scaling && b.claim_known) {
+      m.claim_known = true;
+      m.collides = b.collides;
+      m.toi = b.toi;
+      m.partner = b.partner;
+      m.moved = b.moved;
+      m.direction = b.direction;
+      m.distance = std::ldexp(b.distance, k);
+      m.distance_log2 = b.distance_log2;
+    }
+    f.members.push_back(std::move(m));
+  }
+  f.parameters = {{"base", base.name},
+                  {"transform", "power_of_two"},
+                  {"exponent", k},
+                  {"scale", variant.scale},
+                  {"members_scaled_exactly", exact},
+                  {"members_without_claim", base.members.size() - exact}};
+  return f;
+}
+
+}  // namespace
+
 Family make_variant(const Family& base, const Variant& variant) {
+  if (variant.power_of_two != 0) return power_of_two_variant(base, variant);
   Family f;
   f.name = base.name + variant.suffix;
   f.base = base.name;
@@ -1360,7 +1897,7 @@ std::vector<Family> generate_families(std::uint64_t seed, int per_family,
     if (!wanted(n)) continue;
     const std::string b = base_of(n);
     if (n == b) {
-      out.push_back(base(b));
+      out.push_back(is_random_family(b) ? generate_random_family(b, seed, per_family) : base(b));
       continue;
     }
     for (const Variant& v : variants())

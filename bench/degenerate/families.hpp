@@ -18,6 +18,18 @@
 // arithmetic: the input rounding is part of the case and their truth is whatever the exact
 // path says about the rounded doubles (members carry no claim).
 //
+// Variant families `<base>@p2^<k>` multiply every coordinate by 2^k, k in {-1000, -300, -100,
+// 100, 300, 1000}. Scaling space by 2^k > 0 maps every trajectory onto the scaled one at the
+// same times, so it changes neither the verdict nor t*; where every product is a double (no
+// overflow, no bit lost below 2^-1074) the member is exactly that scaled query and keeps its
+// base member's claim. A member with an inexact product carries no claim (an overflowing
+// product is replaced by +-DBL_MAX, an underflowing one rounded to nearest).
+//
+// Random families (`vf_wide_exponent_100`, ..., `ee_huge_triangle_subnormal_motion`) are
+// seeded random queries with widely spread exponents, without a construction and without a
+// claim: their truth is the exact path's. They have no variants (their coordinates already span
+// the exponent range; scaling them would overflow or round).
+//
 // Deterministic: the members of a family depend only on (seed, family name, per_family), not on
 // which other families are generated, and only IEEE operations and mt19937_64 are used.
 #pragma once
@@ -53,7 +65,8 @@ struct Member {
   /// The construction's sub-kind (e.g. "edge", "vertex", "face", "coplanar-touch").
   std::string kind;
 
-  /// The construction's claim; only base families make one (claim_known).
+  /// The construction's claim; base families make one (claim_known), and power-of-two variants
+  /// keep it where the scaling is exact.
   bool claim_known = false;
   bool collides = false;
   mpq_class toi;  ///< the exact first contact time t*, when collides
@@ -69,15 +82,17 @@ struct Member {
   double distance = 0.0;
   int distance_log2 = 0;  ///< k of a "2^-k" member; 0 for "1ulp" and the others
 
-  /// Variant families: the index of the base family's member this one rounds.
+  /// Variant families: the index of the base family's member this one rounds (or scales).
   int source = -1;
+  /// Power-of-two variants: every coordinate is the base member's times 2^k exactly.
+  bool exact_scaling = false;
 };
 
 struct Family {
-  std::string name;  ///< e.g. "vf_interior", "vf_interior@s1e-12"
-  std::string base;  ///< the base family's name (== name for a base family)
+  std::string name;  ///< e.g. "vf_interior", "vf_interior@s1e-12", "vf_interior@p2^-1000"
+  std::string base;  ///< the base family's name (== name for a base or random family)
   QueryType type = QueryType::vertex_face;
-  double scale = 1.0;   ///< variants: every coordinate multiplied by scale ...
+  double scale = 1.0;   ///< variants: every coordinate multiplied by scale (2^k: exactly) ...
   double offset = 0.0;  ///< ... or offset added to it
   std::string description;
   nlohmann::json parameters = nlohmann::json::object();
@@ -88,9 +103,12 @@ struct Family {
 
 /// A scaled or translated copy of a base family.
 struct Variant {
-  const char* suffix;  ///< "@s1e-12", ..., "@t1e8"
+  const char* suffix;  ///< "@s1e-12", ..., "@t1e8", "@p2^-1000", ..., "@p2^1000"
   double scale;
   double offset;
+  /// scale is 2^power_of_two exactly (power-of-two variants keep exact members' claims); 0 for
+  /// the rounded scalings and translations.
+  int power_of_two = 0;
 };
 
 /// The near misses' requested offsets 2^-k (besides the one-ulp move).
@@ -102,20 +120,29 @@ constexpr int kDefaultPerFamily = 14;
 constexpr int kMinPerFamily = 2;
 constexpr int kMaxPerFamily = 100000;
 
-/// The base families, vertex-face then edge-edge.
+/// The base families (constructions with claims), vertex-face then edge-edge.
 const std::vector<std::string>& base_family_names();
-/// The variants applied to every base family (scales 1e-12, 1e-6, 1e6, 1e12; offsets 1e4, 1e8).
+/// The random families (no claims, no variants), vertex-face then edge-edge.
+const std::vector<std::string>& random_family_names();
+bool is_random_family(const std::string& name);
+/// The variants applied to every base family (scales 1e-12, 1e-6, 1e6, 1e12; offsets 1e4, 1e8;
+/// then the powers of two 2^-1000, 2^-300, 2^-100, 2^100, 2^300, 2^1000).
 const std::vector<Variant>& variants();
-/// Every family: the base families, then for each variant every base family with it.
+/// Every family: the base families, the random families, then for each variant every base
+/// family with it.
 std::vector<std::string> all_family_names();
 bool is_family_name(const std::string& name);
-/// The base of a family name ("vf_interior@s1e-6" -> "vf_interior"); empty if not a family.
+/// The base of a family name ("vf_interior@s1e-6" -> "vf_interior"; a base or random family
+/// is its own); empty if not a family.
 std::string base_of(const std::string& name);
 
 /// Base family `base` (throws std::invalid_argument for an unknown name or a per_family out of
 /// [kMinPerFamily, kMaxPerFamily]). Its first member collides and its second does not.
 Family generate_base_family(const std::string& base, std::uint64_t seed, int per_family);
-/// The variant of a base family (members rounded; no claims).
+/// Random family `name` (same errors): per_family seeded random queries, no claims.
+Family generate_random_family(const std::string& name, std::uint64_t seed, int per_family);
+/// The variant of a base family: rounded members without claims, or (power of two) members
+/// scaled by 2^k that keep their claims where the scaling is exact.
 Family make_variant(const Family& base, const Variant& variant);
 /// The named families (all of them when `names` is empty), in all_family_names() order.
 std::vector<Family> generate_families(std::uint64_t seed, int per_family,
