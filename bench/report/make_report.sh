@@ -5,8 +5,9 @@
 #
 # Builds the `exactccd` command if needed (Release, in build/ or $EXACTCCD_BUILD_DIR), runs
 # `exactccd study` on the shipped sample queries, the generated degenerate suite
-# (tests/data/degenerate-suite, when present), the scene queries (tests/data/scene-queries) and
-# the simulation-like set, and writes
+# (tests/data/degenerate-suite, when present), the scene queries (tests/data/scene-queries), the
+# hard families of `exactccd generate` (resting, stacked, wide exponents, 2^+-1000 scalings), the
+# sample queries scaled by 2^+-1000, and the simulation-like set, and writes
 # bench/report/REPORT.md, bench/report/speed_vs_error_<dataset>.png and bench/report/toi_error.png
 # (the study's raw JSON too when $EXACTCCD_STUDY_JSON names a file). Plots need Debian's
 # python3-matplotlib (.ci/install-deps.sh --with-plots installs it). About 6 minutes on a
@@ -44,6 +45,27 @@ fi
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+# The hard families of issue 10, generated here (exact truth from the constructions or the exact
+# path): resting and stacked contact, each also scaled by 2^-1000 and 2^1000, and the wide
+# exponent spreads +-100/300/1000 and a huge primitive against subnormal motion.
+hard_families=()
+for base in vf_resting ee_resting vf_stacked ee_stacked; do
+  hard_families+=("$base" "$base@p2^-1000" "$base@p2^1000")
+done
+for kind in vf ee; do
+  hard_families+=("${kind}_wide_exponent_100" "${kind}_wide_exponent_300" "${kind}_wide_exponent_1000"
+    "${kind}_huge_triangle_subnormal_motion")
+done
+"$exactccd" generate --out "$tmp/hard-families" --per-family 28 \
+  --families "$(IFS=,; echo "${hard_families[*]}")" > /dev/null
+paths+=("$tmp/hard-families")
+# The sample queries scaled by 2^-1000 and 2^1000 (queries not exactly doubles after scaling
+# left out): a power-of-two scale changes no answer, and should change no cost.
+for k in -1000 1000; do
+  /usr/bin/python3 bench/report/scale_queries.py "$k" tests/data/sample-queries \
+    "$tmp/sample-queries-2pow$k"
+  paths+=("$tmp/sample-queries-2pow$k")
+done
 command=("$exactccd" study --json --out-md "$tmp/tables.md" "${simulation_args[@]}" "${paths[@]}")
 echo "make_report: ${command[*]}" >&2
 status=0
