@@ -187,6 +187,14 @@ EXACTCCD_STAGE_BENCH(scene, exact_at_double);
 EXACTCCD_STAGE_BENCH(scene, filter_exact_toi);
 EXACTCCD_STAGE_BENCH(degenerate_suite, exact_at_double);
 EXACTCCD_STAGE_BENCH(degenerate_suite, filter_exact_toi);
+// The other stages, for the whole picture of where a data set's mean goes: queries the interval
+// filters decide alone, and those left to the exact path.
+EXACTCCD_STAGE_BENCH(full_simulation, filter);
+EXACTCCD_STAGE_BENCH(full_simulation, exact);
+EXACTCCD_STAGE_BENCH(sample, filter);
+EXACTCCD_STAGE_BENCH(sample, exact);
+EXACTCCD_STAGE_BENCH(scene, filter);
+EXACTCCD_STAGE_BENCH(scene, exact);
 
 }  // namespace
 

@@ -52,7 +52,7 @@ class FixedInt {
     const unsigned whole = s / 64, bits = s % 64;
     const Limb low = magnitude << bits;
     const Limb spill = (magnitude >> 1) >> (63 - bits);  // magnitude >> (64 - bits), 0 if bits = 0
-    FixedInt r;
+    FixedInt r{Uninitialized{}};  // every limb is written below
     Limb carry = negative & 1;  // -x = ~x + 1, applied when m < 0
     for (int i = 0; i < N; ++i) {
       const auto u = static_cast<unsigned>(i);
@@ -68,7 +68,7 @@ class FixedInt {
   /// reduction modulo 2^(64M), exact when the value fits in M limbs.
   template <int M>
   FixedInt<M> resized() const {
-    FixedInt<M> r;
+    FixedInt<M> r{typename FixedInt<M>::Uninitialized{}};  // every limb is written below
     const Limb extension = is_negative() ? ~Limb{0} : 0;
     for (int i = 0; i < M; ++i) r.limb_[i] = i < N ? limb_[i] : extension;
     return r;
@@ -160,6 +160,64 @@ class FixedInt {
   /// vanishes modulo 2^(64(A+B)), and the result is sign-extended beyond A + B limbs.
   template <int A, int B>
   EXACTCCD_FIXED_INLINE static FixedInt product(const FixedInt<A>& a, const FixedInt<B>& b) {
+    // The narrowest operands (the cubic's coordinate differences and cross products near unit
+    // scale) in native 128-bit multiplications: the same exact product.
+    if constexpr (A == 1 && B == 1) {
+      return from_wide(static_cast<__int128>(static_cast<std::int64_t>(a.limb_[0])) *
+                       static_cast<std::int64_t>(b.limb_[0]));
+    } else if constexpr (A == 2 && B == 1) {
+      return two_by_one(a, b.limb_[0]);
+    } else if constexpr (A == 1 && B == 2) {
+      return two_by_one(b, a.limb_[0]);
+    } else {
+      return schoolbook_product(a, b);
+    }
+  }
+
+  /// |value| as N limbs (for a value > -2^(64N-1), i.e. any value the bounds admit).
+  FixedInt magnitude() const { return is_negative() ? -*this : *this; }
+
+ private:
+  template <int>
+  friend class FixedInt;
+
+  /// The signed 128-bit integer p, sign-extended (or, for N = 1, reduced modulo 2^64).
+  EXACTCCD_FIXED_INLINE static FixedInt from_wide(__int128 p) {
+    FixedInt r{Uninitialized{}};  // every limb is written below
+    r.limb_[0] = static_cast<Limb>(p);
+    if constexpr (N > 1) {
+      const auto high = static_cast<Limb>(static_cast<Wide>(p) >> 64);
+      r.limb_[1] = high;
+      for (int i = 2; i < N; ++i) r.limb_[i] = static_cast<std::int64_t>(high) < 0 ? ~Limb{0} : 0;
+    }
+    return r;
+  }
+
+  /// w s for a two-limb w = w_hi 2^64 + w_lo (w_hi signed, w_lo unsigned) and a one-limb s,
+  /// modulo 2^(64N). With s_u = s + 2^64 [s < 0] the limb read as unsigned,
+  /// w_lo s = w_lo s_u - 2^64 [s < 0] w_lo, so
+  /// w s = (w_hi s + floor(w_lo s_u / 2^64) - [s < 0] w_lo) 2^64 + (w_lo s_u mod 2^64),
+  /// where the first factor is below 2^126 + 2^65 in magnitude: exact in a signed __int128.
+  EXACTCCD_FIXED_INLINE static FixedInt two_by_one(const FixedInt<2>& w, Limb s_limb) {
+    const auto s = static_cast<std::int64_t>(s_limb);
+    const Wide low = static_cast<Wide>(w.limb_[0]) * s_limb;
+    const __int128 high = static_cast<__int128>(static_cast<std::int64_t>(w.limb_[1])) * s +
+                          static_cast<__int128>(low >> 64) -
+                          (s < 0 ? static_cast<__int128>(w.limb_[0]) : 0);
+    FixedInt r{Uninitialized{}};  // every limb is written below
+    r.limb_[0] = static_cast<Limb>(low);
+    if constexpr (N > 1) r.limb_[1] = static_cast<Limb>(high);
+    if constexpr (N > 2) {
+      const auto top = static_cast<Limb>(static_cast<Wide>(high) >> 64);
+      r.limb_[2] = top;
+      for (int i = 3; i < N; ++i) r.limb_[i] = static_cast<std::int64_t>(top) < 0 ? ~Limb{0} : 0;
+    }
+    return r;
+  }
+
+  template <int A, int B>
+  EXACTCCD_FIXED_INLINE static FixedInt schoolbook_product(const FixedInt<A>& a,
+                                                           const FixedInt<B>& b) {
     constexpr int R = N < A + B ? N : A + B;
     FixedInt<R> r;
     for (int i = 0; i < A && i < R; ++i) {
@@ -190,12 +248,6 @@ class FixedInt {
     return r.template resized<N>();
   }
 
-  /// |value| as N limbs (for a value > -2^(64N-1), i.e. any value the bounds admit).
-  FixedInt magnitude() const { return is_negative() ? -*this : *this; }
-
- private:
-  template <int>
-  friend class FixedInt;
   Limb limb_[N];
 };
 

@@ -27,10 +27,19 @@ namespace exactccd::exact {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-double next_up(double x) { return std::nextafter(x, kInf); }
-double next_down(double x) { return std::nextafter(x, -kInf); }
+/// The doubles next to a finite x, by its bit pattern (std::nextafter without the library
+/// call): for x > 0 the neighbours have patterns one apart, for x < 0 likewise with the order
+/// reversed, and both zeros step to the smallest subnormals.
+double next_up(double x) {
+  if (x == 0) return std::numeric_limits<double>::denorm_min();
+  const std::uint64_t b = predicates::bits_of(x);
+  return predicates::double_of(x > 0 ? b + 1 : b - 1);
+}
+double next_down(double x) {
+  if (x == 0) return -std::numeric_limits<double>::denorm_min();
+  const std::uint64_t b = predicates::bits_of(x);
+  return predicates::double_of(x > 0 ? b - 1 : b + 1);
+}
 
 /// hi - lo <= width exactly (0 <= lo <= hi finite, width > 0 finite): difference_at_most
 /// without its rationals unless the rounded difference equals width. Rounding, in any IEEE
@@ -225,7 +234,8 @@ class Guide {
     for (int i = 0; i < 8; ++i) {
       const Real next = t - g(t) / dg(t);
       if (!(next >= lo && next <= hi)) break;  // NaN included
-      const bool converged = std::fabs(next - t) <= std::fabs(t) * static_cast<Real>(0x1p-60);
+      const bool converged =
+          std::fabs(next - t) <= std::fabs(t) * std::numeric_limits<Real>::epsilon();
       t = next;
       if (converged) break;
     }
@@ -286,8 +296,6 @@ std::pair<double, double> guided_bisection(const CubicAtDoubles& f, double lo, d
                                            double width) {
   double mid;
   if (!middle_double(lo, hi, width, &mid)) return {lo, hi};  // the reference loop's first stop
-  // The guide computes in long double (x87): no caller's x87 trap or precision applies there.
-  const predicates::X87EnvironmentGuard x87;
   const double lo0 = lo, hi0 = hi;
   RootKnowledge known(lo0, hi0);
   std::optional<Guide> guide;

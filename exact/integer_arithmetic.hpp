@@ -132,12 +132,57 @@ mpz_class to_mpz(const FixedInt<N>& x) {
 
 inline const mpz_class& to_mpz(const mpz_class& x) { return x; }
 
+// ---- certified enclosures in doubles ---------------------------------------------------------
+
+/// |x| = m 2^e + r with 0 <= r < 2^e and m < 2^53 its leading bits (m >= 2^52 when e > 0);
+/// `inexact`: r != 0. For x = 0, m = e = 0. PROOF: proofs/filters.md#exact-cubic-retry
+struct LeadingBits {
+  std::uint64_t m = 0;
+  long e = 0;
+  bool inexact = false;
+};
+
+template <int N>
+LeadingBits leading_bits(const FixedInt<N>& x) {
+  const FixedInt<N> a = x.magnitude();  // exact: every value the bounds admit is > -2^(64N-1)
+  int top = N - 1;
+  while (top >= 0 && a.limb(top) == 0) --top;
+  if (top < 0) return {};
+  const long bits = 64L * top + 64 - __builtin_clzll(a.limb(top));
+  if (bits <= 53) return {a.limb(0), 0, false};
+  LeadingBits b;
+  b.e = bits - 53;
+  const int limb = static_cast<int>(b.e / 64), offset = static_cast<int>(b.e % 64);
+  std::uint64_t m = a.limb(limb) >> offset;
+  if (offset != 0 && limb + 1 < N) m |= a.limb(limb + 1) << (64 - offset);
+  b.m = m & ((std::uint64_t{1} << 53) - 1);
+  bool below = offset != 0 && (a.limb(limb) & ((std::uint64_t{1} << offset) - 1)) != 0;
+  for (int i = 0; i < limb; ++i) below = below || a.limb(i) != 0;
+  b.inexact = below;
+  return b;
+}
+
+inline LeadingBits leading_bits(const mpz_class& x) {
+  if (sgn(x) == 0) return {};
+  const auto bits = static_cast<long>(mpz_sizeinbase(x.get_mpz_t(), 2));
+  mpz_class m = abs(x);
+  LeadingBits b;
+  if (bits > 53) {
+    b.e = bits - 53;
+    b.inexact = static_cast<long>(mpz_scan1(m.get_mpz_t(), 0)) < b.e;
+    mpz_tdiv_q_2exp(m.get_mpz_t(), m.get_mpz_t(), static_cast<mp_bitcnt_t>(b.e));
+  }
+  b.m = mpz_getlimbn(m.get_mpz_t(), 0);  // m < 2^53 fits the lowest limb (GMP_NUMB_BITS >= 53)
+  static_assert(GMP_NUMB_BITS >= 53, "a 53-bit value in one GMP limb");
+  return b;
+}
+
 // ---- rounded values, for guidance only ---------------------------------------------------------
 
-/// The floating point of guidance (exact/guided_bisection.hpp): x87 extended precision where
-/// long double is that (64-bit significands), else double.
-using GuideReal = std::conditional_t<std::numeric_limits<long double>::digits == 64, long double,
-                                     double>;
+/// The floating point of guidance (exact/guided_bisection.hpp): double. (Extended precision
+/// would pin a root no better once the probes use exact values, and costs x87 arithmetic and an
+/// x87 environment switch per bisection.)
+using GuideReal = double;
 
 /// x ~ mantissa 2^exponent, 1/2 <= |mantissa| <= 1 (mantissa 0 for x = 0), from the leading 64
 /// bits of |x|. Nothing is decided from it.

@@ -16,6 +16,7 @@
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/inclusion.hpp"
+#include "exact/fixed_int.hpp"
 #include "exact/integer_arithmetic.hpp"
 #include "exactccd/types.hpp"
 
@@ -129,14 +130,17 @@ using SameCubicIntegers = CubicIntegers<Int, Int, Int>;
 
 namespace detail {
 
-/// out0 = X_first - X_second at t = 0, out1 = its change over the step, per axis.
+/// out0 = X_first - O0 at t = 0 and out1 = its change over the step, per axis, with O0, O1 the
+/// origin's coordinates at t = 0 and t = 1. (The first point's coordinates are formed where
+/// they are used: cheaper than storing all 24 first.)
 template <class Int>
-void difference(const Int (&x)[8][3], int first, int second, Int (&out0)[3], Int (&out1)[3]) {
+void difference(const IntegerCoordinates& q, int first, const Int (&origin0)[3],
+                const Int (&origin1)[3], Int (&out0)[3], Int (&out1)[3]) {
   for (int k = 0; k < 3; ++k) {
-    out0[k] = x[first][k];
-    out0[k] -= x[second][k];
-    out1[k] = x[first + 4][k];
-    out1[k] -= x[second + 4][k];
+    out0[k] = integer_coordinate<Int>(q, first, k);
+    out0[k] -= origin0[k];
+    out1[k] = integer_coordinate<Int>(q, first + 4, k);
+    out1[k] -= origin1[k];
     out1[k] -= out0[k];
   }
 }
@@ -172,13 +176,15 @@ void coplanarity_coefficients(const IntegerCoordinates& q, typename Ints::Coeffi
   // vertex-face rows p, a, b, c: v = b - a, w = c - a, u = p - a;
   // edge-edge rows a0, a1, b0, b1: v = a1 - a0, w = b0 - a0, u = b1 - a0.
   const int origin = vf ? 1 : 0, v_end = vf ? 2 : 1, w_end = vf ? 3 : 2, u_end = vf ? 0 : 3;
-  D x[8][3];
-  for (int row = 0; row < 8; ++row)
-    for (int axis = 0; axis < 3; ++axis) x[row][axis] = integer_coordinate<D>(q, row, axis);
   D v0[3], dv[3], w0[3], dw[3], u0[3], du[3];
-  detail::difference(x, v_end, origin, v0, dv);
-  detail::difference(x, w_end, origin, w0, dw);
-  detail::difference(x, u_end, origin, u0, du);
+  const D o0[3] = {integer_coordinate<D>(q, origin, 0), integer_coordinate<D>(q, origin, 1),
+                   integer_coordinate<D>(q, origin, 2)};
+  const D o1[3] = {integer_coordinate<D>(q, origin + 4, 0),
+                   integer_coordinate<D>(q, origin + 4, 1),
+                   integer_coordinate<D>(q, origin + 4, 2)};
+  detail::difference(q, v_end, o0, o1, v0, dv);
+  detail::difference(q, w_end, o0, o1, w0, dw);
+  detail::difference(q, u_end, o0, o1, u0, du);
   X x0[3] = {X(0), X(0), X(0)}, x1[3] = {X(0), X(0), X(0)},
     x2[3] = {X(0), X(0), X(0)};  // v x w = x0 + t x1 + t^2 x2
   detail::add_cross(x0, v0, w0);
@@ -212,6 +218,23 @@ Int scaled_cubic_value(const Int (&c)[4], const Factor& T, unsigned k) {
   return r;
 }
 
+namespace detail {
+
+/// 2^k x(t) = 2^k x0 + tau (x1 - x0) for point i (rows i and i + 4) along `axis`, at
+/// t = tau 2^-k: an exact integer.
+template <class Int>
+Int position_at_time(const IntegerCoordinates& q, int i, int axis, std::uint64_t tau,
+                     unsigned k) {
+  Int r = integer_coordinate<Int>(q, i + 4, axis);
+  const Int x0 = integer_coordinate<Int>(q, i, axis);
+  r -= x0;
+  multiply_by(r, tau);
+  add_shifted(r, x0, k);
+  return r;
+}
+
+}  // namespace detail
+
 /// Exact contact test at t = tau 2^-k in [0, 1], where the cubic vanishes (coplanar): the
 /// positions 2^k x(t) = 2^k x0 + tau (x1 - x0) are exact integers, and scaling space by 2^k
 /// changes no incidence.
@@ -220,17 +243,54 @@ bool contact_at_time(const IntegerCoordinates& q, std::uint64_t tau, unsigned k)
   using Position = predicates::Vec3<predicates::FixedPoly<Int, 0>>;
   Position x[4];
   for (int i = 0; i < 4; ++i) {
-    Int* axes[3] = {&x[i].x.c[0], &x[i].y.c[0], &x[i].z.c[0]};
-    for (int axis = 0; axis < 3; ++axis) {
-      Int& r = *axes[axis];
-      r = integer_coordinate<Int>(q, i + 4, axis);
-      const Int x0 = integer_coordinate<Int>(q, i, axis);
-      r -= x0;
-      multiply_by(r, tau);
-      add_shifted(r, x0, k);
-    }
+    x[i].x.c[0] = detail::position_at_time<Int>(q, i, 0, tau, k);
+    x[i].y.c[0] = detail::position_at_time<Int>(q, i, 1, tau, k);
+    x[i].z.c[0] = detail::position_at_time<Int>(q, i, 2, tau, k);
   }
   auto sign_at = [](const predicates::FixedPoly<Int, 0>& p) { return sign_of(p.c[0]); };
+  return q.type == QueryType::vertex_face
+             ? predicates::point_in_triangle_at(x[0], x[1], x[2], x[3], sign_at)
+             : predicates::segments_intersect_at(x[0], x[1], x[2], x[3], sign_at);
+}
+
+/// The bits of the contact test's positions, their differences and every intermediate of their
+/// computation, with one to spare: below 2^(L+k+1) (proofs/filters.md#fixed-size-exact-at-doubles,
+/// Lemma F4), so that in P limbs with L + k + 2 <= 64P - 1 every value of the inclusion
+/// predicates, below 2^(2(L+k)+4) <= 2^(128P-2), fits 2P limbs.
+constexpr long contact_position_bits(long coordinate_bits, long time_exponent) {
+  return coordinate_bits + time_exponent + 2;
+}
+
+/// A position, or a difference of positions, in P limbs whose products are formed exactly in
+/// 2P limbs (FixedInt::product): the contact test without full-width multiplications.
+template <int P>
+struct WideningInt {
+  FixedInt<P> value;
+};
+
+template <int P>
+EXACTCCD_FIXED_INLINE WideningInt<P> operator-(const WideningInt<P>& a, const WideningInt<P>& b) {
+  return {a.value - b.value};
+}
+
+template <int P>
+EXACTCCD_FIXED_INLINE FixedInt<2 * P> operator*(const WideningInt<P>& a, const WideningInt<P>& b) {
+  return FixedInt<2 * P>::product(a.value, b.value);
+}
+
+/// contact_at_time with the positions in P limbs (contact_position_bits(L, k) <= 64P - 1) and
+/// every product, orientation, cross-product component and dot product in 2P limbs: the same
+/// values, exact by the same bounds, with narrower multiplications.
+template <int P>
+bool contact_at_time_widening(const IntegerCoordinates& q, std::uint64_t tau, unsigned k) {
+  using Position = predicates::Vec3<WideningInt<P>>;
+  Position x[4];
+  for (int i = 0; i < 4; ++i) {
+    x[i].x.value = detail::position_at_time<FixedInt<P>>(q, i, 0, tau, k);
+    x[i].y.value = detail::position_at_time<FixedInt<P>>(q, i, 1, tau, k);
+    x[i].z.value = detail::position_at_time<FixedInt<P>>(q, i, 2, tau, k);
+  }
+  auto sign_at = [](const FixedInt<2 * P>& v) { return sign_of(v); };
   return q.type == QueryType::vertex_face
              ? predicates::point_in_triangle_at(x[0], x[1], x[2], x[3], sign_at)
              : predicates::segments_intersect_at(x[0], x[1], x[2], x[3], sign_at);

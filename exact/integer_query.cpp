@@ -2,6 +2,8 @@
 
 #include "exact/fixed_width_dispatch.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
@@ -199,9 +201,59 @@ bool IntegerQuery::contact_at(double t) const {
     ++g_gmp_computations;
     return contact_at_time<mpz_class>(coords_, d.numerator, d.exponent);
   }
+  // Positions in P limbs, products in 2P (at most the widest fixed width), else full width.
+  const int position_limbs =
+      fixed_limbs_for(contact_position_bits(coords_.bits, static_cast<long>(d.exponent)));
+  if (position_limbs != 0 && 2 * position_limbs <= kMaxFixedLimbs) {
+    return with_limbs(position_limbs, [&](auto n) {
+      constexpr int P = decltype(n)::value;
+      if constexpr (2 * P <= kMaxFixedLimbs) {
+        return contact_at_time_widening<P>(coords_, d.numerator, d.exponent);
+      } else {
+        return contact_at_time<FixedInt<P>>(coords_, d.numerator, d.exponent);  // not reached
+      }
+    });
+  }
   return with_limbs(limbs, [&](auto n) {
     return contact_at_time<FixedInt<decltype(n)::value>>(coords_, d.numerator, d.exponent);
   });
+}
+
+void IntegerQuery::scaled_coefficient_bounds(double (&lo)[4], double (&hi)[4]) const {
+  LeadingBits b[4];
+  int sign[4];
+  if (gmp_) {
+    for (int i = 0; i < 4; ++i) b[i] = leading_bits(gmp_->c[i]), sign[i] = sign_of(gmp_->c[i]);
+  } else {
+    with_limbs(coefficient_limbs_, [&](auto n) {  // in their own width
+      constexpr int N = decltype(n)::value;
+      for (int i = 0; i < 4; ++i) {
+        const FixedInt<N> c = fixed_[i].resized<N>();
+        b[i] = leading_bits(c), sign[i] = sign_of(c);
+      }
+    });
+  }
+  // |c_i| < 2^(e_i + bits(m_i)), its bit length: dividing by 2^s, s the largest bit length,
+  // leaves the largest |c_i| in [1/2, 1) and every one below 1.
+  long s = LONG_MIN;
+  for (const LeadingBits& bi : b)
+    if (bi.m != 0) s = std::max(s, bi.e + 64 - __builtin_clzll(bi.m));
+  for (int i = 0; i < 4; ++i) {
+    double low = 0, high = 0;  // bounds of |c_i| 2^-s
+    if (b[i].m != 0) {
+      const long k = b[i].e - s;  // |c_i| 2^-s = (m + r 2^-e) 2^k, 0 <= r 2^-e < 1
+      if (k >= -1074) {
+        // m 2^k and (m + 1) 2^k are doubles (m + 1 <= 2^53, k >= -1074): ldexp is exact.
+        low = std::ldexp(static_cast<double>(b[i].m), static_cast<int>(k));
+        high = b[i].inexact ? std::ldexp(static_cast<double>(b[i].m + 1), static_cast<int>(k))
+                            : low;
+      } else {
+        high = 0x1p-1021;  // |c_i| 2^-s < 2^(k + 53) <= 2^-1021
+      }
+    }
+    lo[i] = sign[i] < 0 ? -high : low;
+    hi[i] = sign[i] < 0 ? -low : high;
+  }
 }
 
 }  // namespace exactccd::exact

@@ -55,6 +55,12 @@ class IntegerQuery final : public CubicAtDoubles {
   int sign_at(double t, Approximation* value) const override;
   void approximate_coefficients(Approximation (&c)[4]) const override;
 
+  /// Enclosures in doubles of the coefficients of coefficients() divided by 2^s, s the largest
+  /// of their bit lengths (so the largest magnitude lies in [1/2, 1)): lo[i] <= c_i 2^-s <=
+  /// hi[i], equal when exact (zeros included), else one unit of the 53rd bit apart. A positive
+  /// multiple of the cubic: the same roots and signs. PROOF: proofs/filters.md#exact-cubic-retry
+  void scaled_coefficient_bounds(double (&lo)[4], double (&hi)[4]) const;
+
   // For tests and benchmarks.
   const IntegerCoordinates& coordinates() const { return coords_; }
   /// Limbs of the FixedInt holding the coefficients; 0 when they are in GMP.

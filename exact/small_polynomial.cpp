@@ -138,6 +138,9 @@ SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count) {
 
 void SmallPolynomial::set_wide_enclosure() {
 #if EXACTCCD_WIDE_INTERVAL
+  // The ends are exact long doubles only at 64-bit precision: never under the caller's x87
+  // precision control (FpEnvironment.X87ControlWordUnmaskedDoesNotTrapAndIsRestored).
+  const predicates::X87EnvironmentGuard extended(predicates::Rounding::upward);
   for (int i = 0; i < 4; ++i) wide_c_[i] = in_gmp_ ? enclosure_of(gmp_[i]) : enclosure_of(fixed_[i]);
   wide_ = true;
 #endif

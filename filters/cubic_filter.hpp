@@ -24,6 +24,9 @@ struct FilterOutcome {
   bool toi_final = false;
   /// Exact answers at double times (ExactAtDoubles) were consulted.
   bool exact_used = false;
+  /// Uncertain because subdivision could not isolate the cubic's roots (its interval
+  /// coefficients too wide, or a multiple root): a tighter enclosure of the cubic may decide.
+  bool roots_unresolved = false;
 };
 
 /// Exact answers at double times, consulted only where the interval tests cannot decide
@@ -45,12 +48,18 @@ class ExactAtDoubles {
 
 /// `Inclusion` provides, for a time interval T (an Interval inside [0, t_max]):
 ///   bool excluded(const Interval& T)            -- certainly no contact at any t in T;
+///   bool excluded_in_leading_projection(const Interval& T)
+///                                               -- the same, tried in one projection only;
 ///   bool certainly_included(const Interval& T)  -- contact at every coplanar t in T.
-/// Must be called with a RoundingGuard held.
+/// Must be called with a RoundingGuard held. `tighter_cubic_available`: the caller retries with
+/// a tighter enclosure of the cubic when roots_unresolved, so the search gives up (uncertain,
+/// roots_unresolved) as soon as a node of width 1/4 or less that survives exclusion has no
+/// Bernstein coefficient of certain sign: its enclosure is then too wide to isolate anything.
 template <class Inclusion>
 EXACTCCD_CERTIFIED
 FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
-                           double toi_width, const Inclusion& inclusion, ExactAtDoubles& exact);
+                           double toi_width, const Inclusion& inclusion, ExactAtDoubles& exact,
+                           bool tighter_cubic_available = false);
 
 /// True when all four Bernstein coefficients of the cubic on [0, t_max] are certainly
 /// non-zero with one sign: no coplanar instant, hence no contact. Needs a RoundingGuard.
