@@ -228,30 +228,38 @@ TEST(FpEnvironment, SceneAndDiscreteUnderHostileStateFromInsideTheHostsArena) {
   }
 }
 
-/// The x87 unit: the guided TOI bisection computes probes in long double. A caller's x87 control
-/// word with exceptions unmasked must not trap there, and must come back unchanged.
+/// The x87 unit: the exact stage's wide-range interval filter computes its bounds in long double
+/// (polynomials wider than 320 bits: the wide-exponent generators). A caller's x87 control word
+/// with exceptions unmasked must not trap there, one with single precision and rounding toward
+/// zero must not loosen the bounds, and both must come back unchanged.
 TEST(FpEnvironment, X87ControlWordUnmaskedDoesNotTrapAndIsRestored) {
   const std::uint16_t trapping = 0x037f & ~(0x01 | 0x04 | 0x08);  // IM, ZM, OM cleared
+  const std::uint16_t chopping_single = 0x0c7f;                     // RC toward zero, PC 24 bits
   std::uint16_t saved = 0, after = 0;
   asm volatile("fnstcw %0" : "=m"(saved));
-  std::size_t decided_exactly = 0;
+  std::size_t wide_exact = 0;
   const std::uint64_t seed = seed_from_environment(0x87);
   for (const Generator& g : all_generators()) {
+    const bool wide = g.name().find("wide_exponent") != std::string::npos;
     for (std::uint64_t i = 0; i < affordable_count(g, scaled_count(40, scale_from_environment()));
          ++i) {
       const DoubleQuery q = generate(g, seed, i);
-      const CcdResult clean = ccd(q, CcdOptions{});
-      asm volatile("fldcw %0" : : "m"(trapping));
-      const CcdResult r = ccd(q, CcdOptions{});
-      asm volatile("fnstcw %0" : "=m"(after));
-      asm volatile("fldcw %0" : : "m"(saved));
-      EXPECT_EQ(after, trapping);
-      EXPECT_TRUE(same(r, clean)) << describe(q);
-      if (r.decided_by == Stage::filter_exact_toi || r.decided_by == Stage::exact_at_double)
-        ++decided_exactly;
+      for (const Mode mode : {Mode::filtered, Mode::exact}) {
+        const CcdOptions options = with_mode(CcdOptions{}, mode);
+        const CcdResult clean = ccd(q, options);
+        for (const std::uint16_t hostile : {trapping, chopping_single}) {
+          asm volatile("fldcw %0" : : "m"(hostile));
+          const CcdResult r = ccd(q, options);
+          asm volatile("fnstcw %0" : "=m"(after));
+          asm volatile("fldcw %0" : : "m"(saved));
+          EXPECT_EQ(after, hostile);
+          EXPECT_TRUE(same(r, clean)) << describe(q);
+        }
+        if (wide && clean.decided_by == Stage::exact) ++wide_exact;
+      }
     }
   }
-  EXPECT_GT(decided_exactly, 0u);  // the guided bisection actually ran
+  EXPECT_GT(wide_exact, 0u);  // the wide-range filter actually ran
 }
 
 }  // namespace

@@ -132,12 +132,11 @@ class FpEnvironmentGuard {
 #endif
 
 #if defined(__i386__) || defined(__x86_64__)
-/// The x87 unit (long double): the guided TOI bisection computes its probes in extended
-/// precision, and the wide-range interval filter of the exact stage (exact/wide_interval.hpp)
-/// its bounds, rounding upward. Probes only guide (exact signs decide), but a caller's unmasked
-/// x87 exception would trap there: all masked, 64-bit precision, the requested rounding (to
-/// nearest by default); the caller's whole x87 environment (control word and sticky flags) is
-/// restored on return.
+/// The x87 unit (long double): the wide-range interval filter of the exact stage
+/// (exact/wide_interval.hpp) computes its bounds in extended precision, rounding upward. A
+/// caller's unmasked x87 exception would trap there, and its precision or rounding control would
+/// break the bounds: all masked, 64-bit precision, the requested rounding (to nearest by
+/// default); the caller's control word and sticky flags are restored on return.
 class X87EnvironmentGuard {
  public:
   explicit X87EnvironmentGuard(Rounding rounding = Rounding::to_nearest) noexcept {
