@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,29 @@ struct StageAllocations {
   }
 };
 
+/// The sample queries as the double API takes them (every coordinate is exactly a double).
+const std::vector<DoubleQuery>& sample_double_queries() {
+  static const std::vector<DoubleQuery> all = [] {
+    std::vector<DoubleQuery> out;
+    for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
+      const auto type = query_type_from_path(path);
+      if (!type) throw std::runtime_error(path + ": neither vertex-face nor edge-edge");
+      for (const QueryRecord& r : read_query_file(path, *type).queries) {
+        DoubleQuery q;
+        q.type = *type;
+        for (int i = 0; i < 8; ++i)
+          if (!exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) ||
+              !exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) ||
+              !exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()))
+            throw std::runtime_error(path + ": a coordinate is not exactly a double");
+        out.push_back(q);
+      }
+    }
+    return out;
+  }();
+  return all;
+}
+
 /// Runs the default path on q and counts its allocations. The query and the options are built
 /// before the counter is read, so only the call itself is measured.
 CcdResult decide_counting(const DoubleQuery& q, const CcdOptions& options, std::uint64_t* n) {
@@ -208,21 +232,11 @@ TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnRandomQueries) {
 
 TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnSampleQueries) {
   StageAllocations a;
-  for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
-    const auto type = query_type_from_path(path);
-    ASSERT_TRUE(type) << path;
-    for (const QueryRecord& r : read_query_file(path, *type).queries) {
-      DoubleQuery q;
-      q.type = *type;
-      for (int i = 0; i < 8; ++i)
-        ASSERT_TRUE(exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) &&
-                    exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) &&
-                    exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()));
-      for (const CcdOptions& options : {CcdOptions{}, CcdOptions{1.0, 1e-3, Mode::filtered}}) {
-        std::uint64_t count = 0;
-        const CcdResult res = decide_counting(q, options, &count);
-        a.record(q, res, count);
-      }
+  for (const DoubleQuery& q : sample_double_queries()) {
+    for (const CcdOptions& options : {CcdOptions{}, CcdOptions{1.0, 1e-3, Mode::filtered}}) {
+      std::uint64_t count = 0;
+      const CcdResult res = decide_counting(q, options, &count);
+      a.record(q, res, count);
     }
   }
   expect_no_allocation_in_float_stages(a, "sample");
@@ -273,22 +287,12 @@ bool scaled_exactly(const DoubleQuery& q, int k, DoubleQuery* out) {
 TEST(Allocation, ExactStagesAtDoubleTimesDoNotAllocateWithinTheFixedWidths) {
   AtDoubleTimes a;
   // The sample queries, also scaled far from unit scale (normalised before the filters).
-  for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
-    const auto type = query_type_from_path(path);
-    ASSERT_TRUE(type) << path;
-    for (const QueryRecord& r : read_query_file(path, *type).queries) {
-      DoubleQuery q;
-      q.type = *type;
-      for (int i = 0; i < 8; ++i)
-        ASSERT_TRUE(exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) &&
-                    exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) &&
-                    exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()));
-      for (int k : {0, 700, -700}) {
-        DoubleQuery scaled;
-        if (!scaled_exactly(q, k, &scaled)) continue;
-        for (const CcdOptions& options : {CcdOptions{}, CcdOptions{0.75, 1e-3, Mode::filtered}})
-          decide_at_double_times(scaled, options, &a);
-      }
+  for (const DoubleQuery& q : sample_double_queries()) {
+    for (int k : {0, 700, -700}) {
+      DoubleQuery scaled;
+      if (!scaled_exactly(q, k, &scaled)) continue;
+      for (const CcdOptions& options : {CcdOptions{}, CcdOptions{0.75, 1e-3, Mode::filtered}})
+        decide_at_double_times(scaled, options, &a);
     }
   }
   // Random families: planted and near-degenerate contacts.
@@ -351,19 +355,9 @@ TEST(Allocation, ExactStageAtBracketsDoesNotAllocateWithoutGmpSteps) {
   };
   CcdOptions exact_mode;
   exact_mode.mode = Mode::exact;
-  for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
-    const auto type = query_type_from_path(path);
-    ASSERT_TRUE(type) << path;
-    for (const QueryRecord& r : read_query_file(path, *type).queries) {
-      DoubleQuery q;
-      q.type = *type;
-      for (int i = 0; i < 8; ++i)
-        ASSERT_TRUE(exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) &&
-                    exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) &&
-                    exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()));
-      decide(q, exact_mode);
-      decide(q, CcdOptions{});
-    }
+  for (const DoubleQuery& q : sample_double_queries()) {
+    decide(q, exact_mode);
+    decide(q, CcdOptions{});
   }
   const std::uint64_t seed = seed_from_environment(kDefaultSeed);
   const std::uint64_t n = scaled_count(600, scale_from_environment());
