@@ -17,6 +17,7 @@
 #include "filters/interval.hpp"
 #include "random_queries.hpp"
 #include "test_support.hpp"
+#include "fixed_int_support.hpp"
 
 namespace exactccd::test {
 namespace {
@@ -38,16 +39,6 @@ mpz_class random_integer(std::mt19937_64& rng, int max_bits) {
     z = (z >> (static_cast<unsigned>(bits) - keep)) << (static_cast<unsigned>(bits) - keep);
   }
   return rng() % 2 ? mpz_class(-z) : z;
-}
-
-template <int N>
-FixedInt<N> fixed_from(const mpz_class& z) {
-  const mpz_class modulus = mpz_class(1) << (64 * N);
-  mpz_class u = z < 0 ? mpz_class(z + modulus) : z;  // the two's complement pattern
-  std::uint64_t limbs[N] = {};
-  std::size_t count = 0;
-  mpz_export(limbs, &count, -1, sizeof limbs[0], 0, 0, u.get_mpz_t());
-  return FixedInt<N>::from_limbs(limbs);
 }
 
 /// |z| = m 2^e + r, 0 <= r < 2^e, m < 2^53 (and m >= 2^52 when e > 0), inexact = (r != 0).

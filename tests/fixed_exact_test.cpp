@@ -21,6 +21,7 @@
 
 #include "exact/integer_query.hpp"
 #include "tests/random_queries.hpp"
+#include "fixed_int_support.hpp"
 
 // ---------------------------------------------------------------------------------------------
 // An integer type that records the largest bit length of any value it produces, per stage of
@@ -124,26 +125,6 @@ std::uint64_t test_seed() {
 }
 
 // ---- FixedInt against GMP ----------------------------------------------------------------------
-
-/// z modulo 2^(64N), as the representative in [-2^(64N-1), 2^(64N-1)).
-mpz_class residue(const mpz_class& z, int limbs) {
-  const mpz_class modulus = mpz_class(1) << (64 * limbs);
-  mpz_class r;
-  mpz_fdiv_r(r.get_mpz_t(), z.get_mpz_t(), modulus.get_mpz_t());
-  if (r >= modulus / 2) r -= modulus;
-  return r;
-}
-
-template <int N>
-FixedInt<N> fixed_from(const mpz_class& z) {
-  const mpz_class r = residue(z, N);
-  const mpz_class modulus = mpz_class(1) << (64 * N);
-  mpz_class u = r < 0 ? mpz_class(r + modulus) : r;  // the two's complement pattern
-  std::uint64_t limbs[N] = {};
-  std::size_t count = 0;
-  mpz_export(limbs, &count, -1, sizeof limbs[0], 0, 0, u.get_mpz_t());
-  return FixedInt<N>::from_limbs(limbs);
-}
 
 /// A random integer of random sign with a random bit length in [0, max_bits].
 mpz_class random_integer(std::mt19937_64& rng, int max_bits) {

@@ -11,31 +11,12 @@
 #include "exact/fixed_int.hpp"
 #include "exact/integer_arithmetic.hpp"
 #include "test_support.hpp"
+#include "fixed_int_support.hpp"
 
 namespace exactccd::test {
 namespace {
 
 using exact::FixedInt;
-
-/// z modulo 2^(64N), as the representative in [-2^(64N-1), 2^(64N-1)).
-mpz_class residue(const mpz_class& z, int limbs) {
-  const mpz_class modulus = mpz_class(1) << (64 * limbs);
-  mpz_class r;
-  mpz_fdiv_r(r.get_mpz_t(), z.get_mpz_t(), modulus.get_mpz_t());
-  if (r >= modulus / 2) r -= modulus;
-  return r;
-}
-
-template <int N>
-FixedInt<N> fixed_from(const mpz_class& z) {
-  const mpz_class r = residue(z, N);
-  const mpz_class modulus = mpz_class(1) << (64 * N);
-  mpz_class u = r < 0 ? mpz_class(r + modulus) : r;
-  std::uint64_t limbs[N] = {};
-  std::size_t count = 0;
-  mpz_export(limbs, &count, -1, sizeof limbs[0], 0, 0, u.get_mpz_t());
-  return FixedInt<N>::from_limbs(limbs);
-}
 
 /// Any value of `limbs` limbs: random bit patterns, and the extremes (0, +-1, the most negative
 /// and the largest values, single limbs of all ones) that carries and sign corrections meet.
