@@ -24,6 +24,7 @@
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "tests/random_queries.hpp"
+#include "tests/sample_double_queries.hpp"
 
 // ---------------------------------------------------------------------------------------------
 // Counting allocators (per thread: a query's allocations are those of the calling thread)
@@ -131,29 +132,6 @@ struct StageAllocations {
     }
   }
 };
-
-/// The sample queries as the double API takes them (every coordinate is exactly a double).
-const std::vector<DoubleQuery>& sample_double_queries() {
-  static const std::vector<DoubleQuery> all = [] {
-    std::vector<DoubleQuery> out;
-    for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
-      const auto type = query_type_from_path(path);
-      if (!type) throw std::runtime_error(path + ": neither vertex-face nor edge-edge");
-      for (const QueryRecord& r : read_query_file(path, *type).queries) {
-        DoubleQuery q;
-        q.type = *type;
-        for (int i = 0; i < 8; ++i)
-          if (!exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) ||
-              !exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) ||
-              !exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()))
-            throw std::runtime_error(path + ": a coordinate is not exactly a double");
-        out.push_back(q);
-      }
-    }
-    return out;
-  }();
-  return all;
-}
 
 /// Runs the default path on q and counts its allocations. The query and the options are built
 /// before the counter is read, so only the call itself is measured.

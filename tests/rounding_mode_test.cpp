@@ -29,6 +29,7 @@
 #include "exactccd/query_file.hpp"
 #include "filters/coplanarity_semistatic.hpp"
 #include "tests/random_queries.hpp"
+#include "tests/sample_double_queries.hpp"
 
 namespace exactccd::test {
 namespace {
@@ -67,20 +68,10 @@ std::vector<Case> cases() {
   std::vector<Case> out;
   const CcdOptions coarse{0.75, 1e-6, Mode::filtered};
   std::size_t k = 0;
-  for (const std::string& path : find_query_files(EXACTCCD_SAMPLE_QUERIES)) {
-    const auto type = query_type_from_path(path);
-    for (const QueryRecord& r : read_query_file(path, *type).queries) {
-      if (k++ % 4 != 0) continue;
-      DoubleQuery q;
-      q.type = *type;
-      for (int i = 0; i < 8; ++i)
-        if (!exact::to_double_exactly(r.query.points[i].x, &q.v[i].x()) ||
-            !exact::to_double_exactly(r.query.points[i].y, &q.v[i].y()) ||
-            !exact::to_double_exactly(r.query.points[i].z, &q.v[i].z()))
-          throw std::logic_error(path + ": not a double");
-      out.push_back({q, CcdOptions{}});
-      out.push_back({q, coarse});
-    }
+  for (const DoubleQuery& q : sample_double_queries()) {
+    if (k++ % 4 != 0) continue;
+    out.push_back({q, CcdOptions{}});
+    out.push_back({q, coarse});
   }
   const std::uint64_t seed = seed_from_environment(kDefaultSeed);
   const std::uint64_t n = scaled_count(300, scale_from_environment());
