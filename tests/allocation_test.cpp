@@ -250,25 +250,13 @@ void decide_at_double_times(const DoubleQuery& q, const CcdOptions& options, AtD
   a->record(q, r, count, exact::gmp_computations_in_this_thread() != gmp_before);
 }
 
-/// q times 2^k when every product is exact.
-bool scaled_exactly(const DoubleQuery& q, int k, DoubleQuery* out) {
-  *out = q;
-  for (auto& p : out->v)
-    for (int i = 0; i < 3; ++i) {
-      const double x = p[i];
-      p[i] = std::ldexp(x, k);
-      if (!std::isfinite(p[i]) || std::ldexp(p[i], -k) != x) return false;
-    }
-  return true;
-}
-
 TEST(Allocation, ExactStagesAtDoubleTimesDoNotAllocateWithinTheFixedWidths) {
   AtDoubleTimes a;
   // The sample queries, also scaled far from unit scale (normalised before the filters).
   for (const DoubleQuery& q : sample_double_queries()) {
     for (int k : {0, 700, -700}) {
-      DoubleQuery scaled;
-      if (!scaled_exactly(q, k, &scaled)) continue;
+      DoubleQuery scaled = q;
+      if (!scale_if_exact(&scaled, k)) continue;
       for (const CcdOptions& options : {CcdOptions{}, CcdOptions{0.75, 1e-3, Mode::filtered}})
         decide_at_double_times(scaled, options, &a);
     }

@@ -116,18 +116,6 @@ const std::vector<Loaded>& loaded_sample() {
   return all;
 }
 
-/// q times 2^k when every product is exact (then true).
-bool scaled_exactly(const DoubleQuery& q, int k, DoubleQuery* out) {
-  *out = q;
-  for (auto& p : out->v)
-    for (int i = 0; i < 3; ++i) {
-      const double x = p[i];
-      p[i] = std::ldexp(x, k);
-      if (!std::isfinite(p[i]) || std::ldexp(p[i], -k) != x) return false;
-    }
-  return true;
-}
-
 bool same_bits(double a, double b) { return predicates::bits_of(a) == predicates::bits_of(b); }
 
 TEST(PowerOfTwoNormalisation, SampleQueriesScaledByAnyPowerOfTwoKeepTheirAnswerAndStage) {
@@ -146,8 +134,8 @@ TEST(PowerOfTwoNormalisation, SampleQueriesScaledByAnyPowerOfTwoKeepTheirAnswerA
     for (std::size_t i = all ? 0 : static_cast<std::size_t>(k + 1000) % stride; i < sample.size();
          i += all ? 1 : stride) {
       const Loaded& l = sample[i];
-      DoubleQuery scaled;
-      if (!scaled_exactly(l.query, k, &scaled)) {
+      DoubleQuery scaled = l.query;
+      if (!scale_if_exact(&scaled, k)) {
         ++not_exact;
         continue;
       }
@@ -198,8 +186,8 @@ TEST(PowerOfTwoNormalisation, RandomFamiliesScaledKeepTheirAnswer) {
       const CcdResult base = ccd(q, CcdOptions{});
       const CcdResult base_coarse = ccd(q, CcdOptions{0.75, 1e-4, Mode::filtered});
       for (int k : {-1000, -700, -300, 300, 700, 1000, static_cast<int>(pick() % 2001) - 1000}) {
-        DoubleQuery scaled;
-        if (!scaled_exactly(q, k, &scaled)) continue;
+        DoubleQuery scaled = q;
+        if (!scale_if_exact(&scaled, k)) continue;
         const CcdResult r = ccd(scaled, CcdOptions{});
         ++checked;
         ASSERT_EQ(r.collides, base.collides) << "k = " << k << "\n" << describe(q);
