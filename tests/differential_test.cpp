@@ -155,25 +155,25 @@ std::uint64_t base_count(const Generator& g) {
   return 0;
 }
 
-TEST(Differential, RandomQueriesDefaultEqualsExact) {
-  const std::uint64_t seed = seed_from_environment(kDefaultSeed);
-  const double scale = scale_from_environment();
-  std::printf("[ seed     ] EXACTCCD_TEST_SEED=%llu EXACTCCD_TEST_SCALE=%g\n",
-              static_cast<unsigned long long>(seed), scale);
+/// Runs `check` (differential_check or partial_interval_coarse_check) on `count(g)` seeded
+/// queries of every generator, in parallel, printing a row per generator; returns the totals
+/// and adds the disagreements to *disagreements.
+template <class Count, class Check>
+DifferentialStats run_generators(std::uint64_t seed, Count&& count, Check&& check,
+                                 std::uint64_t* disagreements) {
   const auto start = std::chrono::steady_clock::now();
   DifferentialStats total;
-  std::uint64_t total_disagreements = 0;
   print_header();
   for (const Generator& g : all_generators()) {
     const auto gen_start = std::chrono::steady_clock::now();
-    const std::uint64_t n = scaled_count(base_count(g), scale);
+    const std::uint64_t n = count(g);
     DisagreementLog log;
     tbb::combinable<DifferentialStats> stats;
     tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, n, 64), [&](const auto& r) {
       for (std::uint64_t i = r.begin(); i != r.end(); ++i) {
         std::mt19937_64 rng;
         const DoubleQuery q = generate(g, seed, i, rng);
-        const Disagreement d = differential_check(q, rng, stats.local());
+        const Disagreement d = check(q, rng, stats.local());
         if (!d.what.empty()) log.add(g.name() + " #" + std::to_string(i), d);
       }
     });
@@ -183,9 +183,24 @@ TEST(Differential, RandomQueriesDefaultEqualsExact) {
     log.print();
     EXPECT_EQ(s.queries, n) << g.name();
     total += s;
-    total_disagreements += log.count();
+    *disagreements += log.count();
   }
   print_row("total", total, seconds_since(start));
+  return total;
+}
+
+TEST(Differential, RandomQueriesDefaultEqualsExact) {
+  const std::uint64_t seed = seed_from_environment(kDefaultSeed);
+  const double scale = scale_from_environment();
+  std::printf("[ seed     ] EXACTCCD_TEST_SEED=%llu EXACTCCD_TEST_SCALE=%g\n",
+              static_cast<unsigned long long>(seed), scale);
+  std::uint64_t total_disagreements = 0;
+  const DifferentialStats total = run_generators(
+      seed, [&](const Generator& g) { return scaled_count(base_count(g), scale); },
+      [](const DoubleQuery& q, std::mt19937_64& rng, DifferentialStats& stats) {
+        return differential_check(q, rng, stats);
+      },
+      &total_disagreements);
   std::printf("coarse-width checks %llu, t_max < 1 checks %llu\n",
               static_cast<unsigned long long>(total.width_checks),
               static_cast<unsigned long long>(total.t_max_checks));
@@ -206,32 +221,13 @@ TEST(Differential, RandomQueriesPartialIntervalCoarseWidth) {
   const double scale = scale_from_environment();
   std::printf("[ seed     ] EXACTCCD_TEST_SEED=%llu EXACTCCD_TEST_SCALE=%g\n",
               static_cast<unsigned long long>(seed), scale);
-  const auto start = std::chrono::steady_clock::now();
-  DifferentialStats total;
   std::uint64_t total_disagreements = 0;
-  print_header();
-  for (const Generator& g : all_generators()) {
-    const auto gen_start = std::chrono::steady_clock::now();
-    const std::uint64_t n = scaled_count(affordable_count(g, 5000), scale);
-    DisagreementLog log;
-    tbb::combinable<DifferentialStats> stats;
-    tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, n, 64), [&](const auto& r) {
-      for (std::uint64_t i = r.begin(); i != r.end(); ++i) {
-        std::mt19937_64 rng;
-        const DoubleQuery q = generate(g, seed, i, rng);
-        const Disagreement d = partial_interval_coarse_check(q, rng, stats.local());
-        if (!d.what.empty()) log.add(g.name() + " #" + std::to_string(i), d);
-      }
-    });
-    const DifferentialStats s = stats.combine(
-        [](DifferentialStats a, const DifferentialStats& b) { return a += b; });
-    print_row(g.name(), s, seconds_since(gen_start));
-    log.print();
-    EXPECT_EQ(s.queries, n) << g.name();
-    total += s;
-    total_disagreements += log.count();
-  }
-  print_row("total", total, seconds_since(start));
+  const DifferentialStats total = run_generators(
+      seed, [&](const Generator& g) { return scaled_count(affordable_count(g, 5000), scale); },
+      [](const DoubleQuery& q, std::mt19937_64& rng, DifferentialStats& stats) {
+        return partial_interval_coarse_check(q, rng, stats);
+      },
+      &total_disagreements);
   EXPECT_EQ(total_disagreements, 0u);
   // Contacts before t_max must be common, or the coarse widths would go unchecked.
   EXPECT_GE(total.collisions, total.queries / 10);
