@@ -120,8 +120,8 @@ const QuerySet& decided_in(const QuerySet& (*set)(), exactccd::Stage stage) {
   return out;
 }
 
-void decide_all(benchmark::State& state, const QuerySet& (*queries)(), Mode mode) {
-  const QuerySet& set = queries();
+/// Decides every query of `set` per iteration; counters: queries, collisions, time per query.
+void time_set(benchmark::State& state, const QuerySet& set, Mode mode) {
   CcdOptions options;
   options.mode = mode;
   std::size_t collisions = 0;
@@ -139,6 +139,10 @@ void decide_all(benchmark::State& state, const QuerySet& (*queries)(), Mode mode
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+void decide_all(benchmark::State& state, const QuerySet& (*queries)(), Mode mode) {
+  time_set(state, queries(), mode);
+}
+
 BENCHMARK_CAPTURE(decide_all, simulation_float_only, simulation_set, Mode::float_only)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(decide_all, simulation_default, simulation_set, Mode::filtered)
@@ -154,21 +158,7 @@ BENCHMARK_CAPTURE(decide_all, sample_exact, sample_set, Mode::exact)
 
 void decide_stage(benchmark::State& state, const QuerySet& (*queries)(), exactccd::Stage stage,
                   Mode mode) {
-  const QuerySet& set = decided_in(queries, stage);
-  CcdOptions options;
-  options.mode = mode;
-  std::size_t collisions = 0;
-  for (auto _ : state) {
-    collisions = 0;
-    for (const auto& q : set.vertex_face)
-      collisions += exactccd::vertex_face_ccd(q, options).collides;
-    for (const auto& q : set.edge_edge) collisions += exactccd::edge_edge_ccd(q, options).collides;
-    benchmark::DoNotOptimize(collisions);
-  }
-  state.counters["queries"] = static_cast<double>(set.size());
-  state.counters["per_query"] = benchmark::Counter(
-      static_cast<double>(set.size()),
-      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  time_set(state, decided_in(queries, stage), mode);
 }
 
 #define EXACTCCD_STAGE_BENCH(SET, STAGE)                                                    \
