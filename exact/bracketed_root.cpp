@@ -155,13 +155,15 @@ void RootIterator::push(const Item& it) {
   stack_[size_++] = it;
 }
 
-/// The roots of the square-free p strictly inside the adjacent doubles (lo, hi) (its ends
-/// are not roots: they were split points or interval ends tested), isolated by the same
-/// Descartes bisection on dyadic rationals; pushed so that they come out in ascending order.
+/// The roots of the square-free p strictly inside the adjacent doubles (lo, hi), isolated by
+/// the same Descartes bisection on dyadic rationals; pushed so that they come out in ascending
+/// order. An end that is a root was emitted on its own (a tested split point or interval end):
+/// next to it the Bernstein coefficients show no variation once the bracket is short, so it is
+/// not emitted again.
 void RootIterator::isolate_beyond_doubles(const Item& it) {
   const MpzPolynomial p = to_mpz_polynomial(*p_);
   std::vector<DyadicBracket> found, pending;
-  pending.push_back(dyadic_bracket(it.lo, it.hi, p_->sign_at(it.lo)));
+  pending.push_back(dyadic_bracket(it.lo, it.hi, 0));  // sign_lo is set when a root is found
   for (int step = 0; !pending.empty(); ++step) {
     if (step == kMaxDyadicSteps) throw UnresolvedAtDoubles{};
     DyadicBracket d = std::move(pending.back());

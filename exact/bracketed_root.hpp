@@ -50,7 +50,6 @@ class BracketedRoot {
       : p_(p), lo_(lo), hi_(hi), sign_lo_(0), fine_(std::move(fine)) {}
 
   bool is_exact() const { return lo_ == hi_; }
-  bool is_beyond_doubles() const { return fine_.has_value(); }
   double lo() const { return lo_; }
   double hi() const { return hi_; }
 

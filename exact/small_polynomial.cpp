@@ -111,7 +111,6 @@ DyadicTime unit_time(double t) {
 }  // namespace
 
 std::uint64_t gmp_polynomial_steps_in_this_thread() noexcept { return g_gmp_steps; }
-void count_gmp_polynomial_step() noexcept { ++g_gmp_steps; }
 
 SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count) {
   ++g_gmp_steps;

@@ -100,7 +100,6 @@ SmallPolynomial SmallPolynomial::from_fixed(const FixedInt<N>* c, int count, lon
 /// How many GMP steps (any function below, or an evaluation beyond the fixed widths) the
 /// calling thread ran: tells tests which decisions stayed in fixed-size integers.
 std::uint64_t gmp_polynomial_steps_in_this_thread() noexcept;
-void count_gmp_polynomial_step() noexcept;
 
 struct MpzPolynomial {
   std::array<mpz_class, 4> c;
