@@ -472,6 +472,90 @@ int tarski_sign_at_root(const MpzPolynomial& p, const MpzPolynomial& g, const mp
   return variations(A) - variations(B);
 }
 
+namespace {
+
+/// The pseudo-remainder lc(b)^n a = Q b + r, n = deg a - deg b + 1 (deg a >= deg b >= 0), and
+/// the sign of lc(b)^n: r(x) has the sign of that times a(x) at every root x of b.
+int pseudo_remainder(MpzPolynomial a, const MpzPolynomial& b, MpzPolynomial* r) {
+  const int n = a.degree - b.degree + 1;
+  for (int k = a.degree; k >= b.degree; --k) {
+    const mpz_class lead = a.c[static_cast<std::size_t>(k)];
+    for (int i = 0; i <= a.degree; ++i) a.c[static_cast<std::size_t>(i)] *= b.c[static_cast<std::size_t>(b.degree)];
+    for (int i = 0; i <= b.degree; ++i)
+      a.c[static_cast<std::size_t>(i + k - b.degree)] -= lead * b.c[static_cast<std::size_t>(i)];
+    a.c[static_cast<std::size_t>(k)] = 0;  // cancelled exactly
+  }
+  set_degree(a);
+  *r = a;
+  return (sgn(b.c[static_cast<std::size_t>(b.degree)]) < 0 && n % 2 == 1) ? -1 : 1;
+}
+
+/// The sign of X + Y sqrt(D), D >= 0.
+int sign_plus_sqrt(const mpz_class& X, const mpz_class& Y, const mpz_class& D) {
+  const int sx = sgn(X), sy = sgn(Y);
+  if (sy == 0 || sgn(D) == 0) return sx;
+  if (sx == 0 || sx == sy) return sy;
+  const int c = cmp(mpz_class(X * X), mpz_class(Y * Y * D));  // |X| against |Y| sqrt(D)
+  return c > 0 ? sx : c < 0 ? sy : 0;
+}
+
+int coefficient_sign(const MpzPolynomial& p, int i) { return sgn(p.c[static_cast<std::size_t>(i)]); }
+
+}  // namespace
+
+int sign_at_root_by_remainders(const MpzPolynomial& p, const MpzPolynomial& g,
+                               const mpz_class& A, const mpz_class& B, unsigned K, int sign_lo) {
+  ++g_gmp_steps;
+  if (g.degree < 0) return 0;
+  // h = prem(g, p): at the root r of p, h(r) = sign_h * (positive) * g(r).
+  MpzPolynomial h = g;
+  int sign_h = 1;
+  if (g.degree >= p.degree) sign_h = pseudo_remainder(g, p, &h);
+  if (h.degree <= 0) return sign_h * (h.degree < 0 ? 0 : coefficient_sign(h, 0));
+  // h of degree 1 or 2 (< deg p): its real roots s = (P + sigma sqrt(D)) / Q, sigma = +-1.
+  mpz_class P, Q, D;
+  int roots = 1;  // counted with multiplicity
+  if (h.degree == 1) {
+    P = -h.c[0];
+    Q = h.c[1];
+    D = 0;
+  } else {
+    D = h.c[1] * h.c[1] - 4 * h.c[2] * h.c[0];
+    if (sgn(D) < 0) return sign_h * coefficient_sign(h, 2);  // h has the sign of lc(h) on R
+    P = -h.c[1];
+    Q = 2 * h.c[2];
+    roots = 2;
+  }
+  // q = prem(p, h): at a root s of h, q(s) has the sign of sign_q * p(s). q has degree <= 1.
+  MpzPolynomial q;
+  const int sign_q = pseudo_remainder(p, h, &q);
+  const mpz_class alpha = q.degree >= 1 ? q.c[1] : mpz_class(0);
+  const mpz_class beta = q.degree >= 0 ? q.c[0] : mpz_class(0);
+  const mpz_class scale = mpz_class(1) << K;
+  const int sign_Q = sgn(Q);
+  // sign(r - s) for each root s of h, from s against a = A 2^-K and b = B 2^-K, and the sign of
+  // p at s: r is the only root of p in (a, b), with p(a) of sign sign_lo and p(b) the other.
+  int product = sign_h * coefficient_sign(h, h.degree);
+  for (int k = 0; k < roots; ++k) {
+    const int sigma = k == 0 ? 1 : -1;
+    const int s_minus_a = sign_Q * sign_plus_sqrt(P * scale - Q * A, sigma * scale, D);
+    const int s_minus_b = sign_Q * sign_plus_sqrt(P * scale - Q * B, sigma * scale, D);
+    int r_minus_s;
+    if (s_minus_a <= 0) {
+      r_minus_s = 1;
+    } else if (s_minus_b >= 0) {
+      r_minus_s = -1;
+    } else {  // a < s < b: p(s) = 0 puts s at r, p(s) of p(a)'s sign between a and r
+      const int p_at_s =
+          sign_q * sign_Q * sign_plus_sqrt(alpha * P + beta * Q, sigma * alpha, D);
+      r_minus_s = p_at_s == 0 ? 0 : p_at_s == sign_lo ? 1 : -1;
+    }
+    product *= r_minus_s;
+    if (product == 0) return 0;
+  }
+  return product;  // D = 0: the double root was counted twice, as it should
+}
+
 SmallPolynomial square_free_part(const SmallPolynomial& p) {
   const MpzPolynomial a = to_mpz_polynomial(p);
   if (a.degree < 1) throw std::invalid_argument("exactccd: square-free part of a constant");

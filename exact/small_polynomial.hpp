@@ -122,9 +122,19 @@ int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz
 
 /// The sign of g at the only root r of p in the open interval (A 2^-K, B 2^-K), where p does not
 /// vanish at the ends: the Sturm-Tarski query Var(a) - Var(b) of the signed remainder sequence
-/// of p and (p' g mod p), whose cost does not depend on how close r is to a root of g.
+/// of p and (p' g mod p), whose cost does not depend on how close r is to a root of g. Kept as
+/// the tests' independent reference for sign_at_root_by_remainders (about 5x its cost on wide
+/// coefficients: its remainder sequence divides out contents with gcds).
 /// PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
 int tarski_sign_at_root(const MpzPolynomial& p, const MpzPolynomial& g, const mpz_class& A,
                         const mpz_class& B, unsigned K);
+
+/// The same sign by two pseudo-remainders and one quadratic irrationality, no gcd: with
+/// h = prem(g, p) (degree < deg p <= 3) and the real roots s of h located against r (against the
+/// bracket's ends, then by the sign of p at s from prem(p, h)). `sign_lo` is the sign of p at
+/// A 2^-K. A constant number of multiplications; what the stage uses.
+/// PROOF: proofs/exact_ccd.md#sign-at-a-root-by-remainders
+int sign_at_root_by_remainders(const MpzPolynomial& p, const MpzPolynomial& g, const mpz_class& A,
+                               const mpz_class& B, unsigned K, int sign_lo);
 
 }  // namespace exactccd::exact

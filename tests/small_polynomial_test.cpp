@@ -5,6 +5,7 @@
 // PROOF: proofs/exact_ccd.md#small-polynomial-bounds
 // PROOF: proofs/exact_ccd.md#descartes-at-doubles
 // PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
+// PROOF: proofs/exact_ccd.md#sign-at-a-root-by-remainders
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 
 #include "core/predicates/fp_environment.hpp"
 #include "exact/bracketed_root.hpp"
+#include "exact/integer_cubic.hpp"
 #include "exact/small_polynomial.hpp"
 #include "test_scale.hpp"
 
@@ -223,6 +225,128 @@ TEST_F(SmallPolynomialTest, SignAtRootMatchesRationalPath) {
     ASSERT_FALSE(r->is_exact());
     EXPECT_EQ(r->sign_of(g), sgn(expected)) << c.g_roots.size() << " roots, scale " << c.scale;
   }
+}
+
+/// The integer polynomial with the given coefficients (lowest first).
+MpzPolynomial mpz_polynomial(std::vector<mpz_class> c) {
+  MpzPolynomial p;
+  for (std::size_t i = 0; i < c.size(); ++i) p.c[i] = c[i];
+  for (int i = static_cast<int>(c.size()) - 1; i >= 0; --i)
+    if (p.c[static_cast<std::size_t>(i)] != 0) {
+      p.degree = i;
+      break;
+    }
+  return p;
+}
+
+/// A dyadic bracket [A, B] 2^-K around the root r of p (only it inside: the caller's roots are
+/// far apart), from rational bounds lo < r < hi.
+DyadicBracket bracket_around(const MpzPolynomial& p, const Q& lo, const Q& hi, unsigned K) {
+  DyadicBracket d;
+  d.K = K;
+  const mpz_class scale = mpz_class(1) << K;
+  d.A = mpz_class(Q(lo * scale).get_num() / Q(lo * scale).get_den()) - 1;
+  d.B = mpz_class(Q(hi * scale).get_num() / Q(hi * scale).get_den()) + 1;
+  d.sign_lo = sign_at_dyadic(p, d.A, K);
+  return d;
+}
+
+// The stage's sign at a root (two pseudo-remainders and a quadratic irrationality) against the
+// Sturm-Tarski query, an independent algorithm (a signed remainder sequence with contents
+// divided out), and against rational evaluation where the root is rational: g sharing the
+// root, g's roots (rational, quadratic irrational, double, complex) on both sides within
+// 2^-60..2^-400 of an irrational root, every degree of g and p; then random p and g with
+// coefficients of 1 to 2,000 bits and every root the iterator brackets.
+TEST_F(SmallPolynomialTest, SignAtRootByRemaindersMatchesSturmTarski) {
+  // p = (2t^2 - 1)(3t - 1): r = 1/sqrt(2) in (0.70, 0.71), and 1/3.
+  const MpzPolynomial p = mpz_polynomial({1, -3, -2, 6});
+  const DyadicBracket around_r = bracket_around(p, Q(70, 100), Q(71, 100), 300);
+  const DyadicBracket around_third = bracket_around(p, Q(33, 100), Q(34, 100), 90);
+  auto big = [](int e) -> mpz_class { return mpz_class(1) << e; };
+  struct Case {
+    std::vector<mpz_class> g;
+    int at_r;      // the sign of g(1/sqrt 2)
+    int at_third;  // the sign of g(1/3)
+  };
+  const std::vector<Case> cases = {
+      {{-1, 0, 2}, 0, -1},                                   // shares r
+      {{-1, 3}, 1, 0},                                       // shares 1/3
+      {{-big(60) - 1, 0, 2 * big(60)}, -1, -1},              // 2t^2 - 1 - 2^-60: roots beyond r
+      {{-big(400) + 1, 0, 2 * big(400)}, 1, -1},             // roots just inside r
+      {{-mpz_class("7071067811865475244008443621048490392848"), mpz_class(10) * big(0) *
+        mpz_class("1000000000000000000000000000000000000000")}, 1, -1},  // t - 0.70710678...(below r)
+      {{mpz_class("7071067811865475244008443621048490392849") *
+            mpz_class("7071067811865475244008443621048490392849"),
+        -2 * mpz_class("7071067811865475244008443621048490392849") *
+            mpz_class("10000000000000000000000000000000000000000"),
+        mpz_class("10000000000000000000000000000000000000000") *
+            mpz_class("10000000000000000000000000000000000000000")}, 1, 1},  // (t - c)^2, c > r
+      {{1, 0, 1}, 1, 1},                                     // t^2 + 1: no real root
+      {{-5}, -1, -1},                                        // constant
+      {{1, -3, -2, 6}, 0, 0},                                // p itself
+      {{-1, 2, 2, -4}, 0, -1},                               // (2t^2 - 1)(1 - 2t): degree 3, shares r
+      {{0, 1, -3}, -1, 0},                                   // t (1 - 3t)
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const MpzPolynomial g = mpz_polynomial(cases[i].g);
+    for (const auto& [d, expected] : {std::pair{&around_r, cases[i].at_r},
+                                      std::pair{&around_third, cases[i].at_third}}) {
+      const int tarski = tarski_sign_at_root(p, g, d->A, d->B, d->K);
+      const int remainders = sign_at_root_by_remainders(p, g, d->A, d->B, d->K, d->sign_lo);
+      EXPECT_EQ(remainders, tarski) << "case " << i;
+      if (d == &around_third)  // 1/3 is rational: evaluate
+        EXPECT_EQ(remainders, sgn(rational(g.c, g.degree).at(Q(1, 3)))) << "case " << i;
+      else
+        EXPECT_EQ(remainders, expected) << "case " << i;
+    }
+  }
+
+  std::mt19937_64 rng(20261124);
+  int compared = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int bits = 1 + static_cast<int>(rng() % (trial % 3 == 0 ? 2000 : 64));
+    const int degree = 1 + static_cast<int>(rng() % 3);
+    const SmallPolynomial q = SmallPolynomial::from_mpz(random_coefficients(rng, degree, bits).data(), 4);
+    if (q.degree() < 1) continue;
+    SmallPolynomial square_free;
+    RootIterator it(q, 1.0, &square_free);
+    while (std::optional<BracketedRoot> r = it.next()) {
+      if (r->is_exact()) continue;
+      // The iterator may have replaced q by its square-free part: the bracket is one of its.
+      const MpzPolynomial pm = to_mpz_polynomial(square_free.degree() >= 1 ? square_free : q);
+      const Dyadic lo = dyadic(r->lo()), hi = dyadic(r->hi());
+      DyadicBracket d;
+      d.K = 1100;
+      d.A = lo.mantissa == 0 ? mpz_class(0) : mpz_class(mpz_class(lo.mantissa) << (1100 + lo.exponent));
+      d.B = mpz_class(mpz_class(hi.mantissa) << (1100 + hi.exponent));
+      d.sign_lo = sign_at_dyadic(pm, d.A, d.K);
+      if (d.sign_lo == 0 || sign_at_dyadic(pm, d.B, d.K) != -d.sign_lo) continue;
+      for (int k = 0; k < 4; ++k) {
+        MpzPolynomial g;
+        if (k == 0) {
+          g = pm;  // shares every root
+        } else if (k == 1 && pm.degree <= 2) {
+          // pm (2t - 1) + e, e in {-1, 0, 1}: a root within about 2^-bits of r, or r itself.
+          std::vector<mpz_class> c(4, mpz_class(0));
+          for (int j = 0; j <= pm.degree; ++j) {
+            c[static_cast<std::size_t>(j + 1)] += 2 * pm.c[static_cast<std::size_t>(j)];
+            c[static_cast<std::size_t>(j)] -= pm.c[static_cast<std::size_t>(j)];
+          }
+          c[0] += static_cast<long>(rng() % 3) - 1;
+          g = mpz_polynomial(c);
+        } else {
+          const auto c = random_coefficients(rng, static_cast<int>(rng() % 4),
+                                             1 + static_cast<int>(rng() % 200));
+          g = mpz_polynomial({c[0], c[1], c[2], c[3]});
+        }
+        const int tarski = tarski_sign_at_root(pm, g, d.A, d.B, d.K);
+        const int remainders = sign_at_root_by_remainders(pm, g, d.A, d.B, d.K, d.sign_lo);
+        ASSERT_EQ(remainders, tarski) << "trial " << trial << " k " << k;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
 }
 
 TEST_F(SmallPolynomialTest, GcdAndSquareFreePart) {
