@@ -3,6 +3,8 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <tuple>
@@ -23,9 +25,27 @@ template <int N, int D>
 SmallPolynomial small(const predicates::FixedPoly<FixedInt<N>, D>& g, long bits) {
   return SmallPolynomial::from_fixed(g.c.data(), D + 1, bits);
 }
+/// The coefficients divided by their common power of two (a positive factor: the same signs
+/// and roots, which is all the stage asks of a polynomial). Wide exponent spreads leave
+/// hundreds of such trailing zero bits, which every product would carry.
+/// PROOF: proofs/exact_ccd.md#exact-at-double-brackets
+template <std::size_t N>
+std::array<mpz_class, N> without_power_of_two_content(const mpz_class* c, int count) {
+  std::array<mpz_class, N> out;
+  mp_bitcnt_t shift = ~mp_bitcnt_t(0);
+  for (int i = 0; i < count; ++i)
+    if (sgn(c[i]) != 0) shift = std::min(shift, mpz_scan1(c[i].get_mpz_t(), 0));
+  for (int i = 0; i < count; ++i) {
+    if (shift == ~mp_bitcnt_t(0)) out[static_cast<std::size_t>(i)] = c[i];
+    else mpz_tdiv_q_2exp(out[static_cast<std::size_t>(i)].get_mpz_t(), c[i].get_mpz_t(), shift);
+  }
+  return out;
+}
+
 template <int D>
 SmallPolynomial small(const predicates::FixedPoly<mpz_class, D>& g, long) {
-  return SmallPolynomial::from_mpz(g.c.data(), D + 1);
+  return SmallPolynomial::from_mpz(
+      without_power_of_two_content<D + 1>(g.c.data(), D + 1).data(), D + 1);
 }
 
 template <class CI>
@@ -135,7 +155,7 @@ SmallPolynomial cubic_of(const IntegerCoordinates& q) {
   if (limbs == 0) {
     mpz_class c[4];
     coplanarity_coefficients(q, c);
-    return SmallPolynomial::from_mpz(c, 4);
+    return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c, 4).data(), 4);
   }
   return with_limbs(limbs, [&](auto n) {
     FixedInt<decltype(n)::value> c[4];

@@ -3,6 +3,8 @@
 #include "exact/bracketed_root.hpp"
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 #include <cstdint>
 
 #include "core/predicates/double_bits.hpp"
@@ -56,7 +58,110 @@ int sign_in_dyadic_bracket(const MpzPolynomial& p, const MpzPolynomial& g, const
   return sign_at_root_by_remainders(p, g, d.A, d.B, d.K, d.sign_lo);
 }
 
+/// Beyond this many bits past the doubles' exponent the split at critical points gives up
+/// (the bisection below then decides, or the step cap hands the query to the rational path).
+constexpr unsigned kMaxCriticalBits = 1u << 14;
+
+/// A dyadic enclosure [L, U] 2^-k of (P + tau sqrt(E)) / Q, Q != 0, E >= 0.
+std::pair<mpz_class, mpz_class> enclosure_at(const mpz_class& P, int tau, const mpz_class& E,
+                                            const mpz_class& Q, unsigned k) {
+  mpz_class S;  // floor(sqrt(E 4^k)) <= sqrt(E) 2^k < S + 1
+  mpz_class E_scaled = E << (2 * k);
+  mpz_sqrt(S.get_mpz_t(), E_scaled.get_mpz_t());
+  const mpz_class base = P << k;
+  mpz_class n_lo = tau > 0 ? mpz_class(base + S) : mpz_class(base - S - 1);
+  mpz_class n_hi = tau > 0 ? mpz_class(base + S + 1) : mpz_class(base - S);
+  if (sgn(S) == 0 && sgn(E) == 0) n_lo = n_hi = base;  // rational: exact numerator
+  if (sgn(Q) < 0) {
+    std::swap(n_lo, n_hi);
+    n_lo = -n_lo;
+    n_hi = -n_hi;
+  }
+  const mpz_class q = abs(Q);
+  mpz_class L, U;
+  mpz_fdiv_q(L.get_mpz_t(), n_lo.get_mpz_t(), q.get_mpz_t());
+  mpz_cdiv_q(U.get_mpz_t(), n_hi.get_mpz_t(), q.get_mpz_t());
+  return {L, U};
+}
+
 }  // namespace
+
+std::optional<std::vector<DyadicBracket>> split_at_critical_points(const MpzPolynomial& p,
+                                                                  const DyadicBracket& d) {
+  if (p.degree < 2) return std::nullopt;
+  // p' and its real roots c = (P + tau sqrt(E)) / Q; at each, the sign of p from
+  // prem(p, p') (of degree <= 1: p(c) = r(c) / lc(p')^n).
+  MpzPolynomial dp;
+  for (int i = 1; i <= p.degree; ++i) dp.c[static_cast<std::size_t>(i - 1)] = p.c[static_cast<std::size_t>(i)] * i;
+  dp.degree = p.degree - 1;
+  mpz_class P, Q, E;
+  int roots;
+  if (dp.degree == 1) {
+    P = -dp.c[0];
+    Q = dp.c[1];
+    E = 0;
+    roots = 1;
+  } else {
+    E = dp.c[1] * dp.c[1] - 4 * dp.c[2] * dp.c[0];
+    P = -dp.c[1];
+    Q = 2 * dp.c[2];
+    roots = sgn(E) > 0 ? 2 : 0;  // E <= 0: p' keeps one sign, p is monotone: one piece
+  }
+  int sign_at_critical[2];
+  {
+    MpzPolynomial r;
+    const int factor = pseudo_remainder(p, dp, &r);
+    const mpz_class alpha = r.degree >= 1 ? r.c[1] : mpz_class(0);
+    const mpz_class beta = r.degree >= 0 ? r.c[0] : mpz_class(0);
+    for (int k = 0; k < roots; ++k)
+      sign_at_critical[k] = factor * sgn(Q) *
+                            sign_plus_sqrt(alpha * P + beta * Q, (k == 0 ? 1 : -1) * alpha, E);
+  }
+  for (unsigned extra = 64; extra <= kMaxCriticalBits; extra *= 2) {
+    const unsigned K = d.K + extra;
+    const mpz_class lo = d.A << extra, hi = d.B << extra;
+    // The critical points' enclosures, ascending, those that can meet (lo, hi).
+    std::vector<std::pair<mpz_class, mpz_class>> inside;
+    bool resolved = true;
+    for (int k = 0; k < roots && resolved; ++k) {
+      auto [L, U] = enclosure_at(P, k == 0 ? 1 : -1, E, Q, K);
+      if (U <= lo || L >= hi) continue;  // c <= a or c >= b: no piece boundary inside
+      if (L <= lo || U >= hi) {          // straddles an end: finer
+        resolved = false;
+        break;
+      }
+      // No root of p in [L, U]: p monotone on [L, c] and [c, U], p(L), p(c), p(U) of one sign.
+      if (sign_at_dyadic(p, L, K) != sign_at_critical[k] ||
+          sign_at_dyadic(p, U, K) != sign_at_critical[k]) {
+        resolved = false;
+        break;
+      }
+      inside.emplace_back(std::move(L), std::move(U));
+    }
+    if (!resolved) continue;
+    std::sort(inside.begin(), inside.end());
+    if (inside.size() == 2 && inside[0].second >= inside[1].first) continue;  // overlapping
+    // The monotone pieces between them: each holds a root iff p changes sign across it.
+    std::vector<DyadicBracket> found;
+    mpz_class from = lo;
+    for (std::size_t k = 0; k <= inside.size(); ++k) {
+      const mpz_class to = k < inside.size() ? inside[k].first : hi;
+      const int s_from = sign_at_dyadic(p, from, K), s_to = sign_at_dyadic(p, to, K);
+      if (s_from * s_to < 0) {
+        DyadicBracket b;
+        b.A = from;
+        b.B = to;
+        b.K = K;
+        b.sign_lo = s_from;
+        found.push_back(std::move(b));
+      }
+      if (k < inside.size()) from = inside[k].second;
+    }
+    return found;
+  }
+  return std::nullopt;
+}
+
 
 bool split_point(double lo, double hi, double* m) {
   const std::uint64_t l = lo == 0 ? 0 : predicates::bits_of(lo), h = predicates::bits_of(hi);
@@ -165,7 +270,11 @@ void RootIterator::push(const Item& it) {
 void RootIterator::isolate_beyond_doubles(const Item& it) {
   const MpzPolynomial p = to_mpz_polynomial(*p_);
   std::vector<DyadicBracket> found, pending;
-  pending.push_back(dyadic_bracket(it.lo, it.hi, 0));  // sign_lo is set when a root is found
+  if (std::optional<std::vector<DyadicBracket>> split =
+          split_at_critical_points(p, dyadic_bracket(it.lo, it.hi, 0)))
+    found = std::move(*split);
+  else
+    pending.push_back(dyadic_bracket(it.lo, it.hi, 0));  // sign_lo is set when a root is found
   for (int step = 0; !pending.empty(); ++step) {
     if (step == kMaxDyadicSteps) throw UnresolvedAtDoubles{};
     DyadicBracket d = std::move(pending.back());

@@ -37,6 +37,16 @@ struct DyadicBracket {
   bool is_exact() const { return A == B; }
 };
 
+/// The roots of p (degree 2 or 3, square-free) strictly inside (A 2^-K, B 2^-K), each in its
+/// own dyadic bracket, ascending: the interval cut at enclosures of the critical points of p
+/// (roots of p', quadratic irrationals) on which p keeps the sign it has at them, into pieces
+/// where p is monotone. A constant number of exact steps per doubling of the precision, however
+/// close the roots are; nullopt when the enclosures need more than 2^14 bits beyond 2^-K
+/// (then bisect).
+/// PROOF: proofs/exact_ccd.md#roots-closer-than-one-ulp
+std::optional<std::vector<DyadicBracket>> split_at_critical_points(const MpzPolynomial& p,
+                                                                  const DyadicBracket& d);
+
 /// A root r of the polynomial p: exact (lo == hi, a double), or the only root of p in the open
 /// interval (lo, hi) of doubles, simple, with p(lo) and p(hi) non-zero of opposite signs; or,
 /// when lo and hi are adjacent doubles holding several roots of p, one of them in a dyadic

@@ -472,8 +472,6 @@ int tarski_sign_at_root(const MpzPolynomial& p, const MpzPolynomial& g, const mp
   return variations(A) - variations(B);
 }
 
-namespace {
-
 /// The pseudo-remainder lc(b)^n a = Q b + r, n = deg a - deg b + 1 (deg a >= deg b >= 0), and
 /// the sign of lc(b)^n: r(x) has the sign of that times a(x) at every root x of b.
 int pseudo_remainder(MpzPolynomial a, const MpzPolynomial& b, MpzPolynomial* r) {
@@ -498,6 +496,8 @@ int sign_plus_sqrt(const mpz_class& X, const mpz_class& Y, const mpz_class& D) {
   const int c = cmp(mpz_class(X * X), mpz_class(Y * Y * D));  // |X| against |Y| sqrt(D)
   return c > 0 ? sx : c < 0 ? sy : 0;
 }
+
+namespace {
 
 int coefficient_sign(const MpzPolynomial& p, int i) { return sgn(p.c[static_cast<std::size_t>(i)]); }
 

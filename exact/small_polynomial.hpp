@@ -129,6 +129,14 @@ int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz
 int tarski_sign_at_root(const MpzPolynomial& p, const MpzPolynomial& g, const mpz_class& A,
                         const mpz_class& B, unsigned K);
 
+/// The pseudo-remainder r of a by b (deg a >= deg b >= 0): lc(b)^n a = Q b + r with
+/// n = deg a - deg b + 1 and deg r < deg b; returns the sign of lc(b)^n, so that at every root x
+/// of b, a(x) has the sign of the returned value times r(x).
+int pseudo_remainder(MpzPolynomial a, const MpzPolynomial& b, MpzPolynomial* r);
+
+/// The exact sign of X + Y sqrt(D), D >= 0.
+int sign_plus_sqrt(const mpz_class& X, const mpz_class& Y, const mpz_class& D);
+
 /// The same sign by two pseudo-remainders and one quadratic irrationality, no gcd: with
 /// h = prem(g, p) (degree < deg p <= 3) and the real roots s of h located against r (against the
 /// bracket's ends, then by the sign of p at s from prem(p, h)). `sign_lo` is the sign of p at

@@ -8,6 +8,7 @@
 // PROOF: proofs/exact_ccd.md#sign-at-a-root-by-remainders
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -172,6 +173,11 @@ TEST_F(SmallPolynomialTest, RootIteratorFindsEveryRootInOrder) {
       {{third, Q(2, 3)}, 0.5},               // t_max cuts the second
       {{Q(1, 2)}, 0.5},                      // root at t_max
       {{pow2(-1000), pow2(-900)}, 1.0},      // tiny roots
+      // Closer than one ulp by far: split at the critical points (2,000 bisections otherwise).
+      {{Q(3, 10), Q(3, 10) + pow2(-2000)}, 1.0},
+      {{Q(3, 10) - pow2(-1500), Q(3, 10), Q(3, 10) + pow2(-500)}, 1.0},
+      {{Q(3, 10) - pow2(-700), Q(3, 10) + pow2(-700), Q(9, 10)}, 1.0},
+      {{Q(1, 2), Q(1, 2) + pow2(-300)}, 1.0},  // one at a double, one just above it
   };
   for (const Case& c : cases) {
     const SmallPolynomial p = with_roots(c.roots);
@@ -194,8 +200,74 @@ TEST_F(SmallPolynomialTest, RootIteratorFindsEveryRootInOrder) {
         EXPECT_LT(Q(found[i].lo()), r);
         EXPECT_GT(Q(found[i].hi()), r);
       }
+      // Each root's own bracket, dyadic ones included, separates it from every other: the
+      // sign of den t - num (zero exactly at that rational root) at the found root.
+      for (std::size_t j = 0; j < expected.size(); ++j) {
+        const mpz_class line[2] = {-expected[j].get_num(), expected[j].get_den()};
+        const SmallPolynomial g = SmallPolynomial::from_mpz(line, 2);
+        EXPECT_EQ(found[i].sign_of(g), i == j ? 0 : i > j ? 1 : -1)
+            << "root " << i << " against " << j << " of " << c.roots.size();
+      }
     }
   }
+}
+
+// The split at critical points on its own: every root inside the bracket, each in its own
+// dyadic bracket with p changing sign across it, ascending, however close (2^-40 to 2^-8000;
+// bisection would take that many steps), for cubics and quadratics; p monotone: none.
+TEST_F(SmallPolynomialTest, SplitAtCriticalPointsSeparatesCloseRoots) {
+  struct Case {
+    std::vector<Q> roots;   // all of p's roots
+    std::size_t inside;     // how many lie in (0.29, 0.31)
+  };
+  const Q c(3, 10);
+  const std::vector<Case> cases = {
+      {{c, c + pow2(-40)}, 2},
+      {{c, c + pow2(-8000)}, 2},
+      {{c - pow2(-1500), c, c + pow2(-500)}, 3},
+      {{c - pow2(-700), c + pow2(-700), Q(9, 10)}, 2},
+      {{c, Q(9, 10), Q(-2)}, 1},
+      {{Q(1, 10), Q(9, 10), Q(1, 2)}, 0},
+      {{c, Q(1, 2)}, 1},                      // a quadratic, its critical point outside
+  };
+  for (const Case& k : cases) {
+    const MpzPolynomial p = to_mpz_polynomial(with_roots(k.roots));
+    DyadicBracket d;
+    d.K = 100;
+    d.A = mpz_class(Q(Q(29, 100) * Q(mpz_class(1) << 100)).get_num() /
+                    Q(Q(29, 100) * Q(mpz_class(1) << 100)).get_den());
+    d.B = mpz_class(Q(Q(31, 100) * Q(mpz_class(1) << 100)).get_num() /
+                    Q(Q(31, 100) * Q(mpz_class(1) << 100)).get_den());
+    const std::optional<std::vector<DyadicBracket>> split = split_at_critical_points(p, d);
+    ASSERT_TRUE(split.has_value()) << k.roots.size() << " roots";
+    ASSERT_EQ(split->size(), k.inside);
+    std::vector<Q> inside;
+    for (const Q& r : k.roots)
+      if (r > Q(29, 100) && r < Q(31, 100)) inside.push_back(r);
+    std::sort(inside.begin(), inside.end());
+    for (std::size_t i = 0; i < inside.size(); ++i) {
+      const DyadicBracket& b = (*split)[i];
+      const Q scale(mpz_class(1) << b.K);
+      EXPECT_LT(Q(b.A) / scale, inside[i]);
+      EXPECT_GT(Q(b.B) / scale, inside[i]);
+      EXPECT_EQ(b.sign_lo, sign_at_dyadic(p, b.A, b.K));
+      EXPECT_EQ(-b.sign_lo, sign_at_dyadic(p, b.B, b.K));
+      if (i > 0) EXPECT_LE(Q((*split)[i - 1].B) / Q(mpz_class(1) << (*split)[i - 1].K), Q(b.A) / scale);
+    }
+  }
+  // p' without real roots (p monotone): (10t - 3)(t^2 + 1), its one root inside found.
+  MpzPolynomial monotone;
+  monotone.c = {mpz_class(-3), mpz_class(10), mpz_class(-3), mpz_class(10)};
+  monotone.degree = 3;
+  DyadicBracket d;
+  d.K = 7;
+  d.A = 37;  // 0.2890625
+  d.B = 39;  // 0.3046875
+  const std::optional<std::vector<DyadicBracket>> one = split_at_critical_points(monotone, d);
+  ASSERT_TRUE(one.has_value());
+  ASSERT_EQ(one->size(), 1u);
+  EXPECT_LT(Q((*one)[0].A) / Q(mpz_class(1) << (*one)[0].K), c);
+  EXPECT_GT(Q((*one)[0].B) / Q(mpz_class(1) << (*one)[0].K), c);
 }
 
 TEST_F(SmallPolynomialTest, SignAtRootMatchesRationalPath) {
