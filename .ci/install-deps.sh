@@ -6,6 +6,8 @@ packages=(
   g++ cmake make pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev libboost-dev
   googletest libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+  # The Python module and its tests, the Dask oracle, the API reference (issue 11).
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed doxygen
 )
 if [[ "${1:-}" == "--with-plots" ]]; then packages+=(python3-matplotlib); fi
 # .ci/sanitizers.sh: clang with its sanitizer and libFuzzer runtimes, llvm-symbolizer for traces.

@@ -20,6 +20,7 @@
 #include "check.hpp"
 #include "cli_common.hpp"
 #include "exactccd/query_file.hpp"
+#include "exactccd/version.hpp"
 #include "generate_command.hpp"
 #include "grade.hpp"
 #include "simulate_command.hpp"
@@ -155,6 +156,8 @@ int main(int argc, char** argv) {
       "exactccd");
   app.footer(kExitStatusHelp);
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("exactccd ") + exactccd::library_version(),
+                       "Print the version of the library and exit");
 
   CheckOptions check_options;
   std::string check_type;
