@@ -1,0 +1,124 @@
+"""exactccd: exact continuous collision detection for linearly moving vertices.
+
+Every vertex moves on a straight line, x(t) = (1 - t) x_t0 + t x_t1. A query collides iff the
+closed primitives (closed triangle, closed segments) share a point at some t in [0, t_max]; in
+the default mode the answer is exact for every finite input, and [toi_lo, toi_hi] encloses the
+exact earliest contact time.
+
+    import exactccd
+    r = exactccd.vertex_face_ccd(p0, a0, b0, c0, p1, a1, b1, c1)   # numpy 3-vectors
+    r.collides, r.toi_lo, r.toi_hi, r.stage
+    batch = exactccd.vertex_face_ccd_batch(queries)                  # (N, 8, 3) float64
+    batch.collides, batch.toi_lo, batch.toi_hi, batch.stage          # numpy arrays
+
+Bad input raises ValueError (malformed query files: exactccd.InputError, a ValueError).
+"""
+
+from typing import NamedTuple, Optional
+
+import numpy as np
+
+from . import _exactccd
+from ._exactccd import (
+    MODE_NAMES,
+    STAGE_NAMES,
+    CcdResult,
+    __version__,
+    EarliestContact,
+    InputError,
+    Scene,
+    SceneContact,
+    ScenePair,
+    SceneResult,
+    SceneStats,
+    exact_ccd,
+    find_query_files,
+    query_type_from_path,
+)
+from .query_files import (
+    QueryData,
+    read_query_file,
+    read_query_file_exact,
+    write_query_file,
+)
+
+for _type in (CcdResult, EarliestContact, InputError, Scene, SceneContact, ScenePair, SceneResult,
+              SceneStats):
+    _type.__module__ = __name__
+
+__all__ = [
+    "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES", "QueryData",
+    "STAGE_NAMES", "Scene", "SceneContact", "ScenePair", "SceneResult", "SceneStats",
+    "edge_edge_ccd", "edge_edge_ccd_batch", "exact_ccd", "find_query_files",
+    "query_type_from_path", "read_query_file", "read_query_file_exact", "vertex_face_ccd",
+    "vertex_face_ccd_batch", "write_query_file",
+]
+
+
+def _points(points, names):
+    """The 8 points as one (8, 3) array: either 8 3-vectors or one (8, 3) array."""
+    if len(points) == 1:
+        return points[0]
+    if len(points) == 8:
+        return [np.asarray(p, dtype=np.float64) for p in points]
+    raise TypeError(f"expected the 8 points {', '.join(names)} or one (8, 3) array, "
+                    f"got {len(points)} arguments")
+
+
+_VERTEX_FACE_ROWS = ("p_t0", "a_t0", "b_t0", "c_t0", "p_t1", "a_t1", "b_t1", "c_t1")
+_EDGE_EDGE_ROWS = ("ea0_t0", "ea1_t0", "eb0_t0", "eb1_t0", "ea0_t1", "ea1_t1", "eb0_t1", "eb1_t1")
+
+
+def vertex_face_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
+                    mode: str = "default") -> CcdResult:
+    """Vertex p against the closed triangle (a, b, c), over [0, t_max].
+
+    vertex_face_ccd(p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1) with 3-vectors, or
+    vertex_face_ccd(points) with one (8, 3) array in that row order.
+    t_max in (0, 1]; toi_width >= 0 (0: the tightest pair of doubles around the exact time);
+    mode "default" (certified), "exact" (the rational path only) or "float_only" (uncertified,
+    for comparison). Raises ValueError for non-finite coordinates or options outside their domain.
+    """
+    return _exactccd._vertex_face_ccd(_points(points, _VERTEX_FACE_ROWS), t_max, toi_width, mode)
+
+
+def edge_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
+                  mode: str = "default") -> CcdResult:
+    """Closed segment [ea0, ea1] against the closed segment [eb0, eb1], over [0, t_max].
+
+    edge_edge_ccd(ea0_t0, ea1_t0, eb0_t0, eb1_t0, ea0_t1, ea1_t1, eb0_t1, eb1_t1) or
+    edge_edge_ccd(points) with one (8, 3) array; options as vertex_face_ccd.
+    """
+    return _exactccd._edge_edge_ccd(_points(points, _EDGE_EDGE_ROWS), t_max, toi_width, mode)
+
+
+class BatchResult(NamedTuple):
+    """Results of a batch, one entry per query: stage holds codes into STAGE_NAMES."""
+    collides: np.ndarray  # bool
+    toi_lo: np.ndarray    # float64
+    toi_hi: np.ndarray    # float64
+    stage: np.ndarray     # uint8
+
+    def stage_names(self):
+        """The stage of each query by name."""
+        return [STAGE_NAMES[code] for code in self.stage]
+
+
+def vertex_face_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
+                          mode: str = "default", threads: Optional[int] = None) -> BatchResult:
+    """Decides N vertex-face queries: an (N, 8, 3) array, rows p, a, b, c at t0 then at t1.
+
+    Runs without the GIL, in parallel over `threads` threads (None: every core; 1: serially on
+    the calling thread). Results equal one vertex_face_ccd call per query. Raises ValueError
+    for a wrong shape, bad options, or a bad query (the message names the first one's index).
+    """
+    return BatchResult(*_exactccd._ccd_batch("vertex-face", queries, t_max, toi_width, mode,
+                                             threads))
+
+
+def edge_edge_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
+                        mode: str = "default", threads: Optional[int] = None) -> BatchResult:
+    """Decides N edge-edge queries: an (N, 8, 3) array, rows ea0, ea1, eb0, eb1 at t0 then at
+    t1. As vertex_face_ccd_batch."""
+    return BatchResult(*_exactccd._ccd_batch("edge-edge", queries, t_max, toi_width, mode,
+                                             threads))

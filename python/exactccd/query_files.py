@@ -1,0 +1,97 @@
+"""The CCD benchmark's CSV files (Wang et al. 2021): 8 rows per query, columns
+x_num,x_den,y_num,y_den,z_num,z_den,truth; coordinates exact rationals."""
+
+import errno
+import os
+import secrets
+from typing import NamedTuple, Optional
+
+import numpy as np
+
+from . import _exactccd
+
+
+class QueryData(NamedTuple):
+    """A query file's content: queries (N, 8, 3) (float64 from read_query_file; lists of 8
+    (x, y, z) tuples of fractions.Fraction from read_query_file_exact), truth (N,) bool, and
+    type ("vertex-face" or "edge-edge")."""
+    queries: object
+    truth: np.ndarray
+    type: str
+
+
+def read_query_file(path, type: Optional[str] = None) -> QueryData:
+    """Reads a benchmark CSV file into an (N, 8, 3) float64 array and its truth column.
+
+    type: "vertex-face" or "edge-edge"; None takes it from a folder of that name in the path.
+    Raises exactccd.InputError (naming the file and line) for a malformed file, an unknown type,
+    or a coordinate that is not exactly a double (read_query_file_exact reads those).
+    """
+    return QueryData(*_exactccd._read_query_file(os.fspath(path), type))
+
+
+def read_query_file_exact(path, type: Optional[str] = None) -> QueryData:
+    """Reads a benchmark CSV file with every coordinate as an exact fractions.Fraction:
+    queries is a list of N lists of 8 (x, y, z) tuples, for exactccd.exact_ccd."""
+    return QueryData(*_exactccd._read_query_file_exact(os.fspath(path), type))
+
+
+def _temporary_file(folder, name):
+    """A new file next to the target (so that the rename stays in one file system), created
+    with the usual permissions (0666 minus the umask)."""
+    while True:
+        temporary = os.path.join(folder, f".{name}.{secrets.token_hex(6)}.tmp")
+        try:
+            return temporary, os.open(temporary, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        except FileExistsError:
+            continue
+
+
+def write_query_file(path, queries, truth, *, overwrite: bool = False) -> None:
+    """Writes queries (N, 8, 3) with their truth values (N,) as a benchmark CSV file, each
+    coordinate as the exact fraction of its double (so the file reads back as exactly these
+    doubles). Rows in the benchmark's order (vertex-face: p, a, b, c at t0 then t1; edge-edge:
+    ea0, ea1, eb0, eb1 at t0 then t1).
+
+    The file appears whole or not at all: written to a temporary file in the same folder, then
+    renamed into place. An existing file is never replaced unless overwrite=True
+    (FileExistsError). Raises ValueError for a wrong shape or a non-finite coordinate, before
+    anything is written.
+    """
+    text = _exactccd._format_query_rows(queries, truth)
+    path = os.fspath(path)
+    folder, name = os.path.split(os.path.abspath(path))
+    if not overwrite and os.path.lexists(path):
+        raise FileExistsError(errno.EEXIST, "refusing to replace an existing file "
+                              "(write_query_file(..., overwrite=True) replaces it)", path)
+    temporary, fd = _temporary_file(folder, name)
+    try:
+        with os.fdopen(fd, "wb") as out:
+            out.write(text)
+            out.flush()
+            os.fsync(out.fileno())
+        if overwrite:
+            os.replace(temporary, path)
+        else:
+            # link() fails if the name exists, even if it appeared since the check above.
+            try:
+                os.link(temporary, path)
+            except FileExistsError:
+                raise FileExistsError(errno.EEXIST, "refusing to replace an existing file "
+                                      "(write_query_file(..., overwrite=True) replaces it)",
+                                      path) from None
+            except OSError as error:
+                # A file system without hard links: rename, after checking again.
+                if error.errno not in (errno.EPERM, errno.EOPNOTSUPP, errno.ENOSYS):
+                    raise
+                if os.path.lexists(path):
+                    raise FileExistsError(errno.EEXIST, "refusing to replace an existing file "
+                                          "(write_query_file(..., overwrite=True) replaces it)",
+                                          path) from None
+                os.rename(temporary, path)
+                return
+            os.unlink(temporary)
+    except BaseException:
+        if os.path.lexists(temporary):
+            os.unlink(temporary)
+        raise

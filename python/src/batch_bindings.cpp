@@ -1,0 +1,125 @@
+// Many queries at once: an (N, 8, 3) array decided in parallel (TBB) without the GIL.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cstdint>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "exactccd/ccd.hpp"
+
+namespace exactccd::python {
+
+namespace {
+
+// The first failing query (lowest index, whatever the order the threads reach them in).
+class FirstFailure {
+ public:
+  void record(std::size_t index, std::exception_ptr error) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!error_ || index < index_) {
+      index_ = index;
+      error_ = std::move(error);
+    }
+  }
+  // Raises the failure, naming the query: a ValueError for bad input, else as it was thrown.
+  void raise_if_any() const {
+    if (!error_) return;
+    try {
+      std::rethrow_exception(error_);
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error("query " + std::to_string(index_) + ": " + e.what());
+    }
+  }
+
+ private:
+  std::mutex mutex_;
+  std::size_t index_ = 0;
+  std::exception_ptr error_;
+};
+
+template <class Query>
+Query query_of(const double* data) {
+  const QueryPoints p = points_of(data);
+  return {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]};
+}
+
+CcdResult decide(QueryType type, const double* data, const CcdOptions& options) {
+  return type == QueryType::vertex_face
+             ? vertex_face_ccd(query_of<VertexFaceQuery>(data), options)
+             : edge_edge_ccd(query_of<EdgeEdgeQuery>(data), options);
+}
+
+py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
+                       double toi_width, const std::string& mode,
+                       const std::optional<int>& threads) {
+  const CcdOptions options = make_options(t_max, toi_width, mode);
+  if (threads && *threads < 1)
+    throw py::value_error("threads must be >= 1 (or None for every core), not " +
+                          std::to_string(*threads));
+  const DoubleArray array = as_double_array(queries, {-1, 8, 3}, "queries");
+  const auto n = static_cast<std::size_t>(array.shape(0));
+  py::array_t<bool> collides(static_cast<py::ssize_t>(n));
+  py::array_t<double> toi_lo(static_cast<py::ssize_t>(n));
+  py::array_t<double> toi_hi(static_cast<py::ssize_t>(n));
+  py::array_t<std::uint8_t> stage(static_cast<py::ssize_t>(n));
+  const double* data = array.data();
+  bool* out_collides = collides.mutable_data();
+  double* out_lo = toi_lo.mutable_data();
+  double* out_hi = toi_hi.mutable_data();
+  std::uint8_t* out_stage = stage.mutable_data();
+
+  FirstFailure failure;
+  {
+    py::gil_scoped_release release;
+    const auto run = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        try {
+          const CcdResult r = decide(type, data + 24 * i, options);
+          out_collides[i] = r.collides;
+          out_lo[i] = r.toi_lo;
+          out_hi[i] = r.toi_hi;
+          out_stage[i] = static_cast<std::uint8_t>(r.decided_by);
+        } catch (...) {
+          failure.record(i, std::current_exception());
+          return;  // later queries of this range cannot lower the index
+        }
+      }
+    };
+    if (threads && *threads == 1) {
+      run(0, n);
+    } else {
+      tbb::task_arena arena(threads ? *threads : tbb::task_arena::automatic);
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                            run(r.begin(), r.end());
+                          });
+      });
+    }
+  }
+  failure.raise_if_any();
+  return py::make_tuple(collides, toi_lo, toi_hi, stage);
+}
+
+}  // namespace
+
+void bind_batch(py::module_& m) {
+  m.def(
+      "_ccd_batch",
+      [](const std::string& type, const py::handle& queries, double t_max, double toi_width,
+         const std::string& mode, const std::optional<int>& threads) {
+        return decide_batch(parse_query_type(type), queries, t_max, toi_width, mode, threads);
+      },
+      py::arg("type"), py::arg("queries"), py::arg("t_max"), py::arg("toi_width"),
+      py::arg("mode"), py::arg("threads"));
+}
+
+}  // namespace exactccd::python

@@ -1,0 +1,51 @@
+// Shared pieces of the Python module's bindings: conversions between Python objects and the
+// library's types, and one bind_* function per part of the API.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <array>
+#include <cstddef>
+#include <string>
+
+#include "exactccd/rational_query.hpp"
+#include "exactccd/types.hpp"
+
+namespace exactccd::python {
+
+namespace py = pybind11;
+
+/// The benchmark's 8 points of one query, in its row order.
+using QueryPoints = std::array<Eigen::Vector3d, 8>;
+
+/// A C-contiguous float64 array (converted when it is not one).
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// The Mode named `name` ("default", "float_only", "exact": to_string(Mode)); ValueError otherwise.
+Mode parse_mode(const std::string& name);
+/// "vertex-face" / "vf" or "edge-edge" / "ee"; ValueError otherwise.
+QueryType parse_query_type(const std::string& name);
+
+/// Options as given to the Python functions; their domain is checked by the library (ValueError).
+CcdOptions make_options(double t_max, double toi_width, const std::string& mode);
+
+/// `object` as an array of the given shape (float64, C order), or ValueError naming `what` and
+/// the shape received. shape entries < 0 match any length.
+DoubleArray as_double_array(const py::handle& object, const std::vector<py::ssize_t>& shape,
+                            const char* what);
+
+/// The 8 points of an (8, 3) array.
+QueryPoints points_of(const double* data);
+
+/// The stage names in code order (to_string(Stage) for codes 0, 1, ... until "unknown").
+const std::vector<std::string>& stage_names();
+
+void bind_ccd(py::module_& m);
+void bind_batch(py::module_& m);
+void bind_rational(py::module_& m);
+void bind_query_files(py::module_& m);
+void bind_scene(py::module_& m);
+void bind_oracle(py::module_& m);
+
+}  // namespace exactccd::python

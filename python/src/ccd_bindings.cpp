@@ -1,0 +1,80 @@
+// One query at a time: vertex_face_ccd, edge_edge_ccd and their result type.
+#include <pybind11/stl.h>
+
+#include <cstdio>
+
+#include "bindings.hpp"
+#include "exactccd/ccd.hpp"
+
+namespace exactccd::python {
+
+namespace {
+
+std::string repr(const CcdResult& r) {
+  char text[160];
+  std::snprintf(text, sizeof text, "CcdResult(collides=%s, toi_lo=%.17g, toi_hi=%.17g, stage='%s')",
+                r.collides ? "True" : "False", r.toi_lo, r.toi_hi, to_string(r.decided_by));
+  return text;
+}
+
+template <class Decide>
+CcdResult decide_points(const py::handle& points, double t_max, double toi_width,
+                        const std::string& mode, Decide decide) {
+  const CcdOptions options = make_options(t_max, toi_width, mode);
+  const DoubleArray array = as_double_array(points, {8, 3}, "the query's points");
+  const QueryPoints p = points_of(array.data());
+  py::gil_scoped_release release;  // the exact path can take a while
+  return decide(p, options);
+}
+
+}  // namespace
+
+void bind_ccd(py::module_& m) {
+  py::class_<CcdResult>(m, "CcdResult",
+                        "The result of one query: collides, [toi_lo, toi_hi] (the certified "
+                        "enclosure of the earliest contact time when collides) and the stage "
+                        "that decided it.")
+      .def_readonly("collides", &CcdResult::collides)
+      .def_readonly("toi_lo", &CcdResult::toi_lo)
+      .def_readonly("toi_hi", &CcdResult::toi_hi)
+      .def_property_readonly("stage", [](const CcdResult& r) { return to_string(r.decided_by); },
+                             "The name of the stage that decided the query (STAGE_NAMES).")
+      .def_property_readonly(
+          "stage_code", [](const CcdResult& r) { return static_cast<int>(r.decided_by); },
+          "The stage's code: its index in STAGE_NAMES.")
+      .def("__repr__", &repr)
+      .def("__eq__",
+           [](const CcdResult& a, const CcdResult& b) {
+             // Bitwise on the TOIs, so that equal infinities and equal zeros compare equal.
+             return a.collides == b.collides && a.decided_by == b.decided_by &&
+                    (a.toi_lo == b.toi_lo || (a.toi_lo != a.toi_lo && b.toi_lo != b.toi_lo)) &&
+                    (a.toi_hi == b.toi_hi || (a.toi_hi != a.toi_hi && b.toi_hi != b.toi_hi));
+           })
+      .def("__bool__", [](const CcdResult& r) { return r.collides; });
+
+  m.def(
+      "_vertex_face_ccd",
+      [](const py::handle& points, double t_max, double toi_width, const std::string& mode) {
+        return decide_points(points, t_max, toi_width, mode,
+                             [](const QueryPoints& p, const CcdOptions& o) {
+                               return vertex_face_ccd(
+                                   {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, o);
+                             });
+      },
+      py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"));
+  m.def(
+      "_edge_edge_ccd",
+      [](const py::handle& points, double t_max, double toi_width, const std::string& mode) {
+        return decide_points(points, t_max, toi_width, mode,
+                             [](const QueryPoints& p, const CcdOptions& o) {
+                               return edge_edge_ccd(
+                                   {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, o);
+                             });
+      },
+      py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"));
+  m.attr("STAGE_NAMES") = py::cast(stage_names());
+  m.attr("MODE_NAMES") = py::cast(std::vector<std::string>{
+      to_string(Mode::filtered), to_string(Mode::float_only), to_string(Mode::exact)});
+}
+
+}  // namespace exactccd::python

@@ -1,0 +1,88 @@
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "bindings.hpp"
+
+namespace exactccd::python {
+
+Mode parse_mode(const std::string& name) {
+  for (const Mode m : {Mode::filtered, Mode::float_only, Mode::exact})
+    if (name == to_string(m)) return m;
+  throw py::value_error("mode must be \"default\", \"float_only\" or \"exact\", not \"" + name +
+                        "\"");
+}
+
+QueryType parse_query_type(const std::string& name) {
+  if (name == "vertex-face" || name == "vf") return QueryType::vertex_face;
+  if (name == "edge-edge" || name == "ee") return QueryType::edge_edge;
+  throw py::value_error("type must be \"vertex-face\" (\"vf\") or \"edge-edge\" (\"ee\"), not \"" +
+                        name + "\"");
+}
+
+CcdOptions make_options(double t_max, double toi_width, const std::string& mode) {
+  CcdOptions options;
+  options.t_max = t_max;
+  options.toi_width = toi_width;
+  options.mode = parse_mode(mode);
+  return options;
+}
+
+namespace {
+
+std::string shape_text(const std::vector<py::ssize_t>& shape) {
+  std::ostringstream out;
+  out << '(';
+  for (std::size_t k = 0; k < shape.size(); ++k) {
+    if (k > 0) out << ", ";
+    if (shape[k] < 0)
+      out << 'N';
+    else
+      out << shape[k];
+  }
+  out << (shape.size() == 1 ? ",)" : ")");
+  return out.str();
+}
+
+}  // namespace
+
+DoubleArray as_double_array(const py::handle& object, const std::vector<py::ssize_t>& shape,
+                            const char* what) {
+  // numpy's own conversion (lists, other dtypes, non-contiguous arrays); its errors (a string
+  // that is not a number, a ragged list) are ValueError or TypeError already.
+  py::module_ numpy = py::module_::import("numpy");
+  DoubleArray array = DoubleArray::ensure(
+      numpy.attr("ascontiguousarray")(object, py::arg("dtype") = numpy.attr("float64")));
+  if (!array) throw py::type_error(std::string(what) + " must be an array of numbers");
+  std::vector<py::ssize_t> got(array.shape(), array.shape() + array.ndim());
+  bool matches = got.size() == shape.size();
+  for (std::size_t k = 0; matches && k < shape.size(); ++k)
+    matches = shape[k] < 0 || shape[k] == got[k];
+  if (!matches)
+    throw py::value_error(std::string(what) + " must have shape " + shape_text(shape) +
+                          ", not " + shape_text(got));
+  return array;
+}
+
+QueryPoints points_of(const double* data) {
+  QueryPoints points;
+  for (std::size_t row = 0; row < 8; ++row)
+    points[row] = Eigen::Vector3d(data[3 * row], data[3 * row + 1], data[3 * row + 2]);
+  return points;
+}
+
+const std::vector<std::string>& stage_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> found;
+    for (int k = 0; k < 256; ++k) {
+      const char* name = to_string(static_cast<Stage>(k));
+      if (std::strcmp(name, "unknown") == 0) break;
+      found.emplace_back(name);
+    }
+    return found;
+  }();
+  return names;
+}
+
+}  // namespace exactccd::python

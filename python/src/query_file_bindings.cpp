@@ -1,0 +1,121 @@
+// The benchmark's CSV files: reading into arrays (or exact Fractions), listing, and formatting
+// queries as CSV rows (the Python side writes them to a file safely).
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "bindings.hpp"
+#include "exactccd/query_file.hpp"
+#include "rational_conversion.hpp"
+
+namespace exactccd::python {
+
+namespace {
+
+// Whether q is exactly a finite double (then *d is it). mpq_get_d truncates towards zero, so
+// it returns q itself when q is a double; infinities (q beyond the doubles) are refused before
+// converting back.
+bool to_double_exactly(const mpq_class& q, double* d) {
+  *d = q.get_d();
+  return std::isfinite(*d) && cmp(q, mpq_class(*d)) == 0;
+}
+
+QueryType resolve_type(const std::string& path, const std::optional<std::string>& type) {
+  if (type) return parse_query_type(*type);
+  if (const std::optional<QueryType> found = query_type_from_path(path)) return *found;
+  throw InputError(path, 0,
+                   "cannot tell the query type: no folder named vertex-face or edge-edge in "
+                   "the path (pass type=\"vertex-face\" or type=\"edge-edge\")");
+}
+
+QueryFile read(const std::string& path, const std::optional<std::string>& type) {
+  const QueryType query_type = resolve_type(path, type);
+  py::gil_scoped_release release;
+  return read_query_file(path, query_type);
+}
+
+py::array_t<bool> truth_array(const QueryFile& file) {
+  py::array_t<bool> truth(static_cast<py::ssize_t>(file.queries.size()));
+  bool* out = truth.mutable_data();
+  for (std::size_t i = 0; i < file.queries.size(); ++i) out[i] = file.queries[i].truth;
+  return truth;
+}
+
+py::tuple read_doubles(const std::string& path, const std::optional<std::string>& type) {
+  const QueryFile file = read(path, type);
+  const auto n = static_cast<py::ssize_t>(file.queries.size());
+  py::array_t<double> queries({n, py::ssize_t{8}, py::ssize_t{3}});
+  double* out = queries.mutable_data();
+  for (const QueryRecord& record : file.queries) {
+    for (std::size_t row = 0; row < 8; ++row) {
+      const RationalPoint& p = record.query.points[row];
+      for (const mpq_class* q : {&p.x, &p.y, &p.z})
+        if (!to_double_exactly(*q, out++))
+          throw InputError(file.path, record.line_of_row(row),
+                           "a coordinate is not exactly a double (read_query_file_exact reads "
+                           "it as a fractions.Fraction)");
+    }
+  }
+  return py::make_tuple(queries, truth_array(file), to_string(file.type));
+}
+
+py::tuple read_exact(const std::string& path, const std::optional<std::string>& type) {
+  const QueryFile file = read(path, type);
+  py::list queries;
+  for (const QueryRecord& record : file.queries) {
+    py::list points;
+    for (const RationalPoint& p : record.query.points)
+      points.append(py::make_tuple(to_fraction(p.x), to_fraction(p.y), to_fraction(p.z)));
+    queries.append(points);
+  }
+  return py::make_tuple(queries, truth_array(file), to_string(file.type));
+}
+
+// The CSV text of `queries` (N, 8, 3) with truth values `truth` (N,).
+py::bytes format_rows(const py::handle& queries, const py::handle& truth) {
+  const DoubleArray array = as_double_array(queries, {-1, 8, 3}, "queries");
+  const auto n = array.shape(0);
+  const py::array_t<bool, py::array::c_style | py::array::forcecast> flags =
+      py::module_::import("numpy").attr("ascontiguousarray")(truth, py::arg("dtype") = "bool");
+  if (flags.ndim() != 1 || flags.shape(0) != n)
+    throw py::value_error("truth must have shape (" + std::to_string(n) + ",), one value per query");
+  std::string text;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    try {
+      append_query_rows(text, points_of(array.data() + 24 * i), flags.data()[i]);
+    } catch (const std::invalid_argument& e) {
+      throw py::value_error("query " + std::to_string(i) + ": " + e.what());
+    }
+  }
+  return py::bytes(text);
+}
+
+}  // namespace
+
+void bind_query_files(py::module_& m) {
+  m.def("_read_query_file", &read_doubles, py::arg("path"), py::arg("type"));
+  m.def("_read_query_file_exact", &read_exact, py::arg("path"), py::arg("type"));
+  m.def("_format_query_rows", &format_rows, py::arg("queries"), py::arg("truth"));
+  m.def(
+      "find_query_files",
+      [](const std::string& path) {
+        py::gil_scoped_release release;
+        return find_query_files(path);
+      },
+      py::arg("path"),
+      "The query files of `path`: itself when it is a file; for a directory, every "
+      "vertex-face/*.csv and edge-edge/*.csv below it, sorted (TOI sidecars toi_*.csv "
+      "excluded). Raises InputError when there is none or the path cannot be read.");
+  m.def(
+      "query_type_from_path",
+      [](const std::string& path) -> std::optional<std::string> {
+        if (const auto type = query_type_from_path(path)) return std::string(to_string(*type));
+        return std::nullopt;
+      },
+      py::arg("path"),
+      "\"vertex-face\" or \"edge-edge\" from the nearest folder of that name in `path`, or None.");
+}
+
+}  // namespace exactccd::python

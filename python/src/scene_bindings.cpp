@@ -1,0 +1,320 @@
+// The Scene API over numpy arrays: vertices (V, 3) float64, faces (F, 3) integer.
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <mutex>
+#include <string>
+
+#include "bindings.hpp"
+#include "exactccd/scene.hpp"
+
+namespace exactccd::python {
+
+namespace {
+
+Positions positions_of(const py::handle& object, const char* what) {
+  const DoubleArray array = as_double_array(object, {-1, 3}, what);
+  Positions positions(array.shape(0), 3);
+  std::copy(array.data(), array.data() + array.size(), positions.data());
+  return positions;
+}
+
+// Faces from any integer array, each index checked against int32's range before narrowing (a
+// cast would wrap an index around silently); the scene checks them against the vertex count.
+Triangles triangles_of(const py::handle& object) {
+  py::module_ numpy = py::module_::import("numpy");
+  const py::array array = numpy.attr("asarray")(object);
+  if (array.size() > 0 && !numpy.attr("issubdtype")(array.dtype(), numpy.attr("integer")).cast<bool>())
+    throw py::type_error("faces must be an integer array, not of dtype " +
+                         std::string(py::str(array.dtype())));
+  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> indices(array);
+  if (indices.ndim() != 2 || indices.shape(1) != 3)
+    throw py::value_error("faces must have shape (F, 3)");
+  Triangles triangles(indices.shape(0), 3);
+  for (py::ssize_t k = 0; k < indices.size(); ++k) {
+    const std::int64_t v = indices.data()[k];
+    if (v < 0 || v > std::numeric_limits<std::int32_t>::max())
+      throw py::value_error("faces: vertex index " + std::to_string(v) + " out of range");
+    triangles.data()[k] = static_cast<std::int32_t>(v);
+  }
+  return triangles;
+}
+
+template <class Matrix>
+py::array copy_to_array(const Matrix& matrix) {
+  using Scalar = typename Matrix::Scalar;
+  py::array_t<Scalar> array({static_cast<py::ssize_t>(matrix.rows()),
+                             static_cast<py::ssize_t>(matrix.cols())});
+  std::copy(matrix.data(), matrix.data() + matrix.size(), array.mutable_data());
+  return array;
+}
+
+BroadPhase parse_broad_phase(const std::string& name) {
+  for (const BroadPhase b : {BroadPhase::swept_bvh, BroadPhase::static_bvh})
+    if (name == to_string(b)) return b;
+  throw py::value_error(std::string("broad_phase must be \"") + to_string(BroadPhase::swept_bvh) +
+                        "\" or \"" + to_string(BroadPhase::static_bvh) + "\", not \"" + name +
+                        "\"");
+}
+
+SceneOptions scene_options(double t_max, double toi_width, const std::string& mode,
+                           const std::string& broad_phase, bool self_collision, int max_threads,
+                           bool record_candidates) {
+  SceneOptions options;
+  options.ccd = make_options(t_max, toi_width, mode);
+  options.broad_phase = parse_broad_phase(broad_phase);
+  options.self_collision = self_collision;
+  if (max_threads < 0) throw py::value_error("max_threads must be >= 0 (0: every core)");
+  options.max_threads = max_threads;
+  options.record_candidates = record_candidates;
+  return options;
+}
+
+MeshId checked_mesh(const Scene& scene, MeshId mesh) {
+  if (mesh >= scene.mesh_count())
+    throw py::index_error("no mesh " + std::to_string(mesh) + " (the scene has " +
+                          std::to_string(scene.mesh_count()) + ")");
+  return mesh;
+}
+
+std::string pair_repr(const ScenePair& p) {
+  return std::string("ScenePair('") + to_string(p.type) + "', " + std::to_string(p.first_mesh) +
+         ", " + std::to_string(p.first_index) + ", " + std::to_string(p.second_mesh) + ", " +
+         std::to_string(p.second_index) + ")";
+}
+
+std::string contact_repr(const SceneContact& c) {
+  char toi[96];
+  std::snprintf(toi, sizeof toi, ", toi_lo=%.17g, toi_hi=%.17g)", c.toi_lo, c.toi_hi);
+  return "SceneContact(" + pair_repr(c.pair) + toi;
+}
+
+// Checks a pair's indices against the scene, which indexes its arrays without checks.
+const ScenePair& checked_pair(const Scene& scene, const ScenePair& p) {
+  checked_mesh(scene, p.first_mesh);
+  checked_mesh(scene, p.second_mesh);
+  const bool vf = p.type == QueryType::vertex_face;
+  const auto first_count = vf ? scene.start_positions(p.first_mesh).rows()
+                              : scene.edges(p.first_mesh).rows();
+  const auto second_count = vf ? scene.triangles(p.second_mesh).rows()
+                               : scene.edges(p.second_mesh).rows();
+  if (p.first_index >= first_count || p.second_index >= second_count)
+    throw py::index_error("pair index out of range: " + pair_repr(p));
+  return p;
+}
+
+// A Scene with a lock: the C++ Scene must not be used from two threads at once, and its calls
+// run without the GIL, so calls from several Python threads take turns. The GIL is released
+// before the lock is taken (never held while waiting for it).
+struct GuardedScene {
+  Scene scene;
+  std::mutex mutex;
+
+  template <class Call>
+  auto run(Call call) {
+    py::gil_scoped_release release;
+    std::lock_guard<std::mutex> lock(mutex);
+    return call(scene);
+  }
+};
+
+py::array rows_of(const std::array<Eigen::Vector3d, 8>& points) {
+  Positions rows(8, 3);
+  for (int r = 0; r < 8; ++r) rows.row(r) = points[r].transpose();
+  return copy_to_array(rows);
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+  py::class_<ScenePair>(m, "ScenePair",
+                        "A vertex-face pair (vertex first_index of first_mesh, triangle "
+                        "second_index of second_mesh) or an edge-edge pair (indices into "
+                        "Scene.edges(mesh)).")
+      .def(py::init([](const std::string& type, MeshId first_mesh, std::uint32_t first_index,
+                       MeshId second_mesh, std::uint32_t second_index) {
+             return ScenePair{parse_query_type(type), first_mesh, first_index, second_mesh,
+                              second_index};
+           }),
+           py::arg("type"), py::arg("first_mesh"), py::arg("first_index"),
+           py::arg("second_mesh"), py::arg("second_index"))
+      .def_property_readonly("type", [](const ScenePair& p) { return to_string(p.type); })
+      .def_readonly("first_mesh", &ScenePair::first_mesh)
+      .def_readonly("first_index", &ScenePair::first_index)
+      .def_readonly("second_mesh", &ScenePair::second_mesh)
+      .def_readonly("second_index", &ScenePair::second_index)
+      .def("__eq__", [](const ScenePair& a, const ScenePair& b) { return a == b; })
+      .def("__lt__", [](const ScenePair& a, const ScenePair& b) { return a < b; })
+      .def("__hash__", [](const ScenePair& p) {
+        return py::hash(py::make_tuple(static_cast<int>(p.type), p.first_mesh, p.first_index,
+                                       p.second_mesh, p.second_index));
+      })
+      .def("__repr__", &pair_repr);
+
+  py::class_<SceneContact>(m, "SceneContact", "A colliding pair and its certified TOI interval.")
+      .def_readonly("pair", &SceneContact::pair)
+      .def_readonly("toi_lo", &SceneContact::toi_lo)
+      .def_readonly("toi_hi", &SceneContact::toi_hi)
+      .def("__repr__", &contact_repr);
+
+  py::class_<SceneStats>(m, "SceneStats")
+      .def_readonly("vertex_face_candidates", &SceneStats::vertex_face_candidates)
+      .def_readonly("edge_edge_candidates", &SceneStats::edge_edge_candidates)
+      .def_readonly("narrow_phase_tests", &SceneStats::narrow_phase_tests)
+      .def_readonly("hierarchies_built", &SceneStats::hierarchies_built)
+      .def_readonly("hierarchies_refitted", &SceneStats::hierarchies_refitted)
+      .def("__repr__", [](const SceneStats& s) {
+        return "SceneStats(vertex_face_candidates=" + std::to_string(s.vertex_face_candidates) +
+               ", edge_edge_candidates=" + std::to_string(s.edge_edge_candidates) +
+               ", narrow_phase_tests=" + std::to_string(s.narrow_phase_tests) +
+               ", hierarchies_built=" + std::to_string(s.hierarchies_built) +
+               ", hierarchies_refitted=" + std::to_string(s.hierarchies_refitted) + ")";
+      });
+
+  py::class_<SceneResult>(m, "SceneResult")
+      .def_readonly("contacts", &SceneResult::contacts, "Every colliding pair, in pair order.")
+      .def_property_readonly(
+          "earliest",
+          [](const SceneResult& r) -> std::optional<SceneContact> {
+            if (r.contacts.empty()) return std::nullopt;
+            return r.earliest;
+          },
+          "The contact with the smallest toi_lo (ties: pair order), or None.")
+      .def_readonly("candidates", &SceneResult::candidates,
+                    "Every candidate pair (with record_candidates=True).")
+      .def_readonly("stats", &SceneResult::stats);
+
+  py::class_<EarliestContact>(m, "EarliestContact")
+      .def_readonly("collides", &EarliestContact::collides)
+      .def_property_readonly("contact",
+                             [](const EarliestContact& e) -> std::optional<SceneContact> {
+                               if (!e.collides) return std::nullopt;
+                               return e.contact;
+                             })
+      .def_readonly("stats", &EarliestContact::stats);
+
+  py::class_<GuardedScene>(m, "Scene",
+                           "Whole triangle meshes over one time step (exactccd/scene.hpp). Calls "
+                           "from several Python threads are serialised.")
+      .def(py::init<>())
+      .def(
+          "add_mesh",
+          [](GuardedScene& g, const py::handle& vertices, const py::handle& faces) {
+            const Positions positions = positions_of(vertices, "vertices");
+            const Triangles triangles = triangles_of(faces);
+            return g.run([&](Scene& s) { return s.add_mesh(positions, triangles); });
+          },
+          py::arg("vertices"), py::arg("faces"),
+          "A moving mesh, at rest at `vertices` (V, 3) until set_motion; `faces` (F, 3) vertex "
+          "indices. Returns its mesh id.")
+      .def(
+          "add_static_mesh",
+          [](GuardedScene& g, const py::handle& vertices, const py::handle& faces) {
+            const Positions positions = positions_of(vertices, "vertices");
+            const Triangles triangles = triangles_of(faces);
+            return g.run([&](Scene& s) { return s.add_static_mesh(positions, triangles); });
+          },
+          py::arg("vertices"), py::arg("faces"), "A static mesh. Returns its mesh id.")
+      .def(
+          "set_motion",
+          [](GuardedScene& g, MeshId mesh, const py::handle& start, const py::handle& end) {
+            const Positions from = positions_of(start, "start"), to = positions_of(end, "end");
+            g.run([&](Scene& s) {
+              s.set_motion(checked_mesh(s, mesh), from, to);
+              return 0;
+            });
+          },
+          py::arg("mesh"), py::arg("start"), py::arg("end"),
+          "The step's motion of a moving mesh: vertex i from start[i] to end[i].")
+      .def_property_readonly("mesh_count",
+                             [](GuardedScene& g) {
+                               return g.run([](Scene& s) { return s.mesh_count(); });
+                             })
+      .def(
+          "is_static",
+          [](GuardedScene& g, MeshId mesh) {
+            return g.run([&](Scene& s) { return s.is_static(checked_mesh(s, mesh)); });
+          },
+          py::arg("mesh"))
+      .def(
+          "triangles",
+          [](GuardedScene& g, MeshId mesh) {
+            return copy_to_array(g.run([&](Scene& s) { return s.triangles(checked_mesh(s, mesh)); }));
+          },
+          py::arg("mesh"), "The mesh's triangles (F, 3), a copy.")
+      .def(
+          "edges",
+          [](GuardedScene& g, MeshId mesh) {
+            return copy_to_array(g.run([&](Scene& s) { return s.edges(checked_mesh(s, mesh)); }));
+          },
+          py::arg("mesh"),
+          "The mesh's edges (E, 2), i < j, sorted: the indices of edge-edge pairs (a copy).")
+      .def(
+          "start_positions",
+          [](GuardedScene& g, MeshId mesh) {
+            return copy_to_array(
+                g.run([&](Scene& s) { return s.start_positions(checked_mesh(s, mesh)); }));
+          },
+          py::arg("mesh"))
+      .def(
+          "end_positions",
+          [](GuardedScene& g, MeshId mesh) {
+            return copy_to_array(
+                g.run([&](Scene& s) { return s.end_positions(checked_mesh(s, mesh)); }));
+          },
+          py::arg("mesh"))
+      .def(
+          "find_contacts",
+          [](GuardedScene& g, double t_max, double toi_width, const std::string& mode,
+             const std::string& broad_phase, bool self_collision, int max_threads,
+             bool record_candidates) {
+            const SceneOptions o = scene_options(t_max, toi_width, mode, broad_phase,
+                                                 self_collision, max_threads, record_candidates);
+            return g.run([&](Scene& s) { return s.find_contacts(o); });
+          },
+          py::kw_only(), py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0,
+          py::arg("mode") = "default", py::arg("broad_phase") = "swept_bvh",
+          py::arg("self_collision") = true, py::arg("max_threads") = 0,
+          py::arg("record_candidates") = false, "Every colliding pair of the step (SceneResult).")
+      .def(
+          "earliest_contact",
+          [](GuardedScene& g, double t_max, double toi_width, const std::string& mode,
+             const std::string& broad_phase, bool self_collision, int max_threads,
+             bool record_candidates) {
+            const SceneOptions o = scene_options(t_max, toi_width, mode, broad_phase,
+                                                 self_collision, max_threads, record_candidates);
+            return g.run([&](Scene& s) { return s.earliest_contact(o); });
+          },
+          py::kw_only(), py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0,
+          py::arg("mode") = "default", py::arg("broad_phase") = "swept_bvh",
+          py::arg("self_collision") = true, py::arg("max_threads") = 0,
+          py::arg("record_candidates") = false,
+          "Only the earliest contact of the step (EarliestContact; swept_bvh only).")
+      .def(
+          "vertex_face_query",
+          [](GuardedScene& g, const ScenePair& p) {
+            if (p.type != QueryType::vertex_face)
+              throw py::value_error("vertex_face_query needs a vertex-face pair");
+            const VertexFaceQuery q =
+                g.run([&](Scene& s) { return s.vertex_face_query(checked_pair(s, p)); });
+            return rows_of({q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1, q.c_t1});
+          },
+          py::arg("pair"), "The pair's query as an (8, 3) array in the benchmark's row order.")
+      .def(
+          "edge_edge_query",
+          [](GuardedScene& g, const ScenePair& p) {
+            if (p.type != QueryType::edge_edge)
+              throw py::value_error("edge_edge_query needs an edge-edge pair");
+            const EdgeEdgeQuery q =
+                g.run([&](Scene& s) { return s.edge_edge_query(checked_pair(s, p)); });
+            return rows_of({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1,
+                            q.eb1_t1});
+          },
+          py::arg("pair"), "The pair's query as an (8, 3) array in the benchmark's row order.");
+}
+
+}  // namespace exactccd::python

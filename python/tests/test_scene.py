@@ -1,0 +1,188 @@
+"""The Scene API over numpy arrays: equal to the C++ Scene's answers (a separate C++ program on
+the same scene) and to deciding every pair with the query API."""
+
+import numpy as np
+import pytest
+
+import exactccd
+from conftest import run
+
+
+def grid(n, z, jitter, rng):
+    """An n x n sheet of vertices in the plane z, triangulated."""
+    xs, ys = np.meshgrid(np.linspace(0, 1, n), np.linspace(0, 1, n))
+    vertices = np.stack([xs.ravel(), ys.ravel(), np.full(n * n, z)], axis=1)
+    vertices += rng.uniform(-jitter, jitter, size=vertices.shape)
+    faces = []
+    for i in range(n - 1):
+        for j in range(n - 1):
+            a, b, c, d = i * n + j, i * n + j + 1, (i + 1) * n + j, (i + 1) * n + j + 1
+            faces += [[a, b, d], [a, d, c]]
+    return vertices, np.array(faces, dtype=np.int64)
+
+
+@pytest.fixture()
+def two_meshes():
+    """A falling wavy sheet and a rising smaller sheet under it: they pass through each other."""
+    rng = np.random.default_rng(7)
+    top, top_faces = grid(5, 0.3, 0.02, rng)
+    top_end = top + [0.05, 0.0, -0.6] + rng.uniform(-0.05, 0.05, size=top.shape)
+    bottom, bottom_faces = grid(4, -0.1, 0.02, rng)
+    bottom = bottom * [0.8, 0.8, 1] + [0.1, 0.1, 0]
+    bottom_end = bottom + [0.0, 0.03, 0.2]
+    return [(top, top_end, top_faces), (bottom, bottom_end, bottom_faces)]
+
+
+def build(meshes):
+    scene = exactccd.Scene()
+    for start, end, faces in meshes:
+        mesh = scene.add_mesh(start, faces)
+        scene.set_motion(mesh, start, end)
+    return scene
+
+
+def write_scene(path, meshes):
+    lines = [f"meshes {len(meshes)}"]
+    for start, end, faces in meshes:
+        lines.append(f"moving {len(start)} {len(faces)}")
+        lines += [" ".join(float(x).hex() for x in (*s, *e)) for s, e in zip(start, end)]
+        lines += [" ".join(str(int(i)) for i in f) for f in faces]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def describe(pair):
+    return (f"{pair.type} {pair.first_mesh} {pair.first_index} {pair.second_mesh} "
+            f"{pair.second_index}")
+
+
+def test_equal_to_cpp_scene(two_meshes, tmp_path, scene_reference):
+    path = tmp_path / "scene.txt"
+    write_scene(path, two_meshes)
+    done = run([scene_reference, path])
+    assert done.returncode == 0, done.stderr
+    expected = done.stdout.splitlines()
+
+    scene = build(two_meshes)
+    result = scene.find_contacts(record_candidates=True)
+    got = [f"contact {describe(c.pair)} {c.toi_lo.hex()} {c.toi_hi.hex()}" for c in result.contacts]
+    got.append(f"candidates {len(result.candidates)} vf {result.stats.vertex_face_candidates} "
+               f"ee {result.stats.edge_edge_candidates}")
+    earliest = scene.earliest_contact(record_candidates=True)
+    if earliest.collides:
+        c = earliest.contact
+        got.append(f"earliest {describe(c.pair)} {c.toi_lo.hex()} {c.toi_hi.hex()}")
+    else:
+        got.append("earliest none")
+    # float.hex() and C's %a differ in spelling ("0x1.8p-1" both, but 0 is "0x0.0p+0" / "0x0p+0"):
+    # compare the values.
+    def values(lines):
+        out = []
+        for line in lines:
+            fields = line.split()
+            out.append([float.fromhex(f) if f.startswith(("0x", "-0x")) else f for f in fields])
+        return out
+    assert values(got) == values(expected)
+    assert len(result.contacts) > 0  # the scene does collide: the comparison is not vacuous
+    assert result.earliest.pair == earliest.contact.pair
+
+
+def test_cross_mesh_contacts_equal_all_pairs(two_meshes):
+    """Without self-collision, every contact is a pair of the two meshes: deciding all of them
+    one by one must find exactly the scene's contacts and TOIs."""
+    scene = build(two_meshes)
+    result = scene.find_contacts(self_collision=False)
+    expected = []
+    n_vertices = [len(m[0]) for m in two_meshes]
+    n_faces = [len(m[2]) for m in two_meshes]
+    pairs, queries = [], []
+    for a, b in ((0, 1), (1, 0)):
+        for v in range(n_vertices[a]):
+            for f in range(n_faces[b]):
+                pair = exactccd.ScenePair("vertex-face", a, v, b, f)
+                pairs.append(pair)
+                queries.append(scene.vertex_face_query(pair))
+    vf = exactccd.vertex_face_ccd_batch(np.array(queries))
+    expected += [(p, lo, hi) for p, c, lo, hi in zip(pairs, vf.collides, vf.toi_lo, vf.toi_hi) if c]
+    pairs, queries = [], []
+    for e0 in range(len(scene.edges(0))):
+        for e1 in range(len(scene.edges(1))):
+            pair = exactccd.ScenePair("edge-edge", 0, e0, 1, e1)
+            pairs.append(pair)
+            queries.append(scene.edge_edge_query(pair))
+    ee = exactccd.edge_edge_ccd_batch(np.array(queries))
+    expected += [(p, lo, hi) for p, c, lo, hi in zip(pairs, ee.collides, ee.toi_lo, ee.toi_hi) if c]
+    got = [(c.pair, c.toi_lo, c.toi_hi) for c in result.contacts]
+    assert sorted(got, key=lambda x: x[0]) == sorted(expected, key=lambda x: x[0])
+    assert len(got) > 0
+
+
+def test_mesh_accessors_and_static_mesh(two_meshes):
+    (start, end, faces), (other, _, other_faces) = two_meshes
+    scene = exactccd.Scene()
+    moving = scene.add_mesh(start, faces)
+    scene.set_motion(moving, start, end)
+    fixed = scene.add_static_mesh(other, other_faces.astype(np.int32))
+    assert scene.mesh_count == 2 and not scene.is_static(moving) and scene.is_static(fixed)
+    assert np.array_equal(scene.triangles(moving), faces)
+    assert np.array_equal(scene.start_positions(moving), start)
+    assert np.array_equal(scene.end_positions(moving), end)
+    assert np.array_equal(scene.end_positions(fixed), other)
+    edges = scene.edges(moving)
+    assert edges.shape[1] == 2 and (edges[:, 0] < edges[:, 1]).all()
+    result = scene.find_contacts()
+    assert all(c.pair.first_mesh == c.pair.second_mesh == moving or
+               fixed in (c.pair.first_mesh, c.pair.second_mesh) for c in result.contacts)
+    assert repr(result.stats).startswith("SceneStats(")
+
+
+def test_bad_scene_input(two_meshes):
+    (start, end, faces), _ = two_meshes
+    scene = exactccd.Scene()
+    with pytest.raises(ValueError, match="out of range|index"):
+        scene.add_mesh(start, faces + len(start))
+    with pytest.raises(ValueError):
+        scene.add_mesh(start, -faces - 1)
+    with pytest.raises(ValueError, match="out of range"):
+        scene.add_mesh(start, np.full((1, 3), 2 ** 40))
+    with pytest.raises(TypeError, match="integer"):
+        scene.add_mesh(start, faces.astype(float))
+    with pytest.raises(ValueError, match="shape"):
+        scene.add_mesh(start[:, :2], faces)
+    bad = start.copy()
+    bad[3, 1] = np.nan
+    with pytest.raises(ValueError):
+        scene.add_mesh(bad, faces)
+    mesh = scene.add_mesh(start, faces)
+    with pytest.raises(ValueError):
+        scene.set_motion(mesh, start, end[:-1])
+    with pytest.raises(IndexError):
+        scene.set_motion(mesh + 5, start, end)
+    with pytest.raises(ValueError, match="mode"):
+        scene.find_contacts(mode="fast")
+    with pytest.raises(ValueError, match="t_max"):
+        scene.find_contacts(t_max=0.0)
+    with pytest.raises(ValueError):
+        scene.earliest_contact(broad_phase="static_bvh")
+    with pytest.raises(IndexError):
+        scene.vertex_face_query(exactccd.ScenePair("vf", 0, 10 ** 6, 0, 0))
+    with pytest.raises(ValueError):
+        scene.vertex_face_query(exactccd.ScenePair("ee", 0, 0, 0, 1))
+
+
+def test_one_scene_from_several_python_threads(two_meshes):
+    """Calls run without the GIL; the module serialises them on one Scene (the C++ Scene must
+    not be used from two threads at once), so every thread gets the single-threaded answer."""
+    import concurrent.futures
+    scene = build(two_meshes)
+    expected = [(c.pair, c.toi_lo, c.toi_hi) for c in scene.find_contacts().contacts]
+    (start, end, _), _ = two_meshes
+
+    def work(k):
+        if k % 3 == 2:
+            scene.set_motion(0, start, end)  # the same motion again: the answers do not change
+            return expected
+        return [(c.pair, c.toi_lo, c.toi_hi) for c in scene.find_contacts().contacts]
+
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        for result in pool.map(work, range(24)):
+            assert result == expected
