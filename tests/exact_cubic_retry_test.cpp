@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "core/predicates/coplanarity_cubic.hpp"
+#include "corpus/random_queries.hpp"
 #include "exact/integer_query.hpp"
 #include "filters/cubic_filter.hpp"
 #include "filters/interval.hpp"
-#include "random_queries.hpp"
-#include "test_support.hpp"
 #include "fixed_int_support.hpp"
+#include "test_support.hpp"
 
 namespace exactccd::test {
 namespace {
