@@ -57,8 +57,8 @@ int sign_in_dyadic_bracket(const MpzPolynomial& p, const MpzPolynomial& g, const
 }  // namespace
 
 bool split_point(double lo, double hi, double* m) {
-  const std::uint64_t l = lo == 0 ? 0 : predicates::bits_of(lo), h = predicates::bits_of(hi);
-  if (h < l + 2) return false;
+  double middle;  // of the doubles strictly inside, in bit order
+  if (!predicates::middle_double(lo, hi, &middle)) return false;
   if ((lo == 0 && hi >= 0x1p-60) || (lo > 0 && hi <= 0x1p20 * lo)) {
     const double mid = lo + (hi - lo) * 0.5;
     if (lo < mid && mid < hi) {
@@ -66,7 +66,7 @@ bool split_point(double lo, double hi, double* m) {
       return true;
     }
   }
-  *m = predicates::double_of(l + (h - l) / 2);
+  *m = middle;
   return true;
 }
 
