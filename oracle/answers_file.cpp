@@ -1,18 +1,12 @@
 #include "oracle/answers_file.hpp"
 
+#include "core/src/trim.hpp"
 #include "exactccd/query_file.hpp"
 #include "oracle/common.hpp"
 
 namespace exactccd::oracle {
 
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
 
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
