@@ -19,6 +19,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/predicates/motion.hpp"
+
 namespace exactccd::families {
 
 namespace {
@@ -90,14 +92,22 @@ P3 p3(const Q& x, const Q& y, const Q& z) { return {canon(x), canon(y), canon(z)
 P3 operator+(const P3& a, const P3& b) { return p3(a[0] + b[0], a[1] + b[1], a[2] + b[2]); }
 P3 operator-(const P3& a, const P3& b) { return p3(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
 P3 operator*(const Q& s, const P3& a) { return p3(s * a[0], s * a[1], s * a[2]); }
-Q dot(const P3& a, const P3& b) { return canon(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]); }
+// The geometry is the predicates' (core/predicates/motion.hpp), over exact rationals held as
+// polynomials of degree 0: their operations evaluate each GMP expression at once (a gmpxx
+// expression returned by `auto` would refer to temporaries that are gone).
+using Constant = predicates::FixedPoly<Q, 0>;
+predicates::Vec3<Constant> vec(const P3& a) {
+  return {Constant{{a[0]}}, Constant{{a[1]}}, Constant{{a[2]}}};
+}
+Q dot(const P3& a, const P3& b) { return canon(predicates::dot(vec(a), vec(b)).c[0]); }
 P3 cross(const P3& a, const P3& b) {
-  return p3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
+  const predicates::Vec3<Constant> c = predicates::cross(vec(a), vec(b));
+  return p3(c.x.c[0], c.y.c[0], c.z.c[0]);
 }
 Q det3(const P3& a, const P3& b, const P3& c) { return dot(a, cross(b, c)); }
 /// 2D orientation of (a, b, c) in the xy plane.
 Q orient2(const P3& a, const P3& b, const P3& c) {
-  return canon((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+  return canon(predicates::orient2d_along_axis(2, vec(a), vec(b), vec(c)).c[0]);
 }
 P3 zero3() { return p3(0, 0, 0); }
 
