@@ -1,5 +1,5 @@
 // Time per query of each mode (float_only, default, exact) through the public double API, on
-// the simulation-like set (small config, bench/simulation) and on the shipped sample queries.
+// the simulation-like set (small config, corpus/simulation_queries.hpp) and on the shipped sample queries.
 //   ./build/bench/ccd_micro_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 // The "per_query" counter is seconds per query (shown in the time unit of the table).
 //
@@ -17,10 +17,10 @@
 #include <utility>
 #include <vector>
 
+#include "corpus/simulation_queries.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
-#include "simulation_queries.hpp"
 
 namespace {
 

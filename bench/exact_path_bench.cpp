@@ -29,13 +29,13 @@
 #include <utility>
 #include <vector>
 
+#include "corpus/random_queries.hpp"
 #include "exact/integer_bounds.hpp"
 #include "exact/integer_cubic.hpp"
 #include "exact/integer_query.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "filters/ccd_filters.hpp"
-#include "tests/random_queries.hpp"
 
 // The operations the integer kernels call, for Boost's fixed-precision integers (found by
 // argument-dependent lookup).

@@ -1,7 +1,7 @@
 // Scene-level CCD benchmark (issue 5 targets): one step of a folded cloth of about 100,000
 // triangles with self-collision, on 1 and 2 threads; the earliest-contact call against the
 // all-pairs call on the same step; the candidate pairs against the pairs whose swept boxes
-// actually overlap, counted independently (a uniform grid, bench/simulation/broad_phase.hpp).
+// actually overlap, counted independently (a uniform grid, corpus/broad_phase.hpp).
 //
 //   ./build/bench/scene_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "bench/scenes/meshes.hpp"
-#include "broad_phase.hpp"
+#include "corpus/broad_phase.hpp"
 #include "exactccd/scene.hpp"
 
 namespace {

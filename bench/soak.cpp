@@ -1,5 +1,5 @@
 // exactccd_soak: the differential test at scale. Decides N seeded random queries (the
-// generators of tests/random_queries.hpp, round robin: ordinary and near-degenerate families,
+// generators of corpus/random_queries.hpp, round robin: ordinary and near-degenerate families,
 // wide exponent spreads, resting contact, stacked coplanar faces, each scaled by 2^k one time
 // in four) with the default path and with the exact path, in parallel, and compares them as
 // tests/differential_test.cpp does: same verdict, identical tightest TOI pair, a coarse
@@ -27,7 +27,7 @@
 #include <thread>
 #include <vector>
 
-#include "tests/random_queries.hpp"
+#include "corpus/random_queries.hpp"
 
 namespace {
 

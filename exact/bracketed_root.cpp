@@ -164,8 +164,8 @@ std::optional<std::vector<DyadicBracket>> split_at_critical_points(const MpzPoly
 
 
 bool split_point(double lo, double hi, double* m) {
-  const std::uint64_t l = lo == 0 ? 0 : predicates::bits_of(lo), h = predicates::bits_of(hi);
-  if (h < l + 2) return false;
+  double middle;  // of the doubles strictly inside, in bit order
+  if (!predicates::middle_double(lo, hi, &middle)) return false;
   if ((lo == 0 && hi >= 0x1p-60) || (lo > 0 && hi <= 0x1p20 * lo)) {
     const double mid = lo + (hi - lo) * 0.5;
     if (lo < mid && mid < hi) {
@@ -173,7 +173,7 @@ bool split_point(double lo, double hi, double* m) {
       return true;
     }
   }
-  *m = predicates::double_of(l + (h - l) / 2);
+  *m = middle;
   return true;
 }
 

@@ -52,10 +52,8 @@ bool width_at_most(double hi, double lo, double width) {
   return difference_at_most(hi, lo, width);
 }
 
-/// The bit pattern of the double x >= 0, with -0 read as +0: for non-negative doubles the
-/// patterns are ordered as the values and consecutive doubles have consecutive patterns, so
 /// next_up(x) has pattern order_bits(x) + 1 and, for x > 0, next_down(x) order_bits(x) - 1.
-std::uint64_t order_bits(double x) { return x == 0 ? 0 : predicates::bits_of(x); }
+using predicates::order_bits;
 
 double from_order_bits(std::uint64_t bits) { return predicates::double_of(bits); }
 
@@ -64,10 +62,7 @@ double from_order_bits(std::uint64_t bits) { return predicates::double_of(bits);
 /// double of those strictly inside, in bit order (the loop's probe). The doubles strictly
 /// inside have the patterns order_bits(lo) + 1 ... order_bits(hi) - 1.
 bool middle_double(double lo, double hi, double width, double* mid) {
-  const std::uint64_t l = order_bits(lo), h = order_bits(hi);
-  if (h < l + 2 || (width > 0 && width_at_most(hi, lo, width))) return false;
-  *mid = from_order_bits(l + 1 + (h - l - 2) / 2);
-  return true;
+  return predicates::middle_double(lo, hi, mid) && !(width > 0 && width_at_most(hi, lo, width));
 }
 
 using Real = GuideReal;

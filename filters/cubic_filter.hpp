@@ -62,9 +62,11 @@ FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, doub
                            bool tighter_cubic_available = false);
 
 /// True when all four Bernstein coefficients of the cubic on [0, t_max] are certainly
-/// non-zero with one sign: no coplanar instant, hence no contact. Needs a RoundingGuard.
+/// non-zero with one sign: no coplanar instant, hence no contact. Needs a RoundingGuard. (The
+/// interval stage of the test whose semi-static stage is coplanarity_cubic_root_free_semistatic.)
 EXACTCCD_CERTIFIED
-bool cubic_certainly_root_free(const predicates::FixedPoly<Interval, 3>& cubic, double t_max);
+bool coplanarity_cubic_root_free_interval(const predicates::FixedPoly<Interval, 3>& cubic,
+                                          double t_max);
 
 }  // namespace exactccd::filters
 

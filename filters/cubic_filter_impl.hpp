@@ -41,12 +41,8 @@ EXACTCCD_CERTIFIED bool certainly_within_width(double lo, double hi, double widt
   return (Interval(hi) - Interval(lo)).sup() <= width;
 }
 
-using predicates::bits_of;
 using predicates::double_of;
-
-/// The bit pattern of a double x >= 0, -0 read as +0: ordered as the values, consecutive
-/// doubles having consecutive patterns.
-inline std::uint64_t order_bits(double x) { return x == 0 ? 0 : bits_of(x); }
+using predicates::order_bits;
 
 /// Where a double lies relative to the only root r of a bracket, by the certified sign of the
 /// cubic's enclosure there (the sign at the bracket's upper end is `sign_hi`).
@@ -88,10 +84,10 @@ FilterOutcome bisect_bracket(const predicates::FixedPoly<Interval, 3>& cubic, do
                              double hi, int sign_hi, double toi_width) {
   RootBracket b{lo, hi};
   for (;;) {
-    const std::uint64_t l = order_bits(b.lo), h = order_bits(b.hi);
-    if (h < l + 2 || (toi_width > 0 && certainly_within_width(b.lo, b.hi, toi_width)))
+    double mid;
+    if (!predicates::middle_double(b.lo, b.hi, &mid) ||
+        (toi_width > 0 && certainly_within_width(b.lo, b.hi, toi_width)))
       return b.outcome(true);
-    const double mid = double_of(l + 1 + (h - l - 2) / 2);
     switch (side_of_root(cubic, mid, sign_hi)) {
       case Side::unknown: return b.outcome(false);
       case Side::at: return RootBracket{mid, mid}.outcome(true);
@@ -242,8 +238,8 @@ FilterOutcome refine_bracket(const predicates::FixedPoly<Interval, 3>& cubic, do
 
 }  // namespace detail
 
-EXACTCCD_CERTIFIED bool cubic_certainly_root_free(const predicates::FixedPoly<Interval, 3>& cubic,
-                                      double t_max) {
+EXACTCCD_CERTIFIED bool coplanarity_cubic_root_free_interval(
+    const predicates::FixedPoly<Interval, 3>& cubic, double t_max) {
   return detail::strict_sign_of_all(cubic_bernstein(cubic, Interval(t_max))) != 0;
 }
 

@@ -18,13 +18,14 @@
 #include <string>
 #include <vector>
 
+#include "corpus/random_queries.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exact/integer_query.hpp"
-#include "exact/small_polynomial.hpp"
 #include "exact/rational.hpp"
+#include "exact/small_polynomial.hpp"
 #include "exactccd/query_file.hpp"
-#include "tests/random_queries.hpp"
 #include "tests/sample_double_queries.hpp"
+#include "tests/test_scale.hpp"
 
 // ---------------------------------------------------------------------------------------------
 // Counting allocators (per thread: a query's allocations are those of the calling thread)

@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "core/predicates/coplanarity_cubic.hpp"
+#include "corpus/random_queries.hpp"
 #include "exact/integer_query.hpp"
 #include "exact/root_isolation.hpp"
-#include "random_queries.hpp"
 
 namespace exactccd::test {
 namespace {

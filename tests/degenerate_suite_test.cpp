@@ -25,11 +25,11 @@
 #include <string>
 #include <vector>
 
-#include "corpus.hpp"
+#include "corpus/corpus_writer.hpp"
+#include "corpus/families.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
-#include "families.hpp"
 #include "test_scale.hpp"
 
 namespace {

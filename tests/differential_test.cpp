@@ -20,10 +20,11 @@
 #include <string>
 #include <vector>
 
+#include "corpus/random_queries.hpp"
+#include "corpus/simulation_queries.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
-#include "bench/simulation/simulation_queries.hpp"
-#include "tests/random_queries.hpp"
+#include "tests/test_scale.hpp"
 
 namespace exactccd::test {
 namespace {

@@ -3,7 +3,7 @@
 // mpz_class (IntegerQuery::Arithmetic::gmp, the reference), against the exact rational
 // evaluation of the predicate templates, and the whole default path against Mode::exact.
 //
-// Queries: the random families of tests/random_queries.hpp (planted and near-degenerate
+// Queries: the random families of corpus/random_queries.hpp (planted and near-degenerate
 // contacts included), and adversarial ones built here exactly in doubles: resting contact (a
 // vertex on a face, everything moving within the face's plane; or lifting off it at t = 0),
 // edges sliding along each other on a common line or in a common plane, and random doubles
@@ -25,8 +25,9 @@
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
+#include "corpus/random_queries.hpp"
 #include "exact/integer_query.hpp"
-#include "tests/random_queries.hpp"
+#include "tests/test_scale.hpp"
 
 namespace exactccd::test {
 namespace {

@@ -3,7 +3,7 @@
 // keeps as the reference (exact/exact_ccd.hpp: GMP rationals and Sturm sequences), called
 // directly, below the public API: the same verdict and the identical tightest TOI pair, and a
 // coarse toi_width enclosure holding the reference's contact time, with t_max < 1 on one query
-// in four. Random and adversarial generators (tests/random_queries.hpp, every family and
+// in four. Random and adversarial generators (corpus/random_queries.hpp, every family and
 // power-of-two scalings), the shipped degenerate suite, the sample and scene queries.
 // EXACTCCD_TEST_SEED / EXACTCCD_TEST_SCALE as in differential_test.
 // PROOF: proofs/exact_ccd.md#exact-at-double-brackets
@@ -18,10 +18,10 @@
 #include <mutex>
 #include <string>
 
+#include "corpus/random_queries.hpp"
 #include "exact/algebraic_at_doubles.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exactccd/query_file.hpp"
-#include "random_queries.hpp"
 #include "test_support.hpp"
 
 namespace exactccd::test {

@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "core/predicates/coplanarity_cubic.hpp"
+#include "corpus/random_queries.hpp"
 #include "exact/integer_query.hpp"
 #include "filters/cubic_filter.hpp"
 #include "filters/interval.hpp"
-#include "random_queries.hpp"
-#include "test_support.hpp"
 #include "fixed_int_support.hpp"
+#include "test_support.hpp"
 
 namespace exactccd::test {
 namespace {
@@ -217,7 +217,7 @@ TEST(ExactCubicRetry, IsolatesRootsWhereTheIntervalCubicCannot) {
     {
       const filters::RoundingGuard guard;
       const IntervalCubic wide = interval_cubic(q);
-      if (filters::cubic_certainly_root_free(wide, 1.0)) continue;
+      if (filters::coplanarity_cubic_root_free_interval(wide, 1.0)) continue;
       interval_unresolved =
           filters::cubic_filter(wide, 1.0, 0.0, NeverDecides{}, oracle).roots_unresolved;
       if (!interval_unresolved) continue;

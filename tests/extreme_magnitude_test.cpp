@@ -25,7 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "tests/random_queries.hpp"
+#include "corpus/random_queries.hpp"
+#include "tests/test_scale.hpp"
 
 namespace exactccd::test {
 namespace {

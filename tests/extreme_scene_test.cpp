@@ -18,9 +18,10 @@
 #include <utility>
 #include <vector>
 
+#include "corpus/random_queries.hpp"
 #include "exactccd/scene.hpp"
-#include "tests/random_queries.hpp"
 #include "tests/scene_support.hpp"
+#include "tests/test_scale.hpp"
 
 namespace exactccd::test {
 namespace {

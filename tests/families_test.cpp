@@ -1,4 +1,4 @@
-// Tests of the degenerate-query families (bench/degenerate) and of `exactccd generate`.
+// Tests of the degenerate-query families (corpus/families.hpp) and of `exactccd generate`.
 //
 // Every base-family member carries the answer its construction proves (families.cpp, the
 // comment above each builder): a verdict and, when it collides, the exact first contact time
@@ -8,7 +8,7 @@
 // none at sampled earlier times, none for a near miss at its partner's t*), which shares no
 // code with the library. Near misses are checked to differ from their colliding partner in
 // exactly the listed coordinates, by exactly the stated distance (one ulp, or 2^-k).
-#include "families.hpp"
+#include "corpus/families.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "corpus.hpp"
+#include "corpus/corpus_writer.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"

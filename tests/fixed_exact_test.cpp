@@ -19,9 +19,10 @@
 #include <tuple>
 #include <vector>
 
+#include "corpus/random_queries.hpp"
 #include "exact/integer_query.hpp"
-#include "tests/random_queries.hpp"
 #include "fixed_int_support.hpp"
+#include "tests/test_scale.hpp"
 
 // ---------------------------------------------------------------------------------------------
 // An integer type that records the largest bit length of any value it produces, per stage of

@@ -18,12 +18,13 @@
 #include <vector>
 
 #include "core/predicates/fp_environment.hpp"
+#include "corpus/random_queries.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/discrete.hpp"
 #include "exactccd/rational_query.hpp"
 #include "exactccd/scene.hpp"
 #include "tests/fp_host/issue9_query.hpp"
-#include "tests/random_queries.hpp"
+#include "tests/test_scale.hpp"
 
 #if defined(__x86_64__)
 

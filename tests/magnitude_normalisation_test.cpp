@@ -18,8 +18,8 @@
 
 #include "core/predicates/double_bits.hpp"
 #include "core/src/power_of_two_scaling.hpp"
+#include "corpus/random_queries.hpp"
 #include "exact/rational.hpp"
-#include "tests/random_queries.hpp"
 #include "tests/test_support.hpp"
 
 namespace exactccd::test {

@@ -25,11 +25,12 @@
 #include <vector>
 
 #include "core/predicates/fp_environment.hpp"
+#include "corpus/random_queries.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "filters/coplanarity_semistatic.hpp"
-#include "tests/random_queries.hpp"
 #include "tests/sample_double_queries.hpp"
+#include "tests/test_scale.hpp"
 
 namespace exactccd::test {
 namespace {

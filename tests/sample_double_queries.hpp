@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "corpus/random_queries.hpp"
 #include "exact/rational.hpp"
 #include "exactccd/query_file.hpp"
-#include "tests/random_queries.hpp"
 
 namespace exactccd::test {
 

@@ -23,9 +23,9 @@
 #include <utility>
 #include <vector>
 
+#include "corpus/random_queries.hpp"  // hex
 #include "exactccd/ccd.hpp"
 #include "exactccd/scene.hpp"
-#include "random_queries.hpp"  // hex
 
 namespace exactccd::test {
 

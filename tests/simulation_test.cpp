@@ -1,4 +1,4 @@
-// Tests of the simulation-like query generator (bench/simulation) and of `exactccd simulate`.
+// Tests of the simulation-like query generator (corpus/simulation_queries.hpp) and of `exactccd simulate`.
 // The broad phase is checked against an all-pairs enumeration written here, with its own box
 // computation and its own exclusion rules; contact / no-contact from the exact path.
 #include <gmpxx.h>
@@ -22,10 +22,10 @@
 #include <tuple>
 #include <vector>
 
-#include "broad_phase.hpp"
+#include "corpus/broad_phase.hpp"
+#include "corpus/simulation_queries.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
-#include "simulation_queries.hpp"
 
 namespace {
 

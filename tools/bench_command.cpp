@@ -8,13 +8,16 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "check.hpp"
-#include "cli_common.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
+#include "oracle/common.hpp"
+#include "oracle/exact_doubles.hpp"
+#include "oracle/names.hpp"
 #include "simulate_command.hpp"
 
 namespace exactccd::cli {
+
+using namespace exactccd::oracle;
 
 namespace {
 

@@ -1,13 +1,13 @@
 // `exactccd bench`: time per query and errors of each mode (float_only, default, exact) on
-// benchmark CSV data sets and on the simulation-like set (bench/simulation).
+// benchmark CSV data sets and on the simulation-like set (corpus/simulation_queries.hpp).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "corpus/simulation_queries.hpp"
 #include "exactccd/types.hpp"
-#include "simulation_queries.hpp"
 
 namespace exactccd::cli {
 

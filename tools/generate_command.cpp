@@ -11,11 +11,13 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cli_common.hpp"
-#include "corpus.hpp"
-#include "output_file.hpp"
+#include "corpus/corpus_writer.hpp"
+#include "oracle/common.hpp"
+#include "oracle/output_file.hpp"
 
 namespace exactccd::cli {
+
+using namespace exactccd::oracle;
 
 namespace {
 

@@ -1,4 +1,4 @@
-// `exactccd generate`: writes the families of hard and degenerate queries (bench/degenerate)
+// `exactccd generate`: writes the families of hard and degenerate queries (corpus/families.hpp)
 // as a corpus: benchmark CSV files with the exact path's truth, TOI sidecars and a manifest.
 #pragma once
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "families.hpp"
+#include "corpus/families.hpp"
 
 namespace exactccd::cli {
 

@@ -3,32 +3,31 @@
 // exactly; `simulate` writes simulation-like queries; `generate` the degenerate families;
 // `bench` times the modes; `study` measures the uncertified methods' errors against the exact
 // truth.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
-#include <cctype>
 #include <cerrno>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <iostream>
-#include <new>
+#include <cstring>
 #include <string>
-#include <system_error>
 #include <tuple>
 #include <vector>
 
 #include "bench_command.hpp"
-#include "check.hpp"
-#include "cli_common.hpp"
+#include "check_command.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/version.hpp"
 #include "generate_command.hpp"
-#include "grade.hpp"
+#include "grade_command.hpp"
+#include "oracle/command_line.hpp"
+#include "oracle/common.hpp"
+#include "oracle/names.hpp"
 #include "simulate_command.hpp"
-#include "study_command.hpp"
 
 namespace {
 
 using namespace exactccd::cli;
+using namespace exactccd::oracle;
 
 constexpr const char* kExitStatusHelp =
     "Exit status:\n"
@@ -43,113 +42,35 @@ constexpr const char* kExitStatusHelp =
     "     'exactccd: FILE:LINE: what'\n"
     "  3  internal error (a bug in exactccd, or out of memory)\n";
 
-constexpr const char* kTypeHelp =
-    "Query type: vf (vertex-face) or ee (edge-edge); default: from the nearest folder named "
-    "vertex-face or edge-edge in each file's path";
-
-// Reports an error on one line of stderr (control characters escaped, '\n' among them).
-void report_error(const std::string& message) {
-  std::cerr << "exactccd: " << exactccd::printable(message) << '\n';
-}
-
-// The exit status once stdout is flushed: output lost to a full disk or a closed descriptor is
-// an error (2), not a success.
-int finish(int status) {
-  // std::cout writes through stdout's buffer (synchronised with stdio): one fflush covers both,
-  // and keeps the reason in errno (std::cout.flush() would flush first and lose it).
-  errno = 0;
-  const bool flushed = std::fflush(stdout) == 0;
-  const int error = errno;
-  std::cout.flush();
-  if (flushed && std::cout.good() && !std::ferror(stdout)) return status;
-  report_error("stdout: write failed" +
-               (!flushed && error != 0
-                    ? ": " + std::error_code(error, std::generic_category()).message()
-                    : std::string()));
-  return kExitBadInput;
-}
-
-// Checks that an option's argument is a whole number before CLI11 converts it (CLI11 reads an
-// empty argument as 0): [+-]digits for an integer; for a number, what strtod reads entirely.
-CLI::Validator numeric_text(bool integer) {
-  return CLI::Validator(
-      [integer](std::string& text) {
-        bool ok = !text.empty();
-        if (ok && integer) {
-          const std::size_t digits = text[0] == '+' || text[0] == '-' ? 1 : 0;
-          ok = text.size() > digits &&
-               text.find_first_not_of("0123456789", digits) == std::string::npos;
-        } else if (ok) {
-          char* end = nullptr;
-          std::strtod(text.c_str(), &end);
-          ok = !std::isspace(static_cast<unsigned char>(text[0])) &&
-               end == text.c_str() + text.size();
-        }
-        return ok ? std::string()
-                  : exactccd::quote_for_message(text) + " is not " +
-                        (integer ? "an integer" : "a number");
-      },
-      integer ? "INTEGER" : "NUMBER");
-}
-
-// Digits only, below 2^64: CLI11 would wrap a negative number around and saturate a large one.
-CLI::Validator seed_text() {
-  return CLI::Validator(
-      [](std::string& text) {
-        const bool digits =
-            !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
-        const bool fits =
-            text.size() < 20 || (text.size() == 20 && text <= "18446744073709551615");
-        return digits && fits ? std::string()
-                              : exactccd::quote_for_message(text) +
-                                    " is not an integer in [0, 2^64 - 1]";
-      },
-      "SEED");
-}
-
-void add_force_flag(CLI::App* command, bool& force) {
-  command->add_flag("--force", force,
-                    "Replace output files that already exist (never deletes other files)");
-}
-
-void add_type_option(CLI::App* command, std::string& type_name) {
-  command->add_option("--type", type_name, kTypeHelp)
-      ->check(CLI::IsMember({"vf", "ee", "vertex-face", "edge-edge"}));
-}
-
 constexpr const char* kModeHelp =
     "The path that decides: default (culling, certified interval filters, exact fallback: "
     "always exact), float_only (uncertified double-precision cubic test, for comparison), "
     "exact (the exact rational procedure only)";
 
-void add_t_max_option(CLI::App* command, double& t_max) {
-  command->add_option("--t-max", t_max, "End of the time interval [0, T]; T in (0, 1]")
-      ->check(numeric_text(false))
-      ->capture_default_str();
-}
-
-// --resolution, --steps, --seed of the simulation-like set.
-std::tuple<CLI::Option*, CLI::Option*, CLI::Option*> add_simulation_options(
-    CLI::App* command, exactccd::sim::SimulationConfig& config) {
-  CLI::Option* resolution =
-      command->add_option("--resolution", config.sheet_resolution, "Sheet vertices per side")
-          ->check(numeric_text(true))
-          ->check(CLI::Range(2, 1024))
-          ->capture_default_str();
-  CLI::Option* steps = command->add_option("--steps", config.steps, "Time steps")
-                           ->check(numeric_text(true))
-                           ->check(CLI::Range(1, 100000))
-                           ->capture_default_str();
-  CLI::Option* seed =
-      command->add_option("--seed", config.seed, "Seed of the placement and initial wrinkles")
-          ->check(seed_text())
-          ->capture_default_str();
-  return {resolution, steps, seed};
+// `exactccd study ARGS` runs `exactccd_study ARGS`: the study is a program of the benchmarks
+// (bench/study), run from where the build put it (EXACTCCD_STUDY_PROGRAM, empty when this
+// build has no study). Returns only when it cannot be run.
+int forward_to_study(int argc, char** argv) {
+  const std::string program = EXACTCCD_STUDY_PROGRAM;
+  if (program.empty()) {
+    report_error("study: the study program exactccd_study is not part of this build (configure "
+                 "with -DEXACTCCD_BUILD_BENCH=ON or -DEXACTCCD_BUILD_TESTS=ON)");
+    return kExitBadInput;
+  }
+  std::vector<char*> args = {const_cast<char*>(program.c_str())};
+  for (int k = 2; k < argc; ++k) args.push_back(argv[k]);
+  args.push_back(nullptr);
+  execv(program.c_str(), args.data());
+  report_error("study: cannot run the study program " + program + ": " + std::strerror(errno) +
+               " (build the target exactccd_study)");
+  return kExitBadInput;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 2 && std::strcmp(argv[1], "study") == 0) return forward_to_study(argc, argv);
+
   CLI::App app(
       "Exact continuous collision detection oracle for the CCD benchmark "
       "(Wang et al. 2021): vertex-face and edge-edge queries, decided exactly.",
@@ -262,57 +183,13 @@ int main(int argc, char** argv) {
   add_type_option(bench, bench_type);
   bench->add_option("PATH", bench_options.paths, "CSV files or folders, one data set each");
 
-  StudyOptions study_options;
-  std::string study_type;
-  CLI::App* study = app.add_subcommand(
+  // `exactccd study` runs the study program of the benchmarks (bench/study): see forward_to_study.
+  app.add_subcommand(
       "study",
       "Numerical-stability study: each method or setting (float_only; the tolerance method, "
       "distance <= eps at a cubic root, at each eps; the default path at each TOI width; exact) "
-      "against the exact truth on each data set: false positives, false negatives, late "
-      "(non-conservative) TOIs, TOI error, mean time per query (single thread). A folder with "
-      "a manifest.json (exactccd generate) is also broken down per family and per coordinate "
-      "scale.");
-  study->footer(
-      "Verdicts: the truth column (the exact path for --simulation). Exact TOIs: a data_K.csv "
-      "file's toi_K.csv sidecar when present, else the exact path. TOI error: the reported toi "
-      "(toi_lo of an enclosure) minus t*, as the signed distance to the exact tightest pair "
-      "[lo, hi]; late: toi > lo.\n\nExit status: 0 the certified methods (default, exact) show "
-      "no false positive, false negative or late TOI; 1 one of them does; 2 bad command line, "
-      "input or output (an existing --out-md file without --force); 3 internal error.");
-  study->add_flag("--json", study_options.json,
-                  "Print one JSON document (datasets[...] with methods[...], and for a suite "
-                  "families[...] and scales[...]) instead of Markdown tables");
-  study->add_option("--out-md", study_options.out_md, "Also write the Markdown tables to FILE");
-  add_force_flag(study, study_options.force);
-  // One comma-separated argument each, so that a PATH after them stays a PATH.
-  study->add_option("--widths", study_options.widths, "The default path's TOI widths")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->check(numeric_text(false))
-      ->capture_default_str();
-  study->add_option("--eps", study_options.tolerances,
-                    "The tolerance method's absolute distance tolerances")
-      ->delimiter(',')
-      ->allow_extra_args(false)
-      ->check(numeric_text(false))
-      ->capture_default_str();
-  study
-      ->add_option("--repetitions", study_options.repetitions,
-                   "Timed samples per group and method; mean_ns is their median")
-      ->check(numeric_text(true))
-      ->check(CLI::Range(1, 1000))
-      ->capture_default_str();
-  study->add_flag("--simulation", study_options.simulation,
-                  "Add the simulation-like set, generated in memory (verdicts and TOIs: the "
-                  "exact path); default size: about 50,000 queries");
-  CLI::Option* study_resolution = nullptr;
-  CLI::Option* study_steps = nullptr;
-  CLI::Option* study_seed = nullptr;
-  std::tie(study_resolution, study_steps, study_seed) =
-      add_simulation_options(study, study_options.simulation_config);
-  add_type_option(study, study_type);
-  study->add_option("PATH", study_options.paths,
-                    "CSV files, folders of them, or generated suites; one data set each");
+      "against the exact truth on each data set (runs the program exactccd_study of the "
+      "benchmarks; see exactccd study --help).");
 
   GenerateOptions generate_options;
   CLI::App* generate = app.add_subcommand(
@@ -381,63 +258,28 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   // Every failure ends as one line on stderr, 'exactccd: <what>', with its exit status.
-  int status = kExitInternal;
-  try {
-    status = [&] {
-      if (check->parsed()) {
-        check_options.type = parse_type_name(check_type);
-        check_options.mode = *parse_mode_name(check_mode);
-        return run_check(check_options);
-      }
-      if (simulate->parsed()) {
-        simulate_options.exact_truth = simulate_truth == "exact";
-        return run_simulate(simulate_options);
-      }
-      if (bench->parsed()) {
-        for (CLI::Option* option : {bench_resolution, bench_steps, bench_seed})
-          if (option->count() > 0 && !bench_options.simulation)
-            throw UsageError(option->get_name() + " needs --simulation");
-        bench_options.type = parse_type_name(bench_type);
-        bench_options.modes.clear();
-        for (const std::string& name : bench_modes)
-          bench_options.modes.push_back(*parse_mode_name(name));
-        return run_bench(bench_options);
-      }
-      if (study->parsed()) {
-        for (CLI::Option* option : {study_resolution, study_steps, study_seed})
-          if (option->count() > 0 && !study_options.simulation)
-            throw UsageError(option->get_name() + " needs --simulation");
-        study_options.type = parse_type_name(study_type);
-        return run_study(study_options);
-      }
-      if (generate->parsed()) return run_generate(generate_options);
-      grade_options.type = parse_type_name(grade_type);
-      return run_grade(grade_options);
-    }();
-  } catch (const exactccd::InputError& e) {
-    report_error(e.what());
-    return kExitBadInput;
-  } catch (const UsageError& e) {
-    report_error(e.what());
-    return kExitBadInput;
-  } catch (const OutputError& e) {
-    report_error(e.what());
-    return kExitBadInput;
-  } catch (const std::filesystem::filesystem_error& e) {
-    // "<path>: <reason>", not the library's "filesystem error: cannot ...: <reason> [<path>]".
-    std::string where = e.path1().string();
-    if (!e.path2().empty()) where += (where.empty() ? "" : ", ") + e.path2().string();
-    report_error((where.empty() ? std::string() : where + ": ") + e.code().message());
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    report_error("internal error: out of memory");
-    return kExitInternal;
-  } catch (const std::exception& e) {
-    report_error(std::string("internal error: ") + e.what());
-    return kExitInternal;
-  } catch (...) {
-    report_error("internal error: an unknown exception");
-    return kExitInternal;
-  }
-  return finish(status);
+  return run_reporting_errors([&] {
+    if (check->parsed()) {
+      check_options.type = parse_type_name(check_type);
+      check_options.mode = *parse_mode_name(check_mode);
+      return run_check(check_options);
+    }
+    if (simulate->parsed()) {
+      simulate_options.exact_truth = simulate_truth == "exact";
+      return run_simulate(simulate_options);
+    }
+    if (bench->parsed()) {
+      for (CLI::Option* option : {bench_resolution, bench_steps, bench_seed})
+        if (option->count() > 0 && !bench_options.simulation)
+          throw UsageError(option->get_name() + " needs --simulation");
+      bench_options.type = parse_type_name(bench_type);
+      bench_options.modes.clear();
+      for (const std::string& name : bench_modes)
+        bench_options.modes.push_back(*parse_mode_name(name));
+      return run_bench(bench_options);
+    }
+    if (generate->parsed()) return run_generate(generate_options);
+    grade_options.type = parse_type_name(grade_type);
+    return run_grade(grade_options);
+  });
 }

@@ -11,13 +11,15 @@
 #include <regex>
 #include <stdexcept>
 
-#include "check.hpp"
-#include "cli_common.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
-#include "output_file.hpp"
+#include "oracle/common.hpp"
+#include "oracle/exact_doubles.hpp"
+#include "oracle/output_file.hpp"
 
 namespace exactccd::cli {
+
+using namespace exactccd::oracle;
 
 namespace fs = std::filesystem;
 

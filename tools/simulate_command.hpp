@@ -1,4 +1,4 @@
-// `exactccd simulate`: writes the simulation-like queries (bench/simulation) as benchmark CSV
+// `exactccd simulate`: writes the simulation-like queries (corpus/simulation_queries.hpp) as benchmark CSV
 // files, every coordinate as its exact fraction, with the exact path's truth column.
 #pragma once
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "simulation_queries.hpp"
+#include "corpus/simulation_queries.hpp"
 
 namespace exactccd::cli {
 

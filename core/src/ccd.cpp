@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "core/predicates/fp_environment.hpp"
-#include "core/src/float_only_ccd.hpp"
+#include "core/float_only/float_only_ccd.hpp"
 #include "core/src/power_of_two_scaling.hpp"
 #include "exact/algebraic_at_doubles.hpp"
 #include "exact/exact_ccd.hpp"

@@ -14,6 +14,8 @@
 #include <string_view>
 #include <system_error>
 
+#include "core/src/trim.hpp"
+
 namespace exactccd {
 
 namespace fs = std::filesystem;
@@ -244,13 +246,6 @@ std::string quote_for_message(std::string_view text) {
 // ---- Query files ------------------------------------------------------------------------------
 
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
 
 bool is_integer(std::string_view s) {
   if (!s.empty() && (s.front() == '-' || s.front() == '+')) s.remove_prefix(1);

@@ -1,6 +1,6 @@
-// What exactccd.dask needs of the oracle command: one shard of `exactccd check` or `exactccd
-// grade` as a task, and the command's tables printed from the merged tallies. The only file of
-// the module that uses tools/ (check, check_report, grade_report, answers_file, cli_common).
+// exactccd.dask's C++ side: `exactccd check` and `exactccd grade` on one shard (a file, a range
+// of a file's queries, or an array of queries) as a task, and the command's tables printed from
+// the merged tallies, all through the oracle layer (oracle/) the command itself uses.
 #include <pybind11/stl.h>
 
 #include <chrono>
@@ -9,21 +9,21 @@
 #include <string>
 #include <vector>
 
-#include "answers_file.hpp"
 #include "bindings.hpp"
-#include "check.hpp"
-#include "check_report.hpp"
-#include "cli_common.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
-#include "grade_report.hpp"
+#include "oracle/check.hpp"
+#include "oracle/common.hpp"
+#include "oracle/exact_doubles.hpp"
+#include "oracle/grade.hpp"
+#include "oracle/names.hpp"
 
 namespace exactccd::python {
 
 namespace {
 
-using cli::CheckTally;
-using cli::GradeFindings;
+using oracle::CheckTally;
+using oracle::GradeFindings;
 
 // ---- Tallies and findings as Python dicts (they travel between Dask workers) ----------------
 
@@ -73,8 +73,8 @@ GradeFindings findings_of(const py::handle& d) {
 
 void validate_t_max(double t_max) {
   try {
-    cli::validate_t_max(t_max);
-  } catch (const cli::UsageError& e) {
+    oracle::validate_t_max(t_max);
+  } catch (const oracle::UsageError& e) {
     throw py::value_error(e.what());
   }
 }
@@ -86,55 +86,22 @@ std::optional<QueryType> forced_type(const std::optional<std::string>& type) {
 
 // ---- check ------------------------------------------------------------------------------------
 
-// One query as `exactccd check` decides it: through the double API when every coordinate is a
-// double, else (only in mode exact) on the rationals.
-CcdResult decide(const std::string& path, QueryType type, const QueryRecord& record,
-                 const CcdOptions& options, double* seconds) {
-  std::size_t bad_row = 0;
-  const std::optional<cli::QueryPoints> points = cli::exact_doubles(record.query, &bad_row);
-  if (!points && options.mode != Mode::exact)
-    throw InputError(path, record.line_of_row(bad_row),
-                     std::string("a coordinate is not exactly a double: only --mode exact "
-                                 "decides such queries (--mode ") +
-                         to_string(options.mode) + ")");
-  const auto start = std::chrono::steady_clock::now();
-  CcdResult result;
-  if (!points)
-    result = exact_ccd(record.query, options);
-  else if (type == QueryType::vertex_face)
-    result = vertex_face_ccd(cli::vertex_face_query(*points), options);
-  else
-    result = edge_edge_ccd(cli::edge_edge_query(*points), options);
-  *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
-}
-
-void count(CheckTally& tally, const CcdResult& result, bool truth) {
-  ++tally.queries;
-  tally.collisions += result.collides;
-  tally.false_positives += result.collides && !truth;
-  tally.false_negatives += !result.collides && truth;
-  tally.count_stage(result.decided_by);
-}
-
-// Queries [begin, end) of one file (end clipped to the file's count).
+// Queries [begin, end) of one file (end clipped to the file's count), decided as the command
+// decides them (oracle::check_file).
 py::dict check_file_shard(const std::string& path, const std::optional<std::string>& type,
                           std::size_t begin, std::optional<std::size_t> end,
                           const std::string& mode, double t_max) {
   validate_t_max(t_max);
-  CcdOptions options;
-  options.t_max = t_max;
-  options.mode = parse_mode(mode);
-  const QueryType query_type = cli::resolve_query_type(path, forced_type(type));
+  oracle::CheckSettings settings;
+  settings.t_max = t_max;
+  settings.mode = parse_mode(mode);
+  settings.first = begin;
+  if (end) settings.last = *end;
+  const std::optional<QueryType> forced = forced_type(type);
   CheckTally tally;
   {
     py::gil_scoped_release release;
-    const QueryFile input = read_query_file(path, query_type);
-    tally.file = input.path;
-    const std::size_t stop = std::min(end.value_or(input.queries.size()), input.queries.size());
-    for (std::size_t i = begin; i < stop; ++i)
-      count(tally, decide(input.path, input.type, input.queries[i], options, &tally.seconds),
-            input.queries[i].truth);
+    tally = oracle::check_file(path, forced, settings);
   }
   return to_dict(tally);
 }
@@ -158,19 +125,19 @@ py::dict check_array_shard(const std::string& name, const std::string& type,
   {
     py::gil_scoped_release release;
     for (py::ssize_t i = 0; i < array.shape(0); ++i) {
-      const cli::QueryPoints p = points_of(array.data() + 24 * i);
+      const oracle::QueryPoints p = points_of(array.data() + 24 * i);
       const auto start = std::chrono::steady_clock::now();
       CcdResult result;
       try {
         result = query_type == QueryType::vertex_face
-                     ? vertex_face_ccd(cli::vertex_face_query(p), options)
-                     : edge_edge_ccd(cli::edge_edge_query(p), options);
+                     ? vertex_face_ccd(oracle::vertex_face_query(p), options)
+                     : edge_edge_ccd(oracle::edge_edge_query(p), options);
       } catch (const std::invalid_argument& e) {
         throw py::value_error(name + ": query " + std::to_string(i) + ": " + e.what());
       }
       tally.seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      count(tally, result, flags.data()[i]);
+      tally.count(result, flags.data()[i]);
     }
   }
   return to_dict(tally);
@@ -184,56 +151,18 @@ std::vector<CheckTally> tallies_of(const py::list& files) {
 
 // ---- grade ------------------------------------------------------------------------------------
 
-// Whether a reported toi is later than the exact first contact time t* of `query`, as
-// tools/grade.cpp decides it (see there for why): `exact` is exact_ccd(query) with toi_width 0
-// and a contact.
-bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
-                              const CcdResult& exact) {
-  if (toi <= mpq_class(exact.toi_lo)) return false;
-  if (exact.toi_lo == exact.toi_hi || toi >= mpq_class(exact.toi_hi)) return true;
-  RationalQuery over_toi = query;
-  for (int k = 0; k < 4; ++k) {
-    const RationalPoint& x0 = query.points[k];
-    const RationalPoint& x1 = query.points[k + 4];
-    RationalPoint& end = over_toi.points[k + 4];
-    end.x = x0.x + toi * (x1.x - x0.x);
-    end.y = x0.y + toi * (x1.y - x0.y);
-    end.z = x0.z + toi * (x1.z - x0.z);
-  }
-  const CcdResult restricted = exact_ccd(over_toi);
-  return restricted.collides && restricted.toi_lo < 1.0;
-}
-
-// Answers [begin, end) of one (queries, answers) pair of files; indices in the whole file.
+// Answers [begin, end) of one (queries, answers) pair of files, graded as the command grades
+// them (oracle::grade_file); indices in the whole file.
 py::dict grade_file_shard(const std::string& queries_path, const std::string& answers_path,
                           const std::optional<std::string>& type, std::size_t begin,
                           std::optional<std::size_t> end, double t_max) {
   validate_t_max(t_max);
-  const QueryType query_type = cli::resolve_query_type(queries_path, forced_type(type));
+  const std::optional<QueryType> forced = forced_type(type);
   GradeFindings findings;
   {
     py::gil_scoped_release release;
-    require_regular_file(queries_path, "a CSV file (grade takes one file per answers file)");
-    const QueryFile input = read_query_file(queries_path, query_type);
-    if (input.queries.empty()) throw InputError(input.path, 0, "no queries in the file");
-    const std::vector<cli::Answer> answers =
-        cli::read_answers_file(answers_path, input.queries.size(), queries_path, t_max);
-    CcdOptions options;
-    options.t_max = t_max;
-    options.toi_width = 0.0;
-    const std::size_t stop = std::min(end.value_or(input.queries.size()), input.queries.size());
-    for (std::size_t i = begin; i < stop; ++i) {
-      const cli::Answer& answer = answers[i];
-      const RationalQuery& query = input.queries[i].query;
-      const CcdResult exact = exact_ccd(query, options);
-      ++findings.queries;
-      findings.tois_given += answer.toi.has_value();
-      if (answer.collides && !exact.collides) findings.false_positives.push_back(i);
-      if (!answer.collides && exact.collides) findings.false_negatives.push_back(i);
-      if (answer.collides && exact.collides && answer.toi &&
-          later_than_first_contact(*answer.toi, query, exact))
-        findings.non_conservative.push_back(i);
-    }
+    findings = oracle::grade_file(queries_path, answers_path, forced, t_max, {}, begin,
+                                  end.value_or(static_cast<std::size_t>(-1)));
   }
   return to_dict(findings);
 }
@@ -245,7 +174,7 @@ void bind_oracle(py::module_& m) {
   py::register_exception_translator([](std::exception_ptr error) {
     try {
       if (error) std::rethrow_exception(error);
-    } catch (const cli::UsageError& e) {
+    } catch (const oracle::UsageError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     }
   });
@@ -270,7 +199,7 @@ void bind_oracle(py::module_& m) {
       "_check_table",
       [](const std::string& mode, const py::list& files, const py::dict& total) {
         std::ostringstream out;
-        cli::print_check_table(out, parse_mode(mode), tallies_of(files), tally_of(total));
+        oracle::print_check_table(out, parse_mode(mode), tallies_of(files), tally_of(total));
         return out.str();
       },
       py::arg("mode"), py::arg("files"), py::arg("total"));
@@ -278,20 +207,20 @@ void bind_oracle(py::module_& m) {
       "_check_json",
       [](const std::string& mode, const py::list& files, const py::dict& total, double t_max) {
         std::ostringstream out;
-        cli::print_check_json(out, parse_mode(mode), tallies_of(files), tally_of(total), t_max);
+        oracle::print_check_json(out, parse_mode(mode), tallies_of(files), tally_of(total), t_max);
         return out.str();
       },
       py::arg("mode"), py::arg("files"), py::arg("total"), py::arg("t_max"));
   m.def(
       "_require_some_queries",
       [](const std::vector<std::string>& empty_files, std::size_t file_count,
-         std::size_t queries) { cli::require_some_queries(empty_files, file_count, queries); },
+         std::size_t queries) { oracle::require_some_queries(empty_files, file_count, queries); },
       py::arg("empty_files"), py::arg("file_count"), py::arg("queries"));
   m.def(
       "_grade_text",
       [](const py::dict& findings) {
         std::ostringstream out;
-        cli::print_grade_text(out, findings_of(findings));
+        oracle::print_grade_text(out, findings_of(findings));
         return out.str();
       },
       py::arg("findings"));
@@ -299,7 +228,7 @@ void bind_oracle(py::module_& m) {
       "_grade_json",
       [](const py::dict& findings, double t_max) {
         std::ostringstream out;
-        cli::print_grade_json(out, findings_of(findings), t_max);
+        oracle::print_grade_json(out, findings_of(findings), t_max);
         return out.str();
       },
       py::arg("findings"), py::arg("t_max"));

@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <string>
 
-#include "answers_file.hpp"
 #include "exactccd/query_file.hpp"
 #include "fuzz_support.hpp"
+#include "oracle/answers_file.hpp"
 
 using namespace exactccd;
 
@@ -25,16 +25,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const std::size_t count : {lines > 0 ? lines - 1 : 0, lines, lines + 1})
     for (const double t_max : {1.0, 0.5}) {
       if (count != lines && t_max != 1.0) continue;
-      std::vector<cli::Answer> answers;
+      std::vector<oracle::Answer> answers;
       try {
-        answers = cli::read_answers_file(path, count, "queries.csv", t_max);
+        answers = oracle::read_answers_file(path, count, "queries.csv", t_max);
       } catch (const InputError&) {
         continue;
       }
       fuzz::require(answers.size() == count, "answer count " + std::to_string(answers.size()) +
                                                  " for an expected " + std::to_string(count));
       for (std::size_t i = 0; i < answers.size(); ++i) {
-        const cli::Answer& a = answers[i];
+        const oracle::Answer& a = answers[i];
         fuzz::require(a.line == i + 1, "answer " + std::to_string(i) + " on line " +
                                            std::to_string(a.line));
         if (!a.toi) continue;

@@ -4,7 +4,7 @@
 // folder, "vf_t0" (the first two queries of tests/data/degenerate-suite/vf_t0 and their TOI
 // sidecar), so that manifests naming it are studied to the end.
 //
-// Properties: the command returns or throws exactccd::InputError or cli::UsageError, nothing
+// Properties: the command returns or throws exactccd::InputError or oracle::UsageError, nothing
 // else (a nlohmann::json exception or a crash is a defect: a bad manifest must give a clear
 // message); when it returns, the status is kExitAgree, since the verdicts and TOIs come from
 // the family's files, which are right, whatever the manifest says about them.
@@ -16,10 +16,10 @@
 #include <filesystem>
 #include <string>
 
-#include "cli_common.hpp"
+#include "bench/study/study.hpp"
 #include "exactccd/query_file.hpp"
 #include "fuzz_support.hpp"
-#include "study_command.hpp"
+#include "oracle/common.hpp"
 
 using namespace exactccd;
 
@@ -59,7 +59,7 @@ const std::filesystem::path& suite() {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   fuzz::write_file(suite() / "manifest.json", data, size);
-  cli::StudyOptions options;
+  study::StudyOptions options;
   options.paths = {suite().string()};
   options.repetitions = 1;
   options.widths = {0.0};
@@ -67,13 +67,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.json = (size & 1) != 0;  // both report writers, chosen by a bit of the input
   int status = -1;
   try {
-    status = cli::run_study(options);
+    status = study::run_study(options);
   } catch (const InputError&) {
     return 0;
-  } catch (const cli::UsageError&) {
+  } catch (const oracle::UsageError&) {
     return 0;
   }
-  fuzz::require(status == cli::kExitAgree,
+  fuzz::require(status == oracle::kExitAgree,
                 "study exit status " + std::to_string(status) + " on correct family files");
   return 0;
 }

@@ -1,0 +1,53 @@
+// The methods and settings the study measures: the uncertified float_only mode and tolerance
+// method (corpus/tolerance_ccd.hpp), the default path at each TOI width, the exact path.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "corpus/tolerance_ccd.hpp"
+#include "exactccd/ccd.hpp"
+
+namespace exactccd::study {
+
+enum class Kind { float_only, tolerance, filtered, exact };
+
+struct Method {
+  Kind kind = Kind::filtered;
+  double parameter = 0.0;  // tolerance: eps; filtered: the TOI width
+  std::string name;        // float_only, tolerance, default, exact
+  std::string setting;     // eps=1e-9, width=0, or empty
+  bool certified = false;
+
+  std::string label() const { return setting.empty() ? name : name + " " + setting; }
+};
+
+/// The methods and settings measured, in report order: float_only; the tolerance method at
+/// each eps; the default path at each TOI width; exact.
+std::vector<Method> methods_of(const std::vector<double>& tolerances,
+                               const std::vector<double>& widths);
+
+/// Calls f(decide_vertex_face, decide_edge_edge) with the method's two deciders, so that the
+/// timed loops call them directly, with no per-query dispatch on the method.
+template <class F>
+auto with_method(const Method& m, F&& f) {
+  CcdOptions options;
+  switch (m.kind) {
+    case Kind::tolerance: {
+      const double eps = m.parameter;
+      return f(
+          [eps](const VertexFaceQuery& q) { return methods::tolerance_vertex_face_ccd(q, eps); },
+          [eps](const EdgeEdgeQuery& q) { return methods::tolerance_edge_edge_ccd(q, eps); });
+    }
+    case Kind::float_only: options.mode = Mode::float_only; break;
+    case Kind::filtered:
+      options.mode = Mode::filtered;
+      options.toi_width = m.parameter;
+      break;
+    case Kind::exact: options.mode = Mode::exact; break;
+  }
+  return f([options](const VertexFaceQuery& q) { return vertex_face_ccd(q, options); },
+           [options](const EdgeEdgeQuery& q) { return edge_edge_ccd(q, options); });
+}
+
+}  // namespace exactccd::study

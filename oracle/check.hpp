@@ -1,0 +1,39 @@
+// What `exactccd check` computes: every query of one benchmark CSV file decided by a chosen
+// path and compared with the file's truth column. The tallies and their table / JSON forms are
+// in check_report.hpp (included).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "exactccd/types.hpp"
+#include "oracle/check_report.hpp"
+
+namespace exactccd::oracle {
+
+struct CheckSettings {
+  double t_max = 1.0;          ///< in (0, 1]
+  Mode mode = Mode::filtered;  ///< the path that decides every query
+  /// Only the queries [first, last) of the file (clipped to its count): a shard of a file for
+  /// a distributed run (exactccd.dask); the whole file by default.
+  std::size_t first = 0;
+  std::size_t last = static_cast<std::size_t>(-1);
+};
+
+/// Called after each query of the file: its 0-based index, the file's query count, the result.
+using CheckVisitor =
+    std::function<void(std::size_t index, std::size_t count, const CcdResult& result)>;
+
+/// Decides every query of the benchmark CSV file `path` (its type `type` when given, else from
+/// the folder name) and counts the collisions, the disagreements with the truth column and the
+/// deciding stages; the tally's `file` is `path`, its `seconds` the time in the decisions only.
+/// Coordinates must be doubles, except with Mode::exact, which decides rational queries.
+/// Throws InputError for an unreadable or malformed file, an unknown type, or a coordinate that
+/// is not a double outside Mode::exact; the library's std::invalid_argument for settings it
+/// refuses (a t_max outside (0, 1]).
+CheckTally check_file(const std::string& path, std::optional<QueryType> type,
+                      const CheckSettings& settings, const CheckVisitor& on_query = {});
+
+}  // namespace exactccd::oracle

@@ -1,0 +1,41 @@
+// Tallies of `exactccd check` and their table / JSON forms.
+#pragma once
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "exactccd/types.hpp"
+
+namespace exactccd::oracle {
+
+/// Counts for one file, or for all of them (the TOTAL row).
+struct CheckTally {
+  std::string file;
+  std::size_t queries = 0;
+  std::size_t collisions = 0;       ///< queries the chosen path finds colliding
+  std::size_t false_positives = 0;  ///< the path says 1, truth column says 0
+  std::size_t false_negatives = 0;  ///< the path says 0, truth column says 1
+  double seconds = 0.0;             ///< time spent in the decisions only
+  /// Queries decided by each stage, indexed by the Stage's value.
+  std::vector<std::size_t> stage_counts;
+
+  std::size_t disagreements() const { return false_positives + false_negatives; }
+  /// Counts one decided query against its truth value (time not included).
+  void count(const CcdResult& result, bool truth);
+  void count_stage(Stage stage);
+  std::size_t stage_count(Stage stage) const;
+  void add(const CheckTally& other);
+};
+
+/// The stages shown: those `mode` can use, and any other that decided some query.
+std::vector<Stage> reported_stages(Mode mode, const CheckTally& total);
+
+void print_check_table(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
+                       const CheckTally& total);
+
+void print_check_json(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
+                      const CheckTally& total, double t_max);
+
+}  // namespace exactccd::oracle

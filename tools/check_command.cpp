@@ -1,0 +1,85 @@
+#include "check_command.hpp"
+
+#include <iostream>
+#include <utility>
+
+#include "exactccd/query_file.hpp"
+#include "oracle/check.hpp"
+#include "oracle/common.hpp"
+#include "oracle/names.hpp"
+#include "oracle/output_file.hpp"
+#include "oracle/progress.hpp"
+
+namespace exactccd::cli {
+
+using namespace exactccd::oracle;
+
+namespace {
+
+// Every file to read with its type, all resolved before any work so that a bad path or an
+// untyped file fails at once.
+std::vector<std::pair<std::string, QueryType>> list_files(const CheckOptions& options) {
+  std::vector<std::pair<std::string, QueryType>> files;
+  for (const std::string& path : options.paths)
+    for (const std::string& file : find_query_files(path))
+      files.emplace_back(file, resolve_query_type(file, options.type));
+  return files;
+}
+
+// One line per query: file,index,collides,toi_lo,toi_hi (TOI fields empty without contact).
+void write_result_line(OutputFile& out, const std::string& file, std::size_t index,
+                       const CcdResult& r) {
+  std::string line = file + ',' + std::to_string(index) + (r.collides ? ",1," : ",0,");
+  if (r.collides)
+    line += format_double(r.toi_lo) + ',' + format_double(r.toi_hi);
+  else
+    line += ',';
+  line += '\n';
+  out.write(line);
+}
+
+}  // namespace
+
+int run_check(const CheckOptions& options) {
+  validate_t_max(options.t_max);
+  const auto files = list_files(options);
+
+  // Opened before the work, so that an unwritable --out fails at once; renamed into place
+  // only when every query is decided.
+  std::optional<OutputFile> out_file;
+  if (!options.out_path.empty())
+    out_file.emplace(options.out_path, options.force ? Overwrite::replace : Overwrite::refuse,
+                     "--out");
+
+  CheckSettings settings;
+  settings.t_max = options.t_max;
+  settings.mode = options.mode;
+  Progress progress;
+  std::vector<CheckTally> tallies;
+  CheckTally total;
+  total.file = "TOTAL";
+  std::vector<std::string> empty_files;
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const std::string& file = files[k].first;
+    CheckTally tally = check_file(
+        file, files[k].second, settings,
+        [&](std::size_t index, std::size_t count, const CcdResult& result) {
+          if (out_file) write_result_line(*out_file, file, index, result);
+          progress.update(k, files.size(), file, index + 1, count);
+        });
+    if (tally.queries == 0) empty_files.push_back(tally.file);
+    total.add(tally);
+    tallies.push_back(std::move(tally));
+  }
+  progress.clear();
+  require_some_queries(empty_files, files.size(), total.queries);
+
+  if (out_file) out_file->commit();
+  if (options.json)
+    print_check_json(std::cout, options.mode, tallies, total, options.t_max);
+  else
+    print_check_table(std::cout, options.mode, tallies, total);
+  return total.disagreements() == 0 ? kExitAgree : kExitDisagree;
+}
+
+}  // namespace exactccd::cli

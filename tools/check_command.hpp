@@ -1,0 +1,27 @@
+// `exactccd check`: decide benchmark queries with a chosen path and compare with their truth
+// column (oracle/check.hpp), over files and folders, with the per-query --out file.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exactccd/types.hpp"
+
+namespace exactccd::cli {
+
+struct CheckOptions {
+  std::vector<std::string> paths;  ///< CSV files or directories searched for them
+  std::optional<QueryType> type;   ///< --type: overrides the type from the folder name
+  double t_max = 1.0;
+  Mode mode = Mode::filtered;  ///< --mode: the path that decides every query
+  bool json = false;           ///< one JSON object on stdout instead of a table
+  std::string out_path;        ///< --out: per-query results, empty for none
+  bool force = false;          ///< --force: --out may replace an existing file
+};
+
+/// Runs the subcommand; returns the exit status (0 all agree, 1 some disagree). Throws
+/// InputError / UsageError for bad input.
+int run_check(const CheckOptions& options);
+
+}  // namespace exactccd::cli

@@ -1,0 +1,24 @@
+// `exactccd grade`: judge another CCD code's answers against the exact decision
+// (oracle/grade.hpp) and print the findings.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "exactccd/types.hpp"
+
+namespace exactccd::cli {
+
+struct GradeOptions {
+  std::string queries_path;  ///< one benchmark CSV file
+  std::string answers_path;  ///< see oracle/answers_file.hpp
+  std::optional<QueryType> type;
+  double t_max = 1.0;
+  bool json = false;
+};
+
+/// Returns 0 when every answer is right and every toi conservative, 1 otherwise. Throws
+/// InputError / UsageError for bad input.
+int run_grade(const GradeOptions& options);
+
+}  // namespace exactccd::cli
