@@ -1479,12 +1479,18 @@ inline std::string check_coarse_toi(const CcdResult& coarse, const CcdResult& ti
   return {};
 }
 
+/// Both TOI fields +infinity, the no-contact convention (written out, not the library's constant).
+inline bool is_no_contact_toi(const CcdResult& r) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return r.toi_lo == inf && r.toi_hi == inf;
+}
+
 /// Tightest-pair comparison: same verdict and, when colliding, identical TOI doubles.
 inline std::string check_tight(const CcdResult& d, const CcdResult& e) {
   if (d.collides != e.collides) return "verdict differs";
   if (d.collides && (d.toi_lo != e.toi_lo || d.toi_hi != e.toi_hi)) return "toi differs";
-  if (!d.collides && (d.toi_lo != 0 || d.toi_hi != 0 || e.toi_lo != 0 || e.toi_hi != 0))
-    return "toi not 0 without contact";
+  if (!d.collides && !(is_no_contact_toi(d) && is_no_contact_toi(e)))
+    return "toi not +infinity without contact";
   return {};
 }
 
@@ -1606,8 +1612,8 @@ inline Disagreement partial_interval_coarse_check(const DoubleQuery& q, std::mt1
   for (const CcdResult* r : {&dc, &ec}) {
     const char* who = r == &dc ? "default" : "exact mode";
     if (r->collides != ep.collides) return fail(std::string(who) + ": verdict differs", coarse, *r);
-    if (!r->collides && (r->toi_lo != 0 || r->toi_hi != 0))
-      return fail(std::string(who) + ": toi not 0 without contact", coarse, *r);
+    if (!r->collides && !is_no_contact_toi(*r))
+      return fail(std::string(who) + ": toi not +infinity without contact", coarse, *r);
     if (r->collides)
       if (std::string w = check_coarse_toi(*r, ep, coarse.toi_width); !w.empty())
         return fail(std::string(who) + ": " + w, coarse, *r);

@@ -37,6 +37,15 @@ mpq_class parse_toi(std::string_view text, double t_max, const std::string& path
   return *value;
 }
 
+// The no-contact TOI of the +infinity convention (Tight Inclusion, ipc-toolkit, exactccd):
+// inf, +inf, infinity or +infinity, in any case.
+bool is_positive_infinity(std::string_view text) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  std::string lower(text);
+  for (char& c : lower) c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+  return lower == "inf" || lower == "infinity";
+}
+
 Answer parse_answer(std::string_view text, double t_max, const std::string& path,
                     std::size_t line) {
   const std::size_t comma = text.find(',');
@@ -47,8 +56,11 @@ Answer parse_answer(std::string_view text, double t_max, const std::string& path
     throw InputError(path, line, "expected '0', '1' or '1,toi', found " + quote_for_message(text));
   answer.collides = verdict == "1";
   if (comma == std::string_view::npos) return answer;
-  if (!answer.collides)
-    throw InputError(path, line, "a toi on a '0' (no collision) line: " + quote_for_message(text));
+  if (!answer.collides) {
+    if (is_positive_infinity(trim(text.substr(comma + 1)))) return answer;  // `0,inf`
+    throw InputError(path, line,
+                     "a finite toi on a '0' (no collision) line: " + quote_for_message(text));
+  }
   answer.toi = parse_toi(trim(text.substr(comma + 1)), t_max, path, line);
   return answer;
 }

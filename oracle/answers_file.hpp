@@ -1,5 +1,6 @@
 // The answers file that `exactccd grade` judges: one line per query, in order, `0`, `1` or
-// `1,toi` (toi a decimal number, the graded code's reported time of impact, read exactly).
+// `1,toi` (toi a decimal number, the graded code's reported time of impact, read exactly); a
+// no-collision line may carry the +infinity TOI of the no-contact convention, `0,inf`.
 #pragma once
 
 #include <gmpxx.h>
@@ -21,7 +22,8 @@ struct Answer {
 /// Reads `path`, expecting exactly `query_count` answers (the number of queries in
 /// `queries_path`, named in the message when the counts differ). Throws InputError
 /// ("path:line: what") for a file that cannot be read (see LineReader), a malformed line, a
-/// toi that is not a decimal number, a toi outside [0, t_max], a toi on a `0` line, or too few
+/// toi that is not a decimal number, a toi outside [0, t_max], a toi other than inf on a `0`
+/// line, or too few
 /// / too many lines.
 std::vector<Answer> read_answers_file(const std::string& path, std::size_t query_count,
                                       const std::string& queries_path, double t_max);

@@ -172,7 +172,26 @@ TEST_F(CliTest, GradeRejectsNanOrInfToi) {
 }
 
 TEST_F(CliTest, GradeRejectsToiOnNoCollisionLine) {
-  expect_bad_input(grade("1\n1\n0,0.5\n"), {(dir_ / "answers.txt").string() + ":3:"});
+  for (const char* bad : {"0,0.5", "0,-inf", "0,nan", "0,", "0,1e999"}) {
+    SCOPED_TRACE(bad);
+    expect_bad_input(grade(std::string("1\n1\n") + bad + "\n"),
+                     {(dir_ / "answers.txt").string() + ":3:"});
+  }
+}
+
+// The no-contact TOI of the +infinity convention is accepted on a `0` line (and only there).
+TEST_F(CliTest, GradeAcceptsInfinityToiOnNoCollisionLine) {
+  for (const char* no_contact : {"0,inf", "0,+inf", "0,Infinity", "0, INF "}) {
+    SCOPED_TRACE(no_contact);
+    const RunResult r = grade(std::string("1,0.5\n1,0.25\n") + no_contact + "\n");
+    EXPECT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = parse_json(r);
+    EXPECT_EQ(j.value("queries", 0u), 3u);
+    EXPECT_EQ(j.value("false_positives", 1u), 0u);
+    EXPECT_EQ(j.value("false_negatives", 1u), 0u);
+    EXPECT_EQ(j.value("tois_given", 0u), 2u);
+    EXPECT_EQ(j.value("non_conservative_tois", 1u), 0u);
+  }
 }
 
 TEST_F(CliTest, GradeRejectsTooFewAnswers) {
@@ -279,9 +298,9 @@ TEST_F(CliTest, CheckOutWritesOneWellFormedLinePerQuery) {
     ASSERT_TRUE(f[2] == "0" || f[2] == "1") << line;
     const bool collides = f[2] == "1";
     EXPECT_EQ(collides, truth.at(name).at(index)) << line;
-    if (!collides) {
-      EXPECT_EQ(f[3], "") << line;
-      EXPECT_EQ(f[4], "") << line;
+    if (!collides) {  // no contact: +infinity, written "inf" (strtod, Python's float read it)
+      EXPECT_EQ(f[3], "inf") << line;
+      EXPECT_EQ(f[4], "inf") << line;
       continue;
     }
     ++ones;

@@ -107,9 +107,9 @@ void expect_answer(const DegenerateCase& c, const CcdResult& r, double width,
   if (c.collides) {
     expect_enclosure(c, r, width, what);
   } else {
-    // Contract: both times are 0 when there is no collision.
-    EXPECT_EQ(r.toi_lo, 0.0);
-    EXPECT_EQ(r.toi_hi, 0.0);
+    // Contract: both times are +infinity when there is no collision.
+    EXPECT_EQ(r.toi_lo, std::numeric_limits<double>::infinity());
+    EXPECT_EQ(r.toi_hi, std::numeric_limits<double>::infinity());
   }
 }
 

@@ -448,6 +448,9 @@ TEST(DiscreteScene, ThinSheetPassedWithinTheStepIsMissed) {
   const DiscreteResult discrete = discrete_collision(scene);
   EXPECT_FALSE(discrete.collides);
   EXPECT_TRUE(discrete.pairs_at_end.empty());
+  // No contact: +infinity, as CcdResult's.
+  EXPECT_EQ(discrete.toi_lo, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(discrete.toi_hi, std::numeric_limits<double>::infinity());
   EXPECT_TRUE(intersecting_triangle_pairs(scene, 0.0).empty());
   EXPECT_TRUE(intersecting_triangle_pairs(scene, 1.0).empty());
   // Mid-step the discrete test does see it (t = 1/2: the apex is on the sheet).

@@ -2,6 +2,7 @@
 // path and by the double API, against the benchmark's own truth column.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@ namespace {
 // The benchmark's published counts (tests/data/sample-queries/README.md).
 constexpr std::size_t kSampleQueryCount = 5029;
 constexpr std::size_t kSampleCollisionCount = 329;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string list(const std::vector<std::string>& where) {
   std::string s;
@@ -77,7 +79,7 @@ TEST(SampleQueries, DoubleApiMatchesTruthAndRationalApi) {
 }
 
 // Shape of every result: a colliding one has 0 <= toi_lo <= toi_hi <= t_max, a free one reports
-// 0, 0. Checked at t_max = 1 and at t_max = 1/2.
+// +infinity, +infinity (the no-contact convention). Checked at t_max = 1 and at t_max = 1/2.
 TEST(SampleQueries, ResultsAreWellFormed) {
   std::vector<std::string> bad;
   for (const double t_max : {1.0, 0.5}) {
@@ -87,7 +89,7 @@ TEST(SampleQueries, ResultsAreWellFormed) {
       const CcdResult r = exact_ccd(s.query, options);
       const bool ok = r.collides
                           ? (0 <= r.toi_lo && r.toi_lo <= r.toi_hi && r.toi_hi <= t_max)
-                          : (r.toi_lo == 0 && r.toi_hi == 0);
+                          : (r.toi_lo == kInf && r.toi_hi == kInf);
       if (!ok || r.decided_by != Stage::exact)
         bad.push_back(s.where() + " (t_max " + std::to_string(t_max) + ")");
     }

@@ -48,11 +48,10 @@ struct ToiStats {
 void check_toi(const RationalQuery& q, double t_max, const std::string& where, ToiStats* stats) {
   SCOPED_TRACE(where + " (t_max " + std::to_string(t_max) + ")" + describe(q));
   const CcdResult r = exact_ccd(q, with_t_max(t_max));
-  const mpq_class lo(r.toi_lo), hi(r.toi_hi);
   if (!r.collides) {
     ++stats->free;
-    EXPECT_EQ(r.toi_lo, 0.0);
-    EXPECT_EQ(r.toi_hi, 0.0);
+    EXPECT_EQ(r.toi_lo, kInf);  // the no-contact convention
+    EXPECT_EQ(r.toi_hi, kInf);
     // Independent necessary condition: no contact at sampled rational times of [0, t_max].
     const mpq_class end(t_max);
     for (int k = 0; k <= 8; ++k)
@@ -63,6 +62,7 @@ void check_toi(const RationalQuery& q, double t_max, const std::string& where, T
   ASSERT_LE(0.0, r.toi_lo);
   ASSERT_LE(r.toi_lo, r.toi_hi);
   ASSERT_LE(r.toi_hi, t_max);
+  const mpq_class lo(r.toi_lo), hi(r.toi_hi);  // finite, as just checked
 
   // (a) contact at t*.
   if (r.toi_lo == r.toi_hi) {

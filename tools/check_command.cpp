@@ -26,14 +26,12 @@ std::vector<std::pair<std::string, QueryType>> list_files(const CheckOptions& op
   return files;
 }
 
-// One line per query: file,index,collides,toi_lo,toi_hi (TOI fields empty without contact).
+// One line per query: file,index,collides,toi_lo,toi_hi (TOI fields "inf" without contact: the
+// library's +infinity, which %.17g writes so and strtod and Python's float read back).
 void write_result_line(OutputFile& out, const std::string& file, std::size_t index,
                        const CcdResult& r) {
   std::string line = file + ',' + std::to_string(index) + (r.collides ? ",1," : ",0,");
-  if (r.collides)
-    line += format_double(r.toi_lo) + ',' + format_double(r.toi_hi);
-  else
-    line += ',';
+  line += format_double(r.toi_lo) + ',' + format_double(r.toi_hi);
   line += '\n';
   out.write(line);
 }

@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   check->add_option("--out", check_options.out_path,
                     "Write one line per query: file,index,collides,toi_lo,toi_hi (index 0-based "
-                    "in its file, TOI with 17 significant digits, empty when no contact)");
+                    "in its file, TOI with 17 significant digits, inf when no contact)");
   add_force_flag(check, check_options.force);
   add_type_option(check, check_type);
   add_t_max_option(check, check_options.t_max);
@@ -118,7 +118,8 @@ int main(int argc, char** argv) {
                          "decision: false positives, false negatives, non-conservative TOIs.");
   grade->footer(std::string("Answers file: one line per query, in order: 0, 1, or 1,toi (toi a "
                             "decimal double, the\ncode's time of impact; it is conservative iff "
-                            "toi <= the exact first contact time).\n\n") +
+                            "toi <= the exact first contact time).\nA no-contact line may carry "
+                            "the +infinity convention's toi: 0,inf.\n\n") +
                 kExitStatusHelp);
   grade->add_option("--queries", grade_options.queries_path, "The benchmark CSV file")->required();
   grade->add_option("--answers", grade_options.answers_path, "The answers file")->required();

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -157,8 +158,9 @@ inline bool check_default_equals_exact(QueryType type, const Points& v, const Cc
                  std::nextafter(exact.toi_lo, 2.0) == exact.toi_hi),
             "not the tightest pair in [0, t_max]: " + describe(exact) + " on " + where);
   } else {
-    require(exact.toi_lo == 0.0 && exact.toi_hi == 0.0,
-            "no contact but a TOI: " + describe(exact) + " on " + where);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    require(exact.toi_lo == inf && exact.toi_hi == inf,
+            "no contact but a finite TOI: " + describe(exact) + " on " + where);
   }
   if (options.toi_width > 0.0) {
     for (Mode mode : {Mode::filtered, Mode::exact}) {

@@ -1,7 +1,8 @@
-// Reading and writing the CCD benchmark's CSV files (Wang et al. 2021): 8 rows per query, 7
-// integer columns x_num,x_den,y_num,y_den,z_num,z_den,truth. Coordinates are read as exact
-// rationals; doubles are written as their exact fractions, so a file written here reads back
-// as exactly the doubles written.
+/// \file
+/// Reading and writing the CCD benchmark's CSV files (Wang et al. 2021): 8 rows per query, 7
+/// integer columns x_num,x_den,y_num,y_den,z_num,z_den,truth. Coordinates are read as exact
+/// rationals; doubles are written as their exact fractions, so a file written here reads back
+/// as exactly the doubles written.
 #pragma once
 
 #include <Eigen/Core>
@@ -14,41 +15,53 @@
 #include <string_view>
 #include <vector>
 
+#include "exactccd/export.hpp"
 #include "exactccd/rational_query.hpp"
 
 namespace exactccd {
 
 /// Malformed input: the message names the file and, where there is one, the line.
-class InputError : public std::runtime_error {
+class EXACTCCD_API InputError : public std::runtime_error {
  public:
+  /// \param file the file at fault, as the user named it.
+  /// \param line 1-based line number, or 0 when the whole file is at fault.
+  /// \param what the reason; what() returns "file:line: what" (or "file: what" for line 0).
   InputError(const std::string& file, std::size_t line, const std::string& what);
+  /// \return the file at fault.
   const std::string& file() const { return file_; }
-  std::size_t line() const { return line_; }  ///< 1-based; 0 when the whole file is at fault
+  /// \return the 1-based line at fault; 0 when the whole file is at fault.
+  std::size_t line() const { return line_; }
 
  private:
   std::string file_;
   std::size_t line_;
 };
 
+/// One query of a benchmark file, read exactly.
 struct QueryRecord {
-  RationalQuery query;
+  RationalQuery query;        ///< the coordinates, exact rationals
   bool truth = false;         ///< the file's truth column
   std::size_t first_line = 0; ///< 1-based line of the query's first row
 
   /// The 1-based line of row `row` (0-7): a query's rows are consecutive lines, since the
   /// reader rejects a blank line inside a query.
+  /// \param row 0-7.
+  /// \return first_line + row.
   std::size_t line_of_row(std::size_t row) const { return first_line + row; }
 };
 
+/// A whole benchmark file.
 struct QueryFile {
-  std::string path;
-  QueryType type = QueryType::vertex_face;
-  std::vector<QueryRecord> queries;
+  std::string path;                         ///< as given to read_query_file
+  QueryType type = QueryType::vertex_face;  ///< the type every query of the file has
+  std::vector<QueryRecord> queries;         ///< in file order
 };
 
 /// The query type from a path component named "vertex-face" or "edge-edge" (the nearest one),
 /// or nullopt.
-std::optional<QueryType> query_type_from_path(const std::string& path);
+/// \param path any path (only its text is examined; nothing is opened).
+/// \return the type, or nullopt when no component names one. Throws only std::bad_alloc.
+EXACTCCD_API std::optional<QueryType> query_type_from_path(const std::string& path);
 
 // ---- Reading ----------------------------------------------------------------------------------
 
@@ -63,17 +76,26 @@ inline constexpr std::size_t kMaxLineBytes = 64 * 1024;
 /// "Too many levels of symbolic links"), what it is when it is not a regular file ("is a
 /// directory, not <what>", "is a FIFO (named pipe), not <what>", ...), a line longer than
 /// kMaxLineBytes (with its number), a read error.
-class LineReader {
+class EXACTCCD_API LineReader {
  public:
-  /// `what` names the expected content in messages, e.g. "a CSV file".
+  /// Opens the file.
+  /// \param path the file to read.
+  /// \param what names the expected content in messages, e.g. "a CSV file".
+  /// \throws InputError when `path` cannot be opened or is not a regular file.
   LineReader(const std::string& path, const std::string& what);
+  /// Closes the file.
   ~LineReader();
   LineReader(const LineReader&) = delete;
   LineReader& operator=(const LineReader&) = delete;
 
-  /// The next line, without its '\n' (a last line without one counts); false at the end.
+  /// The next line, without its '\n' (a last line without one counts).
+  /// \param line receives the line.
+  /// \return false at the end of the file (`line` is then unspecified).
+  /// \throws InputError for a line longer than kMaxLineBytes or a read error.
   bool next(std::string& line);
-  std::size_t line_number() const { return line_number_; }  ///< of the line last returned
+  /// \return the 1-based number of the line last returned (0 before the first).
+  std::size_t line_number() const { return line_number_; }
+  /// \return the path as given.
   const std::string& path() const { return path_; }
 
  private:
@@ -89,16 +111,23 @@ class LineReader {
 
 /// Throws InputError unless `path` names a regular file (following symbolic links); the message
 /// as LineReader's. Opens nothing.
-void require_regular_file(const std::string& path, const std::string& what);
+/// \param path the path to examine.
+/// \param what names the expected content in messages, e.g. "a CSV file".
+/// \throws InputError when `path` is missing, unreadable or not a regular file.
+EXACTCCD_API void require_regular_file(const std::string& path, const std::string& what);
 
-/// `text` for an error message, in single quotes: tab, carriage return and line feed as \t, \r,
-/// \n; other control characters (NUL included), bytes that are not UTF-8, C1 controls and
-/// bidirectional overrides as \xNN per byte; cut after about 60 bytes ("..."). A UTF-8
+/// `text` for an error message, in single quotes: tab, carriage return and line feed as `\t`,
+/// `\r`, `\n`; other control characters (NUL included), bytes that are not UTF-8, C1 controls
+/// and bidirectional overrides as `\xNN` per byte; cut after about 60 bytes ("..."). A UTF-8
 /// byte-order mark (EF BB BF) is escaped and named: "(starts with a UTF-8 byte-order mark)".
-std::string quote_for_message(std::string_view text);
+/// \param text any bytes.
+/// \return the quoted text. Throws only std::bad_alloc.
+EXACTCCD_API std::string quote_for_message(std::string_view text);
 
 /// `text` with the escapes of quote_for_message, unquoted and uncut (for whole messages).
-std::string printable(std::string_view text);
+/// \param text any bytes.
+/// \return the escaped text. Throws only std::bad_alloc.
+EXACTCCD_API std::string printable(std::string_view text);
 
 /// Reads and validates a whole file (through LineReader). Lines holding only spaces, tabs or a
 /// carriage return are blank: allowed between queries, rejected inside one. Throws InputError
@@ -107,35 +136,74 @@ std::string printable(std::string_view text);
 /// 0 or 1, truth differing within a query, a blank line inside a query, a query cut short (row
 /// count not a multiple of 8). An empty file gives no queries (callers decide whether that is
 /// an error).
-QueryFile read_query_file(const std::string& path, QueryType type);
+/// \param path the file.
+/// \param type the type of its queries (see query_type_from_path).
+/// \return every query, exactly, with its truth and line.
+/// \throws InputError as listed above, naming the file and line.
+EXACTCCD_API QueryFile read_query_file(const std::string& path, QueryType type);
 
 /// `path` itself when it is a file; for a directory, every `vertex-face/*.csv` and
 /// `edge-edge/*.csv` below it, sorted, except files whose name starts with `toi_` (the TOI
 /// sidecars `toi_K.csv` that `exactccd generate` writes next to its `data_K.csv`). Throws
 /// InputError when the path cannot be examined (the system's reason: missing, a link loop, ...)
 /// or a directory holds no such file.
-std::vector<std::string> find_query_files(const std::string& path);
+/// \param path a file or a directory.
+/// \return the files, sorted (just `path` for a file).
+/// \throws InputError as listed above.
+EXACTCCD_API std::vector<std::string> find_query_files(const std::string& path);
 
 // ---- Writing ----------------------------------------------------------------------------------
 
 /// Appends `value` as the exact fraction "num,den": den a power of two, in lowest terms (the
 /// numerator odd unless den == 1); zero (either sign) as "0,1". Throws std::invalid_argument
 /// for NaN or an infinity.
-void append_exact_fraction(std::string& out, double value);
+/// \param out the text appended to.
+/// \param value a finite double.
+/// \throws std::invalid_argument for NaN or an infinity (nothing is appended).
+EXACTCCD_API void append_exact_fraction(std::string& out, double value);
 
 /// Appends one query as its 8 CSV rows "x_num,x_den,y_num,y_den,z_num,z_den,truth\n", `rows` in
 /// the benchmark's row order (as RationalQuery::points). Throws std::invalid_argument for a
 /// non-finite coordinate, and then appends nothing.
-void append_query_rows(std::string& out, const std::array<Eigen::Vector3d, 8>& rows, bool truth);
+/// \param out the text appended to.
+/// \param rows the 8 points, finite.
+/// \param truth the truth column of every row.
+/// \throws std::invalid_argument for a non-finite coordinate.
+EXACTCCD_API void append_query_rows(std::string& out, const std::array<Eigen::Vector3d, 8>& rows,
+                                    bool truth);
 
-/// One query's rows in the benchmark's order (p_t0, a_t0, b_t0, c_t0, p_t1, ...; ea0_t0, ...);
-/// throws as append_query_rows.
-void append_query(std::string& out, const VertexFaceQuery& query, bool truth);
-void append_query(std::string& out, const EdgeEdgeQuery& query, bool truth);
+/// One vertex-face query's rows in the benchmark's order (p_t0, a_t0, b_t0, c_t0, p_t1, ...).
+/// \param out the text appended to.
+/// \param query finite coordinates.
+/// \param truth the truth column.
+/// \throws std::invalid_argument for a non-finite coordinate (nothing is appended).
+EXACTCCD_API void append_query(std::string& out, const VertexFaceQuery& query, bool truth);
+/// One edge-edge query's rows in the benchmark's order (ea0_t0, ea1_t0, eb0_t0, eb1_t0, ...).
+/// \param out the text appended to.
+/// \param query finite coordinates.
+/// \param truth the truth column.
+/// \throws std::invalid_argument for a non-finite coordinate (nothing is appended).
+EXACTCCD_API void append_query(std::string& out, const EdgeEdgeQuery& query, bool truth);
 
-/// The same, written to a stream (the stream's error state is left to the caller to check).
-void write_query_rows(std::ostream& out, const std::array<Eigen::Vector3d, 8>& rows, bool truth);
-void write_query(std::ostream& out, const VertexFaceQuery& query, bool truth);
-void write_query(std::ostream& out, const EdgeEdgeQuery& query, bool truth);
+/// As append_query_rows, written to a stream (the stream's error state is left to the caller
+/// to check).
+/// \param out the stream.
+/// \param rows the 8 points, finite.
+/// \param truth the truth column of every row.
+/// \throws std::invalid_argument for a non-finite coordinate (nothing is written).
+EXACTCCD_API void write_query_rows(std::ostream& out, const std::array<Eigen::Vector3d, 8>& rows,
+                                   bool truth);
+/// As append_query, written to a stream (the stream's error state is left to the caller).
+/// \param out the stream.
+/// \param query finite coordinates.
+/// \param truth the truth column.
+/// \throws std::invalid_argument for a non-finite coordinate (nothing is written).
+EXACTCCD_API void write_query(std::ostream& out, const VertexFaceQuery& query, bool truth);
+/// As append_query, written to a stream (the stream's error state is left to the caller).
+/// \param out the stream.
+/// \param query finite coordinates.
+/// \param truth the truth column.
+/// \throws std::invalid_argument for a non-finite coordinate (nothing is written).
+EXACTCCD_API void write_query(std::ostream& out, const EdgeEdgeQuery& query, bool truth);
 
 }  // namespace exactccd

@@ -1,23 +1,24 @@
-// Scene-level CCD: whole triangle meshes over one time step.
-//
-// A simulator hands over its meshes once (topology and positions) and then, each step, the
-// positions at the start and at the end of the step. `Scene::find_contacts` returns every
-// colliding vertex-face and edge-edge pair with its certified TOI interval; `earliest_contact`
-// returns only the first contact of the step and stops work that cannot lower it.
-//
-// What is modelled: a moving mesh has positions at both ends of the step; a static mesh has one
-// set of positions and is never refitted; pairs between two static meshes are never tested; pairs
-// within one mesh (self-collision) that share a vertex are never candidates. Each vertex moves on
-// a straight line, exactly as in `vertex_face_ccd` / `edge_edge_ccd`, which decide every pair
-// (so the scene's answers are exact in the default mode).
-//
-// Broad phase: a bounding volume hierarchy over the swept boxes of the primitives (the box of a
-// primitive's start and end positions), refitted every step and rebuilt only when it degrades
-// (Bridson et al. 2002; Redon et al. 2002). Boxes come from comparisons of the input doubles
-// only, so culling never drops a colliding pair. PROOF: proofs/scene.md
-//
-// Threads: the narrow phase runs in parallel (TBB); the results do not depend on the number of
-// threads. One Scene must not be used from two threads at once; distinct Scenes are independent.
+/// \file
+/// Scene-level CCD: whole triangle meshes over one time step.
+///
+/// A simulator hands over its meshes once (topology and positions) and then, each step, the
+/// positions at the start and at the end of the step. `Scene::find_contacts` returns every
+/// colliding vertex-face and edge-edge pair with its certified TOI interval; `earliest_contact`
+/// returns only the first contact of the step and stops work that cannot lower it.
+///
+/// What is modelled: a moving mesh has positions at both ends of the step; a static mesh has one
+/// set of positions and is never refitted; pairs between two static meshes are never tested; pairs
+/// within one mesh (self-collision) that share a vertex are never candidates. Each vertex moves on
+/// a straight line, exactly as in `vertex_face_ccd` / `edge_edge_ccd`, which decide every pair
+/// (so the scene's answers are exact in the default mode).
+///
+/// Broad phase: a bounding volume hierarchy over the swept boxes of the primitives (the box of a
+/// primitive's start and end positions), refitted every step and rebuilt only when it degrades
+/// (Bridson et al. 2002; Redon et al. 2002). Boxes come from comparisons of the input doubles
+/// only, so culling never drops a colliding pair. PROOF: proofs/scene.md
+///
+/// Threads: the narrow phase runs in parallel (TBB); the results do not depend on the number of
+/// threads. One Scene must not be used from two threads at once; distinct Scenes are independent.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,10 +26,12 @@
 #include <memory>
 #include <vector>
 
+#include "exactccd/export.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd {
 
+/// A mesh's number in its Scene: 0, 1, ... in the order of add_mesh / add_static_mesh.
 using MeshId = std::uint32_t;
 
 /// Vertex positions, one row (x, y, z) per vertex.
@@ -38,6 +41,7 @@ using Triangles = Eigen::Matrix<std::int32_t, Eigen::Dynamic, 3, Eigen::RowMajor
 /// Edges, one row (i, j) with i < j per distinct triangle side, sorted.
 using Edges = Eigen::Matrix<std::int32_t, Eigen::Dynamic, 2, Eigen::RowMajor>;
 
+/// How candidate pairs are found.
 enum class BroadPhase : std::uint8_t {
   /// The default: a hierarchy over swept boxes. Never drops a colliding pair.
   swept_bvh,
@@ -48,15 +52,21 @@ enum class BroadPhase : std::uint8_t {
   static_bvh,
 };
 
-const char* to_string(BroadPhase broad_phase) noexcept;
+/// The broad phase's name. Never throws.
+/// \param broad_phase a broad phase.
+/// \return "swept_bvh" or "static_bvh" (a static string).
+EXACTCCD_API const char* to_string(BroadPhase broad_phase) noexcept;
 
+/// Options of Scene::find_contacts and Scene::earliest_contact.
 struct SceneOptions {
-  /// Options of each pair's test (t_max, toi_width, mode), as in vertex_face_ccd.
+  /// Options of each pair's test (t_max, toi_width, mode), as in vertex_face_ccd; invalid ones
+  /// throw std::invalid_argument.
   CcdOptions ccd;
+  /// The broad phase (swept_bvh, the default, never drops a colliding pair).
   BroadPhase broad_phase = BroadPhase::swept_bvh;
   /// Test pairs within each moving mesh (pairs sharing a vertex excluded).
   bool self_collision = true;
-  /// At most this many threads for the narrow phase; 0: TBB's default.
+  /// At most this many threads for the narrow phase; 0: TBB's default. Must be >= 0.
   int max_threads = 0;
   /// Also return the candidate pairs (SceneResult::candidates), e.g. to write them as queries.
   bool record_candidates = false;
@@ -71,89 +81,147 @@ struct SceneOptions {
 /// Pairs are ordered by (type, first_mesh, first_index, second_mesh, second_index), vertex-face
 /// before edge-edge.
 struct ScenePair {
-  QueryType type = QueryType::vertex_face;
-  MeshId first_mesh = 0;
-  std::uint32_t first_index = 0;
-  MeshId second_mesh = 0;
-  std::uint32_t second_index = 0;
+  QueryType type = QueryType::vertex_face;  ///< vertex-face or edge-edge
+  MeshId first_mesh = 0;                    ///< the mesh of the vertex, or of the first edge
+  std::uint32_t first_index = 0;            ///< the vertex, or the first edge (Scene::edges)
+  MeshId second_mesh = 0;                   ///< the mesh of the triangle, or of the second edge
+  std::uint32_t second_index = 0;           ///< the triangle, or the second edge
+
+  /// Equal pairs: every field equal.
 
   friend bool operator==(const ScenePair& a, const ScenePair& b) {
     return a.type == b.type && a.first_mesh == b.first_mesh && a.first_index == b.first_index &&
            a.second_mesh == b.second_mesh && a.second_index == b.second_index;
   }
-  friend bool operator<(const ScenePair& a, const ScenePair& b);
+  /// The pair order: (type, first_mesh, first_index, second_mesh, second_index).
+  friend EXACTCCD_API bool operator<(const ScenePair& a, const ScenePair& b);
 };
 
 /// A colliding pair and its certified TOI interval, exactly as the pair's CCD test returns it.
+/// Default-constructed (no contact): +infinity TOIs (\ref no_contact_toi).
 struct SceneContact {
-  ScenePair pair;
-  double toi_lo = 0.0;
-  double toi_hi = 0.0;
+  ScenePair pair;                  ///< the pair of primitives
+  double toi_lo = kNoContactToi;   ///< the pair's CcdResult::toi_lo
+  double toi_hi = kNoContactToi;   ///< the pair's CcdResult::toi_hi
 };
 
+/// Work counts of one call (for statistics and benchmarks).
 struct SceneStats {
   /// Pairs whose boxes overlap (the narrow phase's input), per type.
   std::uint64_t vertex_face_candidates = 0;
+  /// Edge-edge pairs whose boxes overlap.
   std::uint64_t edge_edge_candidates = 0;
   /// Pairs the narrow phase decided (earliest_contact skips pairs that cannot lower the bound).
   std::uint64_t narrow_phase_tests = 0;
-  /// Hierarchies built from scratch (first use or degradation) and refitted during the call.
+  /// Hierarchies built from scratch (first use or degradation) during the call.
   std::uint32_t hierarchies_built = 0;
+  /// Hierarchies refitted during the call.
   std::uint32_t hierarchies_refitted = 0;
 };
 
+/// The answer of Scene::find_contacts.
 struct SceneResult {
   /// Every colliding pair, in ScenePair order.
   std::vector<SceneContact> contacts;
-  /// The earliest contact: the smallest toi_lo, ties broken by ScenePair order. Meaningful only
-  /// when !contacts.empty().
+  /// The earliest contact: the smallest toi_lo, ties broken by ScenePair order. Without
+  /// contacts, a default SceneContact (+infinity TOIs).
   SceneContact earliest;
   /// Every candidate pair in ScenePair order, when SceneOptions::record_candidates.
   std::vector<ScenePair> candidates;
-  SceneStats stats;
+  SceneStats stats;  ///< work counts of the call
 };
 
+/// The answer of Scene::earliest_contact.
 struct EarliestContact {
+  /// True iff some pair collides (find_contacts would return contacts).
   bool collides = false;
-  /// Exactly SceneResult::earliest of find_contacts with the same options.
+  /// Exactly SceneResult::earliest of find_contacts with the same options (+infinity TOIs
+  /// without contact).
   SceneContact contact;
-  SceneStats stats;
+  SceneStats stats;  ///< work counts of the call
 };
 
-class Scene {
+/// Meshes and their motion over one time step, with the state kept between steps (the
+/// hierarchies). Movable, not copyable.
+class EXACTCCD_API Scene {
  public:
+  /// An empty scene.
   Scene();
+  /// Frees the meshes and hierarchies.
   ~Scene();
+  /// Takes the other scene's meshes; the other is left empty.
   Scene(Scene&&) noexcept;
+  /// Takes the other scene's meshes; the other is left empty.
+  /// \return this scene.
   Scene& operator=(Scene&&) noexcept;
   Scene(const Scene&) = delete;
   Scene& operator=(const Scene&) = delete;
 
   /// A moving mesh, at rest at `positions` until set_motion. Throws std::invalid_argument for
   /// non-finite coordinates, indices out of range, or a triangle repeating a vertex.
+  /// \param positions the vertices, finite.
+  /// \param triangles indices into `positions`, three distinct per row.
+  /// \return the new mesh's id.
+  /// \throws std::invalid_argument as above.
   MeshId add_mesh(const Positions& positions, const Triangles& triangles);
   /// A static mesh: one set of positions for every step.
+  /// \param positions the vertices, finite.
+  /// \param triangles indices into `positions`, three distinct per row.
+  /// \return the new mesh's id.
+  /// \throws std::invalid_argument as add_mesh.
   MeshId add_static_mesh(const Positions& positions, const Triangles& triangles);
   /// The step's motion of a moving mesh: every vertex from start.row(i) to end.row(i). Throws
   /// std::invalid_argument for a static mesh, a wrong row count or non-finite coordinates.
+  /// \param mesh a moving mesh of this scene.
+  /// \param start positions at the start of the step, one row per vertex.
+  /// \param end positions at the end of the step, one row per vertex.
+  /// \throws std::invalid_argument as above, or for an unknown mesh.
   void set_motion(MeshId mesh, const Positions& start, const Positions& end);
 
+  /// \return the number of meshes added.
   std::size_t mesh_count() const;
+  /// Whether `mesh` was added by add_static_mesh. Precondition: mesh < mesh_count().
+  /// \param mesh a mesh of this scene.
+  /// \return true for a static mesh.
   bool is_static(MeshId mesh) const;
+  /// The mesh's triangles. Precondition: mesh < mesh_count().
+  /// \param mesh a mesh of this scene.
+  /// \return the triangles as given.
   const Triangles& triangles(MeshId mesh) const;
+  /// The mesh's edges (the indices of edge-edge pairs). Precondition: mesh < mesh_count().
+  /// \param mesh a mesh of this scene.
+  /// \return the distinct triangle sides, sorted.
   const Edges& edges(MeshId mesh) const;
+  /// The positions at the start of the step. Precondition: mesh < mesh_count().
+  /// \param mesh a mesh of this scene.
+  /// \return one row per vertex.
   const Positions& start_positions(MeshId mesh) const;
-  /// Equal to start_positions for a static mesh.
+  /// The positions at the end of the step; equal to start_positions for a static mesh.
+  /// Precondition: mesh < mesh_count().
+  /// \param mesh a mesh of this scene.
+  /// \return one row per vertex.
   const Positions& end_positions(MeshId mesh) const;
 
-  /// Every colliding pair of the step. Throws std::invalid_argument for bad options.
+  /// Every colliding pair of the step.
+  /// \param options the pairs' test options and the broad phase.
+  /// \return the contacts in pair order, the earliest, the statistics.
+  /// \throws std::invalid_argument for bad options (see CcdOptions, SceneOptions).
   SceneResult find_contacts(const SceneOptions& options = {});
-  /// Only the earliest contact of the step (swept_bvh only; throws std::invalid_argument for
-  /// another broad phase).
+  /// Only the earliest contact of the step; stops work that cannot lower it.
+  /// \param options as find_contacts; the broad phase must be swept_bvh.
+  /// \return exactly find_contacts(options).earliest, and whether there is a contact.
+  /// \throws std::invalid_argument for bad options or another broad phase.
   EarliestContact earliest_contact(const SceneOptions& options = {});
 
   /// The pair's query, rows as in the benchmark (start positions, then end positions).
+  /// Precondition: a vertex-face pair of this scene.
+  /// \param pair a vertex-face pair (e.g. from SceneResult::contacts).
+  /// \return the query its test decides.
   VertexFaceQuery vertex_face_query(const ScenePair& pair) const;
+  /// The pair's query, rows as in the benchmark (start positions, then end positions).
+  /// Precondition: an edge-edge pair of this scene.
+  /// \param pair an edge-edge pair (e.g. from SceneResult::contacts).
+  /// \return the query its test decides.
   EdgeEdgeQuery edge_edge_query(const ScenePair& pair) const;
 
  private:

@@ -1,29 +1,83 @@
-// Public types of exactccd: queries, options and results.
-//
-// Motion model (the benchmark's, Wang et al. 2021): every vertex moves on a straight line,
-// x(t) = (1 - t) x_t0 + t x_t1. A query collides iff the closed primitives (closed triangle,
-// closed segments) share a point at some t in the closed interval [0, t_max].
+/// \file
+/// Public types of exactccd: queries, options and results. The collision semantics they follow
+/// (motion model, closed primitives, closed interval, TOI enclosure, the no-contact convention)
+/// are stated once, on the \ref semantics "main page".
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <limits>
+
+#include "exactccd/export.hpp"
 
 namespace exactccd {
 
-enum class QueryType : std::uint8_t { vertex_face, edge_edge };
-
-const char* to_string(QueryType type) noexcept;
-
-/// Vertex p against triangle (a, b, c); fields named as the benchmark's CSV rows.
-struct VertexFaceQuery {
-  Eigen::Vector3d p_t0, a_t0, b_t0, c_t0;
-  Eigen::Vector3d p_t1, a_t1, b_t1, c_t1;
+/// The two primitive pairs of the benchmark's files (Wang et al. 2021).
+enum class QueryType : std::uint8_t {
+  vertex_face,  ///< a vertex against a triangle
+  edge_edge,    ///< a segment against a segment
 };
 
-/// Edge (ea0, ea1) against edge (eb0, eb1); fields named as the benchmark's CSV rows.
+/// The type's name, as the benchmark's folder names. Never throws.
+/// \param type a query type.
+/// \return "vertex-face" or "edge-edge" (a static string).
+EXACTCCD_API const char* to_string(QueryType type) noexcept;
+
+/// Vertex p against the closed triangle (a, b, c); fields named as the benchmark's CSV rows.
+/// Each vertex moves on a straight line from its `_t0` to its `_t1` position (\ref semantics).
+/// Any finite coordinates; a degenerate triangle (a segment, a point) is the point set it is.
+struct VertexFaceQuery {
+  Eigen::Vector3d p_t0;  ///< the vertex at t = 0
+  Eigen::Vector3d a_t0;  ///< triangle corner a at t = 0
+  Eigen::Vector3d b_t0;  ///< triangle corner b at t = 0
+  Eigen::Vector3d c_t0;  ///< triangle corner c at t = 0
+  Eigen::Vector3d p_t1;  ///< the vertex at t = 1
+  Eigen::Vector3d a_t1;  ///< triangle corner a at t = 1
+  Eigen::Vector3d b_t1;  ///< triangle corner b at t = 1
+  Eigen::Vector3d c_t1;  ///< triangle corner c at t = 1
+};
+
+/// Closed segment [ea0, ea1] against closed segment [eb0, eb1]; fields named as the
+/// benchmark's CSV rows. Any finite coordinates; a zero-length segment is the point it is.
 struct EdgeEdgeQuery {
-  Eigen::Vector3d ea0_t0, ea1_t0, eb0_t0, eb1_t0;
-  Eigen::Vector3d ea0_t1, ea1_t1, eb0_t1, eb1_t1;
+  Eigen::Vector3d ea0_t0;  ///< first endpoint of edge a at t = 0
+  Eigen::Vector3d ea1_t0;  ///< second endpoint of edge a at t = 0
+  Eigen::Vector3d eb0_t0;  ///< first endpoint of edge b at t = 0
+  Eigen::Vector3d eb1_t0;  ///< second endpoint of edge b at t = 0
+  Eigen::Vector3d ea0_t1;  ///< first endpoint of edge a at t = 1
+  Eigen::Vector3d ea1_t1;  ///< second endpoint of edge a at t = 1
+  Eigen::Vector3d eb0_t1;  ///< first endpoint of edge b at t = 1
+  Eigen::Vector3d eb1_t1;  ///< second endpoint of edge b at t = 1
+};
+
+/// Point p against the closed segment [e0, e1] in 3D (point_edge_ccd). Any finite
+/// coordinates; a zero-length segment is the point it is.
+struct PointEdgeQuery {
+  Eigen::Vector3d p_t0;   ///< the point at t = 0
+  Eigen::Vector3d e0_t0;  ///< first endpoint of the segment at t = 0
+  Eigen::Vector3d e1_t0;  ///< second endpoint of the segment at t = 0
+  Eigen::Vector3d p_t1;   ///< the point at t = 1
+  Eigen::Vector3d e0_t1;  ///< first endpoint of the segment at t = 1
+  Eigen::Vector3d e1_t1;  ///< second endpoint of the segment at t = 1
+};
+
+/// Point p against point q in 3D (point_point_ccd). Any finite coordinates.
+struct PointPointQuery {
+  Eigen::Vector3d p_t0;  ///< point p at t = 0
+  Eigen::Vector3d q_t0;  ///< point q at t = 0
+  Eigen::Vector3d p_t1;  ///< point p at t = 1
+  Eigen::Vector3d q_t1;  ///< point q at t = 1
+};
+
+/// Point p against the closed segment [e0, e1] in the plane (point_edge_ccd_2d). Any finite
+/// coordinates; a zero-length segment is the point it is.
+struct PointEdgeQuery2d {
+  Eigen::Vector2d p_t0;   ///< the point at t = 0
+  Eigen::Vector2d e0_t0;  ///< first endpoint of the segment at t = 0
+  Eigen::Vector2d e1_t0;  ///< second endpoint of the segment at t = 0
+  Eigen::Vector2d p_t1;   ///< the point at t = 1
+  Eigen::Vector2d e0_t1;  ///< first endpoint of the segment at t = 1
+  Eigen::Vector2d e1_t1;  ///< second endpoint of the segment at t = 1
 };
 
 /// Which path decides a query.
@@ -39,7 +93,10 @@ enum class Mode : std::uint8_t {
   exact,
 };
 
-const char* to_string(Mode mode) noexcept;
+/// The mode's name, as the command's --mode option spells it. Never throws.
+/// \param mode a mode.
+/// \return "default", "float_only" or "exact" (a static string).
+EXACTCCD_API const char* to_string(Mode mode) noexcept;
 
 /// The stage that decided a query (for statistics and tests).
 enum class Stage : std::uint8_t {
@@ -52,8 +109,17 @@ enum class Stage : std::uint8_t {
   float_only,        ///< the uncertified double-precision test (Mode::float_only)
 };
 
-const char* to_string(Stage stage) noexcept;
+/// The stage's name. Never throws.
+/// \param stage a stage.
+/// \return its enumerator's name, e.g. "filter_exact_toi" (a static string).
+EXACTCCD_API const char* to_string(Stage stage) noexcept;
 
+/// The time of impact of a query without contact: +infinity, so that the minimum of toi_lo over
+/// many pairs needs no check of `collides` (\ref no_contact_toi "convention").
+inline constexpr double kNoContactToi = std::numeric_limits<double>::infinity();
+
+/// Options of one query's test. Every CCD function throws std::invalid_argument when they lie
+/// outside their domain.
 struct CcdOptions {
   /// End of the time interval [0, t_max]; must lie in (0, 1].
   double t_max = 1.0;
@@ -61,16 +127,21 @@ struct CcdOptions {
   /// doubles around the exact first contact time t*: toi_lo == toi_hi == t* when t* is a
   /// double, otherwise the two consecutive doubles that enclose t*. Must be >= 0 and finite.
   double toi_width = 0.0;
+  /// The path that decides (Mode::filtered, the certified default, unless comparing methods).
   Mode mode = Mode::filtered;
 };
 
+/// The answer to one query (\ref semantics).
 struct CcdResult {
   /// True iff the closed primitives meet at some t in [0, t_max].
   bool collides = false;
-  /// When collides: toi_lo <= t* <= toi_hi, t* the exact earliest contact time.
-  /// toi_lo is the conservative time a simulator advances to. Both are 0 when !collides.
-  double toi_lo = 0.0;
-  double toi_hi = 0.0;
+  /// When collides: 0 <= toi_lo <= t* <= toi_hi, t* the exact earliest contact time.
+  /// toi_lo is the conservative time a simulator advances to.
+  /// When !collides: +infinity (kNoContactToi).
+  double toi_lo = kNoContactToi;
+  /// Upper end of the TOI enclosure (see toi_lo); +infinity when !collides.
+  double toi_hi = kNoContactToi;
+  /// The stage that decided (statistics only: the answer does not depend on it).
   Stage decided_by = Stage::exact;
 };
 

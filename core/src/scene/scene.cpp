@@ -329,7 +329,7 @@ struct Scene::Impl {
       tbb::parallel_sort(candidates.begin(), candidates.end());
       result.candidates = std::move(candidates);
     }
-    if (!result.contacts.empty()) result.earliest = earliest_of(result.contacts);
+    result.earliest = earliest_of(result.contacts);
     return result;
   }
 
@@ -339,12 +339,13 @@ struct Scene::Impl {
                                           : stats.edge_edge_candidates);
   }
 
-  /// Smallest toi_lo, ties broken by pair order; `contacts` sorted by pair.
+  /// Smallest toi_lo, ties broken by pair order (`contacts` sorted by pair). A contact's toi_lo
+  /// is finite, so starting from the no-contact +infinity needs no special case for none.
   static SceneContact earliest_of(const std::vector<SceneContact>& contacts) {
-    const SceneContact* best = &contacts.front();
+    SceneContact best;
     for (const SceneContact& c : contacts)
-      if (c.toi_lo < best->toi_lo) best = &c;
-    return *best;
+      if (c.toi_lo < best.toi_lo) best = c;
+    return best;
   }
 
   EarliestContact earliest_contact(const SceneOptions& o);
