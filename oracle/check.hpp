@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "exactccd/query_file.hpp"
 #include "exactccd/types.hpp"
 #include "oracle/check_report.hpp"
 
@@ -31,5 +32,14 @@ using CheckVisitor =
 /// refuses (a t_max outside (0, 1]).
 CheckTally check_file(const std::string& path, std::optional<QueryType> type,
                       const CheckSettings& settings, const CheckVisitor& on_query = {});
+
+/// The same on queries [begin, end) of a file already read (`end` clipped to its query count;
+/// indices are the file's): one shard of it, e.g. a task of a distributed check. Tallies of
+/// shards add up (CheckTally::add) to the file's.
+CheckTally check_queries(const QueryFile& input, std::size_t begin, std::size_t end,
+                         const CheckSettings& settings, const CheckVisitor& on_query = {});
+
+/// Counts one decided query into `tally`: a collision, a disagreement with `truth`, its stage.
+void count_query(CheckTally& tally, const CcdResult& result, bool truth);
 
 }  // namespace exactccd::oracle
