@@ -138,7 +138,7 @@ struct BracketSet {
 /// seeded random queries (short motions, and uniform in the box), for both query types.
 const BracketSet& random_cubic_brackets() {
   static const BracketSet set = [] {
-    using namespace exactccd::test;
+    using namespace exactccd::random_queries;
     BracketSet out;
     std::mt19937_64 rng(20240617);
     std::uniform_real_distribution<double> offset(0.1e-6, 1e-6);

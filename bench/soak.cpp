@@ -32,7 +32,7 @@
 namespace {
 
 using namespace exactccd;
-using namespace exactccd::test;
+using namespace exactccd::random_queries;
 
 constexpr std::size_t kGenerators = kGeneratorCount;
 constexpr std::size_t kMaxReported = 10;

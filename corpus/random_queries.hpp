@@ -41,7 +41,7 @@
 #include "exactccd/ccd.hpp"
 #include "exactccd/rational_query.hpp"
 
-namespace exactccd::test {
+namespace exactccd::random_queries {
 
 // ---------------------------------------------------------------------------------------------
 // Queries
@@ -1625,4 +1625,4 @@ inline Disagreement partial_interval_coarse_check(const DoubleQuery& q, std::mt1
   return out;
 }
 
-}  // namespace exactccd::test
+}  // namespace exactccd::random_queries

@@ -1,11 +1,9 @@
 #include "oracle/check.hpp"
 
 #include <algorithm>
-
 #include <chrono>
 
 #include "exactccd/ccd.hpp"
-#include "exactccd/query_file.hpp"
 #include "oracle/exact_doubles.hpp"
 #include "oracle/names.hpp"
 
@@ -40,20 +38,33 @@ CcdResult decide(const QueryFile& file, const QueryRecord& record, const CcdOpti
 
 CheckTally check_file(const std::string& path, std::optional<QueryType> type,
                       const CheckSettings& settings, const CheckVisitor& on_query) {
+  const QueryFile input = read_query_file(path, resolve_query_type(path, type));
+  return check_queries(input, 0, input.queries.size(), settings, on_query);
+}
+
+CheckTally check_queries(const QueryFile& input, std::size_t begin, std::size_t end,
+                         const CheckSettings& settings, const CheckVisitor& on_query) {
   CcdOptions ccd_options;
   ccd_options.t_max = settings.t_max;
   ccd_options.mode = settings.mode;
-  const QueryFile input = read_query_file(path, resolve_query_type(path, type));
   CheckTally tally;
   tally.file = input.path;
-  const std::size_t last = std::min(settings.last, input.queries.size());
-  for (std::size_t i = settings.first; i < last; ++i) {
+  const std::size_t stop = std::min(end, input.queries.size());
+  for (std::size_t i = begin; i < stop; ++i) {
     const QueryRecord& record = input.queries[i];
     const CcdResult result = decide(input, record, ccd_options, &tally.seconds);
-    tally.count(result, record.truth);
+    count_query(tally, result, record.truth);
     if (on_query) on_query(i, input.queries.size(), result);
   }
   return tally;
+}
+
+void count_query(CheckTally& tally, const CcdResult& result, bool truth) {
+  ++tally.queries;
+  tally.collisions += result.collides;
+  tally.false_positives += result.collides && !truth;
+  tally.false_negatives += !result.collides && truth;
+  tally.count_stage(result.decided_by);
 }
 
 }  // namespace exactccd::oracle

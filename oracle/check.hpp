@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "exactccd/query_file.hpp"
 #include "exactccd/types.hpp"
 #include "oracle/check_report.hpp"
 
@@ -16,10 +17,6 @@ namespace exactccd::oracle {
 struct CheckSettings {
   double t_max = 1.0;          ///< in (0, 1]
   Mode mode = Mode::filtered;  ///< the path that decides every query
-  /// Only the queries [first, last) of the file (clipped to its count): a shard of a file for
-  /// a distributed run (exactccd.dask); the whole file by default.
-  std::size_t first = 0;
-  std::size_t last = static_cast<std::size_t>(-1);
 };
 
 /// Called after each query of the file: its 0-based index, the file's query count, the result.
@@ -35,5 +32,14 @@ using CheckVisitor =
 /// refuses (a t_max outside (0, 1]).
 CheckTally check_file(const std::string& path, std::optional<QueryType> type,
                       const CheckSettings& settings, const CheckVisitor& on_query = {});
+
+/// The same on queries [begin, end) of a file already read (`end` clipped to its query count;
+/// indices are the file's): one shard of it, e.g. a task of a distributed check. Tallies of
+/// shards add up (CheckTally::add) to the file's.
+CheckTally check_queries(const QueryFile& input, std::size_t begin, std::size_t end,
+                         const CheckSettings& settings, const CheckVisitor& on_query = {});
+
+/// Counts one decided query into `tally`: a collision, a disagreement with `truth`, its stage.
+void count_query(CheckTally& tally, const CcdResult& result, bool truth);
 
 }  // namespace exactccd::oracle

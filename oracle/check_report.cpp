@@ -8,14 +8,6 @@
 
 namespace exactccd::oracle {
 
-void CheckTally::count(const CcdResult& result, bool truth) {
-  ++queries;
-  collisions += result.collides;
-  false_positives += result.collides && !truth;
-  false_negatives += !result.collides && truth;
-  count_stage(result.decided_by);
-}
-
 void CheckTally::count_stage(Stage stage) {
   const auto k = static_cast<std::size_t>(stage);
   if (stage_counts.size() <= k) stage_counts.resize(k + 1, 0);

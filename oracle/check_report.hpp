@@ -22,8 +22,6 @@ struct CheckTally {
   std::vector<std::size_t> stage_counts;
 
   std::size_t disagreements() const { return false_positives + false_negatives; }
-  /// Counts one decided query against its truth value (time not included).
-  void count(const CcdResult& result, bool truth);
   void count_stage(Stage stage);
   std::size_t stage_count(Stage stage) const;
   void add(const CheckTally& other);

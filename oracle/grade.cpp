@@ -10,12 +10,8 @@
 
 namespace exactccd::oracle {
 
-namespace {
-
-// Whether a reported toi (an exact rational in [0, t_max]) is later than the exact first
-// contact time t* of `query`; `exact` is exact_ccd(query) with toi_width 0 and a contact, so
-// lo = toi_lo <= t* <= hi = toi_hi with lo == hi == t* when t* is a double, and otherwise
-// consecutive doubles lo < t* < hi.
+// `exact` is exact_ccd(query) with toi_width 0 and a contact, so lo = toi_lo <= t* <= hi =
+// toi_hi with lo == hi == t* when t* is a double, and otherwise consecutive doubles lo < t* < hi.
 bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
                               const CcdResult& exact) {
   if (toi <= mpq_class(exact.toi_lo)) return false;  // toi <= lo <= t*
@@ -38,11 +34,9 @@ bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
   return restricted.collides && restricted.toi_lo < 1.0;
 }
 
-}  // namespace
-
 GradeFindings grade_file(const std::string& queries_path, const std::string& answers_path,
                          std::optional<QueryType> type, double t_max,
-                         const GradeProgress& progress, std::size_t first, std::size_t last) {
+                         const GradeProgress& progress) {
   // Before the type: a folder given as the queries is named as such, not as an untyped file.
   require_regular_file(queries_path, "a CSV file (--queries takes one file)");
   const QueryFile input = read_query_file(queries_path, resolve_query_type(queries_path, type));
@@ -52,17 +46,22 @@ GradeFindings grade_file(const std::string& queries_path, const std::string& ans
   const std::vector<Answer> answers =
       read_answers_file(answers_path, input.queries.size(), queries_path, t_max);
 
+  return grade_answers(input, answers, t_max, 0, input.queries.size(), progress);
+}
+
+GradeFindings grade_answers(const QueryFile& input, const std::vector<Answer>& answers,
+                            double t_max, std::size_t begin, std::size_t end,
+                            const GradeProgress& progress) {
   CcdOptions ccd_options;
   ccd_options.t_max = t_max;
   ccd_options.toi_width = 0.0;  // the tightest doubles around t*, which the toi test needs
   GradeFindings findings;
-  last = std::min(last, input.queries.size());
-  first = std::min(first, last);
-  findings.queries = last - first;
-  for (std::size_t i = first; i < last; ++i) {
+  const std::size_t stop = std::min({end, input.queries.size(), answers.size()});
+  for (std::size_t i = begin; i < stop; ++i) {
     const Answer& answer = answers[i];
     const RationalQuery& query = input.queries[i].query;
     const CcdResult exact = exact_ccd(query, ccd_options);
+    ++findings.queries;
     findings.tois_given += answer.toi.has_value();
     if (answer.collides && !exact.collides) findings.false_positives.push_back(i);
     if (!answer.collides && exact.collides) findings.false_negatives.push_back(i);

@@ -1,14 +1,17 @@
 // What `exactccd grade` computes: another CCD code's answers to one benchmark CSV file judged
-// against the exact decision. The findings and their text / JSON forms are in grade_report.hpp
-// (included); the answers file's format in answers_file.hpp.
+// against the exact decision. The findings and their text / JSON forms are in grade_report.hpp,
+// the answers file's format and reader in answers_file.hpp (both included).
 #pragma once
 
 #include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "exactccd/query_file.hpp"
 #include "exactccd/types.hpp"
+#include "oracle/answers_file.hpp"
 #include "oracle/grade_report.hpp"
 
 namespace exactccd::oracle {
@@ -21,11 +24,20 @@ using GradeProgress = std::function<void(std::size_t done, std::size_t count)>;
 /// negatives, and TOIs later than the exact first contact time. Throws InputError for a
 /// queries path that is not a regular file, an unreadable or malformed file, a file without
 /// queries, an unknown type, or an answers file that does not match (answers_file.hpp).
-/// `first` and `last` restrict the grading to the queries [first, last) (clipped to the file's
-/// count; findings keep whole-file indices): a shard for a distributed run (exactccd.dask).
 GradeFindings grade_file(const std::string& queries_path, const std::string& answers_path,
                          std::optional<QueryType> type, double t_max,
-                         const GradeProgress& progress = {}, std::size_t first = 0,
-                         std::size_t last = static_cast<std::size_t>(-1));
+                         const GradeProgress& progress = {});
+
+/// The same on answers [begin, end) of files already read (`end` clipped to the query count;
+/// indices are the file's): one shard of it, e.g. a task of a distributed grade. `answers` as
+/// read_answers_file gives them for `input` over [0, t_max].
+GradeFindings grade_answers(const QueryFile& input, const std::vector<Answer>& answers,
+                            double t_max, std::size_t begin, std::size_t end,
+                            const GradeProgress& progress = {});
+
+/// Whether a reported `toi` (an exact rational in [0, t_max]) is later than the exact first
+/// contact time t* of `query`, exactly; `exact` is exact_ccd(query) with toi_width 0, a contact.
+bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
+                              const CcdResult& exact);
 
 }  // namespace exactccd::oracle

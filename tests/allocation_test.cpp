@@ -98,6 +98,9 @@ void operator delete(void* p, std::align_val_t, const std::nothrow_t&) noexcept 
 void operator delete[](void* p, std::align_val_t, const std::nothrow_t&) noexcept { std::free(p); }
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 constexpr std::uint64_t kDefaultSeed = 0xa110c;

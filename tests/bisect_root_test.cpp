@@ -25,6 +25,9 @@
 #include "exact/root_isolation.hpp"
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 using exact::IntegerQuery;

@@ -30,6 +30,9 @@
 #include "tests/test_scale.hpp"
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 using exact::IntegerQuery;

@@ -20,6 +20,9 @@
 #include "test_support.hpp"
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 using exact::FixedInt;

@@ -29,6 +29,9 @@
 #include "tests/test_scale.hpp"
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 constexpr std::uint64_t kDefaultSeed = 0xe47e3e3a9ULL;
@@ -61,7 +64,7 @@ struct Truth {
 
   std::string describe() const {
     std::string s;
-    if (original) s += "\n rescaled from:" + test::describe(*original);
+    if (original) s += "\n rescaled from:" + random_queries::describe(*original);
     if (built)
       s += "\n built answer: " +
            (built->collides ? "collides at t* = " + built->toi.get_str() : std::string("none"));

@@ -108,6 +108,9 @@ void reset() {
 }  // namespace bit_recording
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 using bit_recording::Recording;

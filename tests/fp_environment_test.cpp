@@ -29,6 +29,9 @@
 #if defined(__x86_64__)
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 using predicates::raw_fp_control;

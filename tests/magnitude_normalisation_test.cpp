@@ -23,6 +23,9 @@
 #include "tests/test_support.hpp"
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 /// Every coordinate +-other, except one of the first point (tested first) which is `value`.

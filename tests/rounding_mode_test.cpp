@@ -33,6 +33,9 @@
 #include "tests/test_scale.hpp"
 
 namespace exactccd::test {
+
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 namespace {
 
 constexpr std::uint64_t kDefaultSeed = 0xf0e5;

@@ -12,6 +12,8 @@
 
 namespace exactccd::test {
 
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 /// Every sample query, read once per program; throws if a coordinate is not exactly a double.
 inline const std::vector<DoubleQuery>& sample_double_queries() {
   static const std::vector<DoubleQuery> all = [] {

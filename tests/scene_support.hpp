@@ -29,6 +29,8 @@
 
 namespace exactccd::test {
 
+using namespace exactccd::random_queries;  // corpus/random_queries.hpp
+
 // ---------------------------------------------------------------------------------------------
 // Scene descriptions and printing
 

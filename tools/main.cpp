@@ -9,7 +9,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <tuple>
 #include <vector>
 
@@ -47,11 +49,22 @@ constexpr const char* kModeHelp =
     "always exact), float_only (uncertified double-precision cubic test, for comparison), "
     "exact (the exact rational procedure only)";
 
+// The study program: beside this one when installed together, else where the build put it
+// (EXACTCCD_STUDY_PROGRAM, empty when this build has no study).
+std::string study_program() {
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    const std::filesystem::path sibling = self.parent_path() / "exactccd_study";
+    if (std::filesystem::is_regular_file(sibling, error)) return sibling.string();
+  }
+  return EXACTCCD_STUDY_PROGRAM;
+}
+
 // `exactccd study ARGS` runs `exactccd_study ARGS`: the study is a program of the benchmarks
-// (bench/study), run from where the build put it (EXACTCCD_STUDY_PROGRAM, empty when this
-// build has no study). Returns only when it cannot be run.
+// (bench/study). Returns only when it cannot be run.
 int forward_to_study(int argc, char** argv) {
-  const std::string program = EXACTCCD_STUDY_PROGRAM;
+  const std::string program = study_program();
   if (program.empty()) {
     report_error("study: the study program exactccd_study is not part of this build (configure "
                  "with -DEXACTCCD_BUILD_BENCH=ON or -DEXACTCCD_BUILD_TESTS=ON)");

@@ -12,6 +12,7 @@
 #include "bindings.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
+#include "oracle/answers_file.hpp"
 #include "oracle/check.hpp"
 #include "oracle/common.hpp"
 #include "oracle/exact_doubles.hpp"
@@ -87,7 +88,7 @@ std::optional<QueryType> forced_type(const std::optional<std::string>& type) {
 // ---- check ------------------------------------------------------------------------------------
 
 // Queries [begin, end) of one file (end clipped to the file's count), decided as the command
-// decides them (oracle::check_file).
+// decides them (oracle::check_queries).
 py::dict check_file_shard(const std::string& path, const std::optional<std::string>& type,
                           std::size_t begin, std::optional<std::size_t> end,
                           const std::string& mode, double t_max) {
@@ -95,13 +96,12 @@ py::dict check_file_shard(const std::string& path, const std::optional<std::stri
   oracle::CheckSettings settings;
   settings.t_max = t_max;
   settings.mode = parse_mode(mode);
-  settings.first = begin;
-  if (end) settings.last = *end;
-  const std::optional<QueryType> forced = forced_type(type);
+  const QueryType query_type = oracle::resolve_query_type(path, forced_type(type));
   CheckTally tally;
   {
     py::gil_scoped_release release;
-    tally = oracle::check_file(path, forced, settings);
+    const QueryFile input = read_query_file(path, query_type);
+    tally = oracle::check_queries(input, begin, end.value_or(input.queries.size()), settings);
   }
   return to_dict(tally);
 }
@@ -137,7 +137,7 @@ py::dict check_array_shard(const std::string& name, const std::string& type,
       }
       tally.seconds +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      tally.count(result, flags.data()[i]);
+      oracle::count_query(tally, result, flags.data()[i]);
     }
   }
   return to_dict(tally);
@@ -152,17 +152,22 @@ std::vector<CheckTally> tallies_of(const py::list& files) {
 // ---- grade ------------------------------------------------------------------------------------
 
 // Answers [begin, end) of one (queries, answers) pair of files, graded as the command grades
-// them (oracle::grade_file); indices in the whole file.
+// them (oracle::grade_answers); indices in the whole file.
 py::dict grade_file_shard(const std::string& queries_path, const std::string& answers_path,
                           const std::optional<std::string>& type, std::size_t begin,
                           std::optional<std::size_t> end, double t_max) {
   validate_t_max(t_max);
-  const std::optional<QueryType> forced = forced_type(type);
+  const QueryType query_type = oracle::resolve_query_type(queries_path, forced_type(type));
   GradeFindings findings;
   {
     py::gil_scoped_release release;
-    findings = oracle::grade_file(queries_path, answers_path, forced, t_max, {}, begin,
-                                  end.value_or(static_cast<std::size_t>(-1)));
+    require_regular_file(queries_path, "a CSV file (grade takes one file per answers file)");
+    const QueryFile input = read_query_file(queries_path, query_type);
+    if (input.queries.empty()) throw InputError(input.path, 0, "no queries in the file");
+    const std::vector<oracle::Answer> answers =
+        oracle::read_answers_file(answers_path, input.queries.size(), queries_path, t_max);
+    findings = oracle::grade_answers(input, answers, t_max, begin,
+                                     end.value_or(input.queries.size()));
   }
   return to_dict(findings);
 }

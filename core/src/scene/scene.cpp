@@ -16,6 +16,7 @@
 #include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 
+#include "core/src/ccd_options_check.hpp"
 #include "core/src/scene/bvh.hpp"
 #include "core/src/scene/time_window.hpp"
 #include "exactccd/ccd.hpp"
@@ -105,10 +106,7 @@ void check_triangles(const Triangles& triangles, Eigen::Index vertex_count) {
 }
 
 void check_options(const SceneOptions& o) {
-  if (!(o.ccd.t_max > 0.0 && o.ccd.t_max <= 1.0))
-    throw std::invalid_argument("exactccd: t_max must lie in (0, 1]");
-  if (!(o.ccd.toi_width >= 0.0) || !std::isfinite(o.ccd.toi_width))
-    throw std::invalid_argument("exactccd: toi_width must be finite and >= 0");
+  check_ccd_options(o.ccd);
   if (o.max_threads < 0) throw std::invalid_argument("exactccd: max_threads must be >= 0");
 }
 
