@@ -87,8 +87,57 @@ nlohmann::ordered_json counts_json(const CheckTally& t, const std::vector<Stage>
 
 }  // namespace
 
-void print_check_table(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
-                       const CheckTally& total) {
+namespace {
+
+/// A short header for a stage's share column in the compact table.
+const char* short_name(Stage s) {
+  switch (s) {
+    case Stage::culling: return "cull";
+    case Stage::filter: return "filter";
+    case Stage::filter_exact_toi: return "f+xtoi";
+    case Stage::exact_at_double: return "ex@dbl";
+    case Stage::exact: return "exact";
+    case Stage::float_only: return "float";
+  }
+  return "?";
+}
+
+/// The names shown in the compact table: below the files' common folder (when there are
+/// several), the type folders as vf/ and ee/, and at most `width` characters (cut in the
+/// middle, marked by "...").
+std::vector<std::string> short_file_names(const std::vector<CheckTally>& files,
+                                          const CheckTally& total, std::size_t width) {
+  std::size_t common = 0;
+  if (files.size() >= 2) {
+    const std::string& first = files.front().file;
+    std::size_t n = first.size();
+    for (const CheckTally& f : files) {
+      std::size_t k = 0;
+      while (k < n && k < f.file.size() && first[k] == f.file[k]) ++k;
+      n = k;
+    }
+    const std::size_t slash = first.rfind('/', n == 0 ? 0 : n - 1);
+    common = (n == 0 || slash == std::string::npos) ? 0 : slash + 1;
+  }
+  std::vector<std::string> names;
+  for (const CheckTally& f : files) {
+    std::string name = f.file.substr(common);
+    for (const auto& [folder, code] : {std::pair<std::string, std::string>{"vertex-face/", "vf/"},
+                                       {"edge-edge/", "ee/"}})
+      for (std::size_t at; (at = name.find(folder)) != std::string::npos;)
+        name.replace(at, folder.size(), code);
+    if (name.size() > width && width > 3) {  // keep both ends: the family and the file
+      const std::size_t head = (width - 3) / 2, tail = width - 3 - head;
+      name = name.substr(0, head) + "..." + name.substr(name.size() - tail);
+    }
+    names.push_back(std::move(name));
+  }
+  names.push_back(total.file);
+  return names;
+}
+
+void print_full_table(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
+                      const CheckTally& total) {
   const std::vector<Stage> stages = reported_stages(mode, total);
   out << "mode: " << to_string(mode)
       << "  (last columns: share of queries decided by each stage)\n";
@@ -105,6 +154,81 @@ void print_check_table(std::ostream& out, Mode mode, const std::vector<CheckTall
   out << '\n';
   for (const CheckTally& f : files) print_row(out, width, f, stages);
   print_row(out, width, total, stages);
+}
+
+}  // namespace
+
+void print_check_table(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
+                       const CheckTally& total, int max_width) {
+  if (max_width <= 0) {
+    print_full_table(out, mode, files, total);
+    return;
+  }
+  const std::vector<Stage> stages = reported_stages(mode, total);
+  // Columns after the name: queries 8, collisions 7, false_pos 5, false_neg 5, us/query 9, each
+  // stage 7 (" 100.0%"); the name takes what is left (at least 12).
+  const int fixed = 8 + 7 + 5 + 5 + 9 + 7 * static_cast<int>(stages.size());
+  const int name_width = std::max(12, max_width - fixed);
+  const std::vector<std::string> names =
+      short_file_names(files, total, static_cast<std::size_t>(name_width));
+  int width = 4;  // "file"
+  for (const std::string& n : names) width = std::max(width, static_cast<int>(n.size()));
+  out << "mode: " << to_string(mode) << "  (stage shares; --format wide: every column)\n";
+  char cell[512];
+  std::snprintf(cell, sizeof cell, "%-*s %7s %6s %4s %4s %8s", width, "file", "queries",
+                "coll", "FP", "FN", "us/query");
+  out << cell;
+  for (const Stage s : stages) {
+    std::snprintf(cell, sizeof cell, " %6s", short_name(s));
+    out << cell;
+  }
+  out << '\n';
+  for (std::size_t i = 0; i <= files.size(); ++i) {
+    const CheckTally& t = i < files.size() ? files[i] : total;
+    char mean[32] = "-";
+    if (t.queries > 0) std::snprintf(mean, sizeof mean, "%.1f", 1e6 * t.seconds / t.queries);
+    std::snprintf(cell, sizeof cell, "%-*s %7zu %6zu %4zu %4zu %8s", width, names[i].c_str(),
+                  t.queries, t.collisions, t.false_positives, t.false_negatives, mean);
+    out << cell;
+    for (const Stage s : stages) {
+      std::snprintf(cell, sizeof cell, " %5.1f%%", 100.0 * share(t, s));
+      out << cell;
+    }
+    out << '\n';
+  }
+}
+
+void print_check_csv(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
+                     const CheckTally& total) {
+  const std::vector<Stage> stages = reported_stages(mode, total);
+  out << "file,queries,collisions,agree,disagree,false_positives,false_negatives,us_per_query";
+  for (const Stage s : stages) out << ",share_" << to_string(s);
+  out << '\n';
+  auto quoted = [](const std::string& text) {
+    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+    std::string q = "\"";
+    for (const char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + '"';
+  };
+  for (std::size_t i = 0; i <= files.size(); ++i) {
+    const CheckTally& t = i < files.size() ? files[i] : total;
+    char numbers[256];
+    std::snprintf(numbers, sizeof numbers, ",%zu,%zu,%zu,%zu,%zu,%zu,", t.queries, t.collisions,
+                  t.queries - t.disagreements(), t.disagreements(), t.false_positives,
+                  t.false_negatives);
+    out << quoted(t.file) << numbers;
+    if (t.queries > 0) {
+      char mean[32];
+      std::snprintf(mean, sizeof mean, "%.3f", 1e6 * t.seconds / t.queries);
+      out << mean;
+    }
+    for (const Stage s : stages) {
+      char v[32];
+      std::snprintf(v, sizeof v, ",%.6f", share(t, s));
+      out << v;
+    }
+    out << '\n';
+  }
 }
 
 void print_check_json(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,

@@ -30,8 +30,20 @@ struct CheckTally {
 /// The stages shown: those `mode` can use, and any other that decided some query.
 std::vector<Stage> reported_stages(Mode mode, const CheckTally& total);
 
+/// The width of `exactccd check`'s default table: it fits a 100-column terminal.
+inline constexpr int kCheckTableWidth = 100;
+
+/// The table: one row per file and TOTAL. Within `max_width` columns (file names shortened to
+/// their part below the files' common folder, vertex-face/ and edge-edge/ as vf/ and ee/, then
+/// cut in the middle; the counts and the stage shares kept, stage names abbreviated), or every
+/// column in full when max_width is 0.
 void print_check_table(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
-                       const CheckTally& total);
+                       const CheckTally& total, int max_width = kCheckTableWidth);
+
+/// The same rows as CSV (RFC 4180 quoting of file names): file, queries, collisions, agree,
+/// disagree, false_positives, false_negatives, us_per_query, then one share per stage shown.
+void print_check_csv(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
+                     const CheckTally& total);
 
 void print_check_json(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
                       const CheckTally& total, double t_max);

@@ -217,7 +217,7 @@ TEST_F(CliTest, CheckOneSampleFilePrintsTruthTotals) {
   ASSERT_GT(collide, 0u);
   ASSERT_LT(collide, truth.size());  // both outcomes present
 
-  const RunResult r = run({"check", kSampleFile.string()});
+  const RunResult r = run({"check", "--format", "wide", kSampleFile.string()});
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");  // in particular no progress: stderr is not a terminal here
   std::size_t total_rows = 0;
@@ -398,13 +398,62 @@ TEST_F(CliTest, CheckEachModeOnOneSampleFile) {
 }
 
 TEST_F(CliTest, CheckTableNamesModeAndStageColumns) {
-  const RunResult r = run({"check", "--mode", "exact", kSampleFile.string()});
-  EXPECT_EQ(r.status, 0) << r.err;
-  const std::vector<std::string> lines = lines_of(r.out);
-  ASSERT_GE(lines.size(), 3u) << r.out;
-  EXPECT_EQ(lines[0].rfind("mode: exact", 0), 0u) << r.out;
-  EXPECT_NE(lines[1].find(" exact"), std::string::npos) << r.out;  // the stage column
-  EXPECT_NE(lines.back().find("100.00%"), std::string::npos) << r.out;  // all by the exact stage
+  for (const char* format : {"table", "wide"}) {
+    SCOPED_TRACE(format);
+    const RunResult r = run({"check", "--format", format, "--mode", "exact", kSampleFile.string()});
+    EXPECT_EQ(r.status, 0) << r.err;
+    const std::vector<std::string> lines = lines_of(r.out);
+    ASSERT_GE(lines.size(), 3u) << r.out;
+    EXPECT_EQ(lines[0].rfind("mode: exact", 0), 0u) << r.out;
+    EXPECT_NE(lines[1].find(" exact"), std::string::npos) << r.out;  // the stage column
+    EXPECT_NE(lines.back().find(std::string(format) == "wide" ? "100.00%" : "100.0%"),
+              std::string::npos)
+        << r.out;  // all by the exact stage
+  }
+}
+
+// The default table fits a 100-column terminal however long the paths (the shipped sample's
+// 26 files in 13 folders), keeps every file's counts (TOTAL equal to the wide table's), and
+// tells the type folders apart; --format csv gives the wide table's numbers, one row per file
+// and TOTAL, parseable; --json is --format json.
+TEST_F(CliTest, CheckFormatsTableWithin100ColumnsCsvAndJson) {
+  const std::string sample = kSampleFile.parent_path().parent_path().parent_path().string();
+  const RunResult table = run({"check", sample});
+  ASSERT_EQ(table.status, 0) << table.err;
+  const std::vector<std::string> rows = lines_of(table.out);
+  std::size_t vf = 0, ee = 0;
+  for (const std::string& row : rows) {
+    EXPECT_LE(row.size(), 100u) << row;
+    vf += row.find("/vf/") != std::string::npos || row.rfind("vf/", 0) == 0;
+    ee += row.find("/ee/") != std::string::npos || row.rfind("ee/", 0) == 0;
+  }
+  EXPECT_GT(vf, 0u) << table.out;
+  EXPECT_GT(ee, 0u) << table.out;
+
+  const RunResult csv = run({"check", "--format", "csv", sample});
+  ASSERT_EQ(csv.status, 0) << csv.err;
+  const std::vector<std::string> lines = lines_of(csv.out);
+  ASSERT_GE(lines.size(), 3u);
+  EXPECT_EQ(lines[0].rfind("file,queries,collisions,agree,disagree,false_positives,"
+                           "false_negatives,us_per_query,share_",
+                           0),
+            0u)
+      << lines[0];
+  EXPECT_EQ(lines.size(), rows.size() - 1) << "one CSV row per table row, header included";
+  const std::string& total = lines.back();
+  EXPECT_EQ(total.rfind("TOTAL,", 0), 0u) << total;
+  std::istringstream fields(total.substr(6));
+  std::size_t queries = 0, collisions = 0;
+  char comma = 0;
+  ASSERT_TRUE(fields >> queries >> comma >> collisions) << total;
+
+  const RunResult json = run({"check", "--json", sample});
+  const RunResult json_format = run({"check", "--format", "json", sample});
+  const nlohmann::json a = parse_json(json), b = parse_json(json_format);
+  EXPECT_EQ(a.value("queries", 0u), queries);
+  EXPECT_EQ(a.value("collisions", 0u), collisions);
+  EXPECT_EQ(b.value("queries", 0u), queries);
+  expect_bad_input(run({"check", "--format", "xml", sample}), {"--format"});
 }
 
 TEST_F(CliTest, CheckOnlyExactModeDecidesNonDoubleCoordinates) {

@@ -73,10 +73,13 @@ int run_check(const CheckOptions& options) {
   require_some_queries(empty_files, files.size(), total.queries);
 
   if (out_file) out_file->commit();
-  if (options.json)
+  if (options.format == "json")
     print_check_json(std::cout, options.mode, tallies, total, options.t_max);
+  else if (options.format == "csv")
+    print_check_csv(std::cout, options.mode, tallies, total);
   else
-    print_check_table(std::cout, options.mode, tallies, total);
+    print_check_table(std::cout, options.mode, tallies, total,
+                      options.format == "wide" ? 0 : kCheckTableWidth);
   return total.disagreements() == 0 ? kExitAgree : kExitDisagree;
 }
 

@@ -15,7 +15,8 @@ struct CheckOptions {
   std::optional<QueryType> type;   ///< --type: overrides the type from the folder name
   double t_max = 1.0;
   Mode mode = Mode::filtered;  ///< --mode: the path that decides every query
-  bool json = false;           ///< one JSON object on stdout instead of a table
+  /// --format: table (fits 100 columns), wide (every column), csv, json (one object).
+  std::string format = "table";
   std::string out_path;        ///< --out: per-query results, empty for none
   bool force = false;          ///< --force: --out may replace an existing file
 };

@@ -42,7 +42,11 @@ constexpr const char* kExitStatusHelp =
     "  2  bad command line, malformed or unreadable input, or an output that cannot be\n"
     "     written (a full disk, an existing file without --force); one line on stderr:\n"
     "     'exactccd: FILE:LINE: what'\n"
-    "  3  internal error (a bug in exactccd, or out of memory)\n";
+    "  3  internal error (a bug in exactccd, or out of memory)\n"
+    "generate: 0 written, every member as constructed; 1 written, but a member's exact\n"
+    "  verdict or TOI contradicts its construction; 2 and 3 as above.\n"
+    "study: 0 the certified methods show no false positive, false negative or late TOI;\n"
+    "  1 one of them does; 2 and 3 as above.\n";
 
 constexpr const char* kModeHelp =
     "The path that decides: default (culling, certified interval filters, exact fallback: "
@@ -100,10 +104,17 @@ int main(int argc, char** argv) {
       "Decide every query of benchmark CSV files and compare with their truth column "
       "(table per file and TOTAL on stdout, with the share of queries each stage decided).");
   check->footer(kExitStatusHelp);
-  check->add_flag("--json", check_options.json,
-                  "Print one JSON object (mode, queries, collisions, false_positives, "
-                  "false_negatives, seconds, stage_counts, stage_share, files[...]) instead of "
-                  "the table");
+  check
+      ->add_option("--format", check_options.format,
+                   "table: per file and TOTAL, within 100 columns (names below the files' "
+                   "common folder, stage shares abbreviated); wide: every column in full; csv: "
+                   "the same rows as CSV; json: one object (mode, queries, collisions, "
+                   "false_positives, false_negatives, seconds, stage_counts, stage_share, "
+                   "files[...])")
+      ->check(CLI::IsMember({"table", "wide", "csv", "json"}))
+      ->capture_default_str();
+  bool check_json = false;
+  check->add_flag("--json", check_json, "The same as --format json");
   std::string check_mode = "default";
   check->add_option("--mode", check_mode,
                     std::string(kModeHelp) +
@@ -274,6 +285,7 @@ int main(int argc, char** argv) {
   // Every failure ends as one line on stderr, 'exactccd: <what>', with its exit status.
   return run_reporting_errors([&] {
     if (check->parsed()) {
+      if (check_json) check_options.format = "json";
       check_options.type = parse_type_name(check_type);
       check_options.mode = *parse_mode_name(check_mode);
       return run_check(check_options);
