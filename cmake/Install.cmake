@@ -1,7 +1,8 @@
 # Install rules and the CMake package of the library: the library, its public headers
-# (core/include/exactccd only), the generated version header, the `exactccd` command when it is
-# built, exactccdConfig.cmake + exactccdConfigVersion.cmake (SameMajorVersion) with the exported
-# target exactccd::exactccd, and the pkg-config file exactccd.pc. Included from the top level.
+# (core/include/exactccd only), the generated version header, the `exactccd` command (and the
+# study program it runs) when built, exactccdConfig.cmake + exactccdConfigVersion.cmake
+# (SameMajorVersion) with the exported target exactccd::exactccd, and the pkg-config file
+# exactccd.pc. Included from the top level.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -19,6 +20,9 @@ install(FILES ${PROJECT_BINARY_DIR}/include/exactccd/version.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/exactccd)
 if(TARGET exactccd_cli)
   install(TARGETS exactccd_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+if(TARGET exactccd_study)  # beside the command, which runs it for `exactccd study`
+  install(TARGETS exactccd_study RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 
 install(EXPORT exactccdTargets NAMESPACE exactccd:: DESTINATION ${EXACTCCD_INSTALL_CMAKEDIR})
