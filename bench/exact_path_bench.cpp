@@ -209,14 +209,14 @@ const BracketSet& sample_filter_brackets() {
         const exactccd::VertexFaceQuery vf{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]};
         const exactccd::EdgeEdgeQuery ee{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]};
         const bool is_vf = *type == exactccd::QueryType::vertex_face;
-        if (is_vf ? exactccd::filters::vertex_face_culled(vf)
-                  : exactccd::filters::edge_edge_culled(ee))
+        if (is_vf ? exactccd::filters::vertex_face_ccd_culling(vf)
+                  : exactccd::filters::edge_edge_ccd_culling(ee))
           continue;
         IntegerQuery q = is_vf ? IntegerQuery(vf) : IntegerQuery(ee);
         std::vector<std::pair<double, double>> calls;
         RecordingExact exact(q, calls);
-        const auto f = is_vf ? exactccd::filters::vertex_face_filter(vf, options, exact)
-                             : exactccd::filters::edge_edge_filter(ee, options, exact);
+        const auto f = is_vf ? exactccd::filters::vertex_face_ccd_filter(vf, options, exact)
+                             : exactccd::filters::edge_edge_ccd_filter(ee, options, exact);
         if (f.verdict == exactccd::filters::FilterOutcome::Verdict::contact && !f.toi_final &&
             f.toi_lo != f.toi_hi)
           calls.emplace_back(f.toi_lo, f.toi_hi);

@@ -171,12 +171,12 @@ class EdgeEdgeInclusion {
 
 }  // namespace
 
-bool vertex_face_culled(const VertexFaceQuery& q) {
+bool vertex_face_ccd_culling(const VertexFaceQuery& q) {
   return swept_boxes_disjoint({&q.p_t0, &q.p_t1},
                               {&q.a_t0, &q.b_t0, &q.c_t0, &q.a_t1, &q.b_t1, &q.c_t1});
 }
 
-bool edge_edge_culled(const EdgeEdgeQuery& q) {
+bool edge_edge_ccd_culling(const EdgeEdgeQuery& q) {
   return swept_boxes_disjoint({&q.ea0_t0, &q.ea1_t0, &q.ea0_t1, &q.ea1_t1},
                               {&q.eb0_t0, &q.eb1_t0, &q.eb0_t1, &q.eb1_t1});
 }
@@ -218,7 +218,7 @@ FilterOutcome cubic_filter_then_exact_cubic(const Query& q,
 }
 }  // namespace
 
-FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options,
+FilterOutcome vertex_face_ccd_filter(const VertexFaceQuery& q, const CcdOptions& options,
                                  ExactAtDoubles& exact) {
   // Semi-static stage (round to nearest, no guard needed): root-free on [0, 1] implies
   // root-free on [0, t_max] for every t_max <= 1.
@@ -238,7 +238,7 @@ FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& opt
   return cubic_filter_then_exact_cubic(q, cubic, options, inclusion, exact);
 }
 
-FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
+FilterOutcome edge_edge_ccd_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
                                ExactAtDoubles& exact) {
   if (coplanarity_cubic_root_free_semistatic(q.ea1_t0 - q.ea0_t0, q.ea1_t1 - q.ea0_t1,
                                              q.eb0_t0 - q.ea0_t0, q.eb0_t1 - q.ea0_t1,

@@ -8,14 +8,14 @@
 namespace exactccd::filters {
 
 /// Certain no-contact by disjoint swept boxes (exact comparisons).
-bool vertex_face_culled(const VertexFaceQuery& q);
-bool edge_edge_culled(const EdgeEdgeQuery& q);
+bool vertex_face_ccd_culling(const VertexFaceQuery& q);
+bool edge_edge_ccd_culling(const EdgeEdgeQuery& q);
 
 /// The semi-static and interval cubic filters on finite input; options already validated.
 /// `exact` is consulted only where the interval tests cannot decide.
-FilterOutcome vertex_face_filter(const VertexFaceQuery& q, const CcdOptions& options,
+FilterOutcome vertex_face_ccd_filter(const VertexFaceQuery& q, const CcdOptions& options,
                                  ExactAtDoubles& exact);
-FilterOutcome edge_edge_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
+FilterOutcome edge_edge_ccd_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
                                ExactAtDoubles& exact);
 
 }  // namespace exactccd::filters

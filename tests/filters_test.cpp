@@ -189,7 +189,7 @@ TEST(CubicFilter, ContactBracketHoldsExactly) {
     } forbidden;
     filters::FilterOutcome f;
     try {
-      f = filters::vertex_face_filter(qv, opts, forbidden);
+      f = filters::vertex_face_ccd_filter(qv, opts, forbidden);
     } catch (const std::logic_error&) {
       continue;
     }

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "core/predicates/fp_environment.hpp"
+#include "core/src/ccd_options_check.hpp"
 #include "core/float_only/float_only_ccd.hpp"
 #include "core/src/power_of_two_scaling.hpp"
 #include "exact/algebraic_at_doubles.hpp"
@@ -53,14 +54,6 @@ class RoundToNearest : predicates::FpEnvironmentGuard {
   RoundToNearest() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
 };
 
-void validate(const CcdOptions& o) {
-  if (!(o.t_max > 0.0 && o.t_max <= 1.0))
-    throw std::invalid_argument("exactccd: t_max must lie in (0, 1], got " +
-                                std::to_string(o.t_max));
-  if (!(o.toi_width >= 0.0) || !std::isfinite(o.toi_width))
-    throw std::invalid_argument("exactccd: toi_width must be finite and >= 0");
-}
-
 RationalPoint rational(const Eigen::Vector3d& x, const char* name) {
   if (!x.allFinite())
     throw std::invalid_argument(std::string("exactccd: non-finite coordinate in ") + name);
@@ -86,7 +79,7 @@ RationalQuery to_rational(const EdgeEdgeQuery& q) {
 
 CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
   const RoundToNearest nearest;  // the TOI's conversions to doubles compare doubles
-  validate(options);
+  check_ccd_options(options);
   return query.type == QueryType::vertex_face ? exact::vertex_face_ccd_exact(query, options)
                                               : exact::edge_edge_ccd_exact(query, options);
 }
@@ -190,27 +183,27 @@ bool all_finite(const EdgeEdgeQuery& q) {
 
 CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& options) {
   const RoundToNearest nearest;
-  validate(options);
+  check_ccd_options(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   switch (options.mode) {
     case Mode::float_only: return float_only::vertex_face_ccd(query, options);
     case Mode::exact: return exact_path_of(query, options);
     case Mode::filtered: break;
   }
-  return filtered_ccd(query, options, filters::vertex_face_culled, filters::vertex_face_filter,
+  return filtered_ccd(query, options, filters::vertex_face_ccd_culling, filters::vertex_face_ccd_filter,
                       [](const VertexFaceQuery& q, const CcdOptions& o) { return exact_path_of(q, o); });
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
   const RoundToNearest nearest;
-  validate(options);
+  check_ccd_options(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   switch (options.mode) {
     case Mode::float_only: return float_only::edge_edge_ccd(query, options);
     case Mode::exact: return exact_path_of(query, options);
     case Mode::filtered: break;
   }
-  return filtered_ccd(query, options, filters::edge_edge_culled, filters::edge_edge_filter,
+  return filtered_ccd(query, options, filters::edge_edge_ccd_culling, filters::edge_edge_ccd_filter,
                       [](const EdgeEdgeQuery& q, const CcdOptions& o) { return exact_path_of(q, o); });
 }
 

@@ -1,5 +1,4 @@
-// The check of CcdOptions that the library's entry points make (the scene here; ccd.cpp's
-// validate() is the same check, to be replaced by this one).
+// The check of CcdOptions that the library's entry points make (ccd.cpp and the scene).
 #pragma once
 
 #include <cmath>
