@@ -476,7 +476,6 @@ bool has_overflowing_difference(const DoubleQuery& q) {
 // coordinates near the top (slow in the exact path: few).
 /// n, but at least `floor`: the share of overflowing queries checked below is a proportion,
 /// which the few queries of a reduced-scale run (sanitizers) would not estimate reliably.
-std::uint64_t at_least(std::uint64_t n, std::uint64_t floor) { return n < floor ? floor : n; }
 
 TEST(ExtremeMagnitude, OverflowingDifferences) {
   const auto start = std::chrono::steady_clock::now();

@@ -32,6 +32,10 @@ inline std::uint64_t scaled_count(std::uint64_t n) {
   return scaled_count(n, scale_from_environment());
 }
 
+/// n, or `floor` when n is smaller: for a test that counts how often a case occurs, so that a
+/// reduced scale (the sanitizer run) still sees it reliably.
+inline std::uint64_t at_least(std::uint64_t n, std::uint64_t floor) { return n < floor ? floor : n; }
+
 /// A loop over a fixed data set checks the items whose index is a multiple of this: 1 at
 /// scale >= 1, else about 1 / scale.
 inline std::size_t subset_stride() {
