@@ -491,6 +491,8 @@ void expect_bench_object(const nlohmann::json& j) {
   EXPECT_TRUE(j.at("queries").is_number_unsigned());
   EXPECT_TRUE(j.at("mean_ns").is_number());
   EXPECT_TRUE(j.at("median_ns").is_number());
+  EXPECT_TRUE(j.at("max_ns").is_number());
+  EXPECT_GE(j.at("max_ns").get<double>(), j.at("median_ns").get<double>());
   EXPECT_TRUE(j.at("false_positives").is_number_unsigned());
   EXPECT_TRUE(j.at("false_negatives").is_number_unsigned());
   EXPECT_TRUE(j.at("stage_share").is_object());

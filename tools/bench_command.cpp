@@ -118,11 +118,16 @@ double timer_overhead_ns() {
 
 volatile std::size_t g_sink;  // keeps the batch passes' results observable
 
+/// max_ns: the kWorstCandidates slowest single calls are each repeated kWorstRetimes times.
+constexpr std::size_t kWorstCandidates = 16;
+constexpr int kWorstRetimes = 2;
+
 struct Measurement {
   std::string dataset;
   Mode mode = Mode::filtered;
   std::size_t queries = 0, collisions = 0, false_positives = 0, false_negatives = 0;
   double mean_ns = 0.0, median_ns = 0.0;
+  double max_ns = 0.0;  // the slowest query: its fastest of kWorstRetimes + 1 single calls
   std::vector<std::size_t> stage_counts;  // indexed by Stage value
 
   std::size_t stage_count(Stage s) const {
@@ -168,6 +173,28 @@ Measurement measure(const Dataset& d, Mode mode, int repetitions, double overhea
     per_query.push_back(nanoseconds(stop - start));
     tally(r, d.edge_edge_truth[i]);
   }
+  // The slowest queries timed again, each keeping its fastest call: one interrupt or page fault
+  // during a single call must not pass for the query's cost.
+  std::vector<std::size_t> order(per_query.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  const std::size_t slow = std::min(kWorstCandidates, order.size());
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(slow), order.end(),
+                    [&](std::size_t a, std::size_t b) { return per_query[a] > per_query[b]; });
+  for (std::size_t k = 0; k < slow; ++k) {
+    const std::size_t i = order[k];
+    double best = per_query[i];
+    for (int again = 0; again < kWorstRetimes; ++again) {
+      const auto start = Clock::now();
+      const bool collides = i < d.vertex_face.size()
+                                ? vertex_face_ccd(d.vertex_face[i], options).collides
+                                : edge_edge_ccd(d.edge_edge[i - d.vertex_face.size()], options)
+                                      .collides;
+      const auto stop = Clock::now();
+      g_sink = collides;
+      best = std::min(best, nanoseconds(stop - start));
+    }
+    m.max_ns = std::max(m.max_ns, best - overhead_ns);
+  }
   m.median_ns = median(per_query) - overhead_ns;
 
   // Batch passes: one clock reading around all queries, so no timer cost per query.
@@ -191,8 +218,8 @@ bool certified(Mode mode) { return mode != Mode::float_only; }
 void print_table(const std::vector<Measurement>& results) {
   std::size_t width = 7;
   for (const Measurement& m : results) width = std::max(width, m.dataset.size());
-  std::printf("%-*s %-10s %9s %10s %10s %9s %9s", static_cast<int>(width), "dataset", "mode",
-              "queries", "mean_ns", "median_ns", "false_pos", "false_neg");
+  std::printf("%-*s %-10s %9s %10s %10s %9s %9s %10s", static_cast<int>(width), "dataset",
+              "mode", "queries", "mean_ns", "median_ns", "false_pos", "false_neg", "max_ns");
   const std::vector<Stage>& stages = all_stages();
   std::vector<int> widths;
   for (const Stage s : stages) {
@@ -201,9 +228,9 @@ void print_table(const std::vector<Measurement>& results) {
   }
   std::printf("\n");
   for (const Measurement& m : results) {
-    std::printf("%-*s %-10s %9zu %10.1f %10.1f %9zu %9zu", static_cast<int>(width),
+    std::printf("%-*s %-10s %9zu %10.1f %10.1f %9zu %9zu %10.0f", static_cast<int>(width),
                 m.dataset.c_str(), to_string(m.mode), m.queries, m.mean_ns, m.median_ns,
-                m.false_positives, m.false_negatives);
+                m.false_positives, m.false_negatives, m.max_ns);
     for (std::size_t k = 0; k < stages.size(); ++k)
       std::printf(" %*.2f%%", widths[k] - 1, 100.0 * m.stage_share(stages[k]));
     std::printf("\n");
@@ -220,6 +247,7 @@ void print_json(const std::vector<Measurement>& results, const std::vector<Datas
     j["queries"] = m.queries;
     j["mean_ns"] = m.mean_ns;
     j["median_ns"] = m.median_ns;
+    j["max_ns"] = m.max_ns;
     j["false_positives"] = m.false_positives;
     j["false_negatives"] = m.false_negatives;
     nlohmann::ordered_json shares = nlohmann::ordered_json::object();
@@ -276,8 +304,9 @@ int run_bench(const BenchOptions& options) {
     std::printf(
         "single thread; mean_ns: median over %d passes of (pass time / queries); median_ns: "
         "median of single-query times minus the empty timed region (%.1f ns, median of "
-        "100001 steady_clock pairs)\n",
-        options.repetitions, overhead_ns);
+        "100001 steady_clock pairs); max_ns: the slowest query (the %zu slowest single calls "
+        "repeated %d times, each keeping its fastest)\n",
+        options.repetitions, overhead_ns, kWorstCandidates, kWorstRetimes);
     for (const Dataset& d : datasets)
       std::printf("%s: %zu queries (%zu vertex-face, %zu edge-edge), truth: %s\n",
                   d.label.c_str(), d.size(), d.vertex_face.size(), d.edge_edge.size(),

@@ -183,7 +183,8 @@ int main(int argc, char** argv) {
   bench->footer(
       "mean_ns: the median over the repetitions of (time of one pass over all queries / "
       "queries). median_ns: the median of the queries' single timed calls, less the median "
-      "cost of an empty timed region (reported).\n\n" +
+      "cost of an empty timed region (reported). max_ns: the slowest query, its fastest of "
+      "three single calls.\n\n" +
       std::string(kExitStatusHelp));
   bench->add_flag("--json", bench_options.json,
                   "Print a JSON array, one object per data set and mode (dataset, mode, queries, "
