@@ -162,7 +162,6 @@ std::optional<std::vector<DyadicBracket>> split_at_critical_points(const MpzPoly
   return std::nullopt;
 }
 
-
 bool split_point(double lo, double hi, double* m) {
   double middle;  // of the doubles strictly inside, in bit order
   if (!predicates::middle_double(lo, hi, &middle)) return false;

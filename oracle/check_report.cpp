@@ -19,6 +19,10 @@ std::size_t CheckTally::stage_count(Stage stage) const {
   return k < stage_counts.size() ? stage_counts[k] : 0;
 }
 
+double CheckTally::stage_share(Stage stage) const {
+  return queries == 0 ? 0.0 : static_cast<double>(stage_count(stage)) / queries;
+}
+
 void CheckTally::add(const CheckTally& other) {
   queries += other.queries;
   collisions += other.collisions;
@@ -47,9 +51,6 @@ int stage_column_width(Stage s) {
   return std::max(8, static_cast<int>(std::char_traits<char>::length(to_string(s))));
 }
 
-double share(const CheckTally& t, Stage s) {
-  return t.queries == 0 ? 0.0 : static_cast<double>(t.stage_count(s)) / t.queries;
-}
 
 void print_row(std::ostream& out, int name_width, const CheckTally& t,
                const std::vector<Stage>& stages) {
@@ -61,7 +62,7 @@ void print_row(std::ostream& out, int name_width, const CheckTally& t,
                 t.disagreements(), t.false_positives, t.false_negatives, mean);
   out << line;
   for (const Stage s : stages) {
-    std::snprintf(line, sizeof line, " %*.2f%%", stage_column_width(s) - 1, 100.0 * share(t, s));
+    std::snprintf(line, sizeof line, " %*.2f%%", stage_column_width(s) - 1, 100.0 * t.stage_share(s));
     out << line;
   }
   out << '\n';
@@ -78,7 +79,7 @@ nlohmann::ordered_json counts_json(const CheckTally& t, const std::vector<Stage>
   nlohmann::ordered_json shares = nlohmann::ordered_json::object();
   for (const Stage s : stages) {
     counts[to_string(s)] = t.stage_count(s);
-    shares[to_string(s)] = share(t, s);
+    shares[to_string(s)] = t.stage_share(s);
   }
   j["stage_counts"] = std::move(counts);
   j["stage_share"] = std::move(shares);
@@ -191,7 +192,7 @@ void print_check_table(std::ostream& out, Mode mode, const std::vector<CheckTall
                   t.queries, t.collisions, t.false_positives, t.false_negatives, mean);
     out << cell;
     for (const Stage s : stages) {
-      std::snprintf(cell, sizeof cell, " %5.1f%%", 100.0 * share(t, s));
+      std::snprintf(cell, sizeof cell, " %5.1f%%", 100.0 * t.stage_share(s));
       out << cell;
     }
     out << '\n';
@@ -224,7 +225,7 @@ void print_check_csv(std::ostream& out, Mode mode, const std::vector<CheckTally>
     }
     for (const Stage s : stages) {
       char v[32];
-      std::snprintf(v, sizeof v, ",%.6f", share(t, s));
+      std::snprintf(v, sizeof v, ",%.6f", t.stage_share(s));
       out << v;
     }
     out << '\n';

@@ -24,6 +24,8 @@ struct CheckTally {
   std::size_t disagreements() const { return false_positives + false_negatives; }
   void count_stage(Stage stage);
   std::size_t stage_count(Stage stage) const;
+  /// The share of the queries decided by `stage` (0 without queries).
+  double stage_share(Stage stage) const;
   void add(const CheckTally& other);
 };
 

@@ -10,6 +10,7 @@
 
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
+#include "oracle/check.hpp"
 #include "oracle/common.hpp"
 #include "oracle/exact_doubles.hpp"
 #include "oracle/names.hpp"
@@ -125,18 +126,9 @@ constexpr int kWorstRetimes = 2;
 struct Measurement {
   std::string dataset;
   Mode mode = Mode::filtered;
-  std::size_t queries = 0, collisions = 0, false_positives = 0, false_negatives = 0;
+  CheckTally tally;  // verdicts against the truth and deciding stages, as `check` counts them
   double mean_ns = 0.0, median_ns = 0.0;
   double max_ns = 0.0;  // the slowest query: its fastest of kWorstRetimes + 1 single calls
-  std::vector<std::size_t> stage_counts;  // indexed by Stage value
-
-  std::size_t stage_count(Stage s) const {
-    const auto k = static_cast<std::size_t>(s);
-    return k < stage_counts.size() ? stage_counts[k] : 0;
-  }
-  double stage_share(Stage s) const {
-    return queries == 0 ? 0.0 : static_cast<double>(stage_count(s)) / queries;
-  }
 };
 
 Measurement measure(const Dataset& d, Mode mode, int repetitions, double overhead_ns) {
@@ -145,16 +137,6 @@ Measurement measure(const Dataset& d, Mode mode, int repetitions, double overhea
   Measurement m;
   m.dataset = d.label;
   m.mode = mode;
-  m.queries = d.size();
-  m.stage_counts.assign(all_stages().size(), 0);
-  auto tally = [&m](const CcdResult& r, bool truth) {
-    m.collisions += r.collides;
-    m.false_positives += r.collides && !truth;
-    m.false_negatives += !r.collides && truth;
-    const auto k = static_cast<std::size_t>(r.decided_by);
-    if (k >= m.stage_counts.size()) m.stage_counts.resize(k + 1, 0);
-    ++m.stage_counts[k];
-  };
 
   // One pass timing each query on its own; it also gives the verdicts.
   std::vector<double> per_query;
@@ -164,14 +146,14 @@ Measurement measure(const Dataset& d, Mode mode, int repetitions, double overhea
     const CcdResult r = vertex_face_ccd(d.vertex_face[i], options);
     const auto stop = Clock::now();
     per_query.push_back(nanoseconds(stop - start));
-    tally(r, d.vertex_face_truth[i]);
+    count_query(m.tally, r, d.vertex_face_truth[i]);
   }
   for (std::size_t i = 0; i < d.edge_edge.size(); ++i) {
     const auto start = Clock::now();
     const CcdResult r = edge_edge_ccd(d.edge_edge[i], options);
     const auto stop = Clock::now();
     per_query.push_back(nanoseconds(stop - start));
-    tally(r, d.edge_edge_truth[i]);
+    count_query(m.tally, r, d.edge_edge_truth[i]);
   }
   // The slowest queries timed again, each keeping its fastest call: one interrupt or page fault
   // during a single call must not pass for the query's cost.
@@ -229,10 +211,10 @@ void print_table(const std::vector<Measurement>& results) {
   std::printf("\n");
   for (const Measurement& m : results) {
     std::printf("%-*s %-10s %9zu %10.1f %10.1f %9zu %9zu %10.0f", static_cast<int>(width),
-                m.dataset.c_str(), to_string(m.mode), m.queries, m.mean_ns, m.median_ns,
-                m.false_positives, m.false_negatives, m.max_ns);
+                m.dataset.c_str(), to_string(m.mode), m.tally.queries, m.mean_ns, m.median_ns,
+                m.tally.false_positives, m.tally.false_negatives, m.max_ns);
     for (std::size_t k = 0; k < stages.size(); ++k)
-      std::printf(" %*.2f%%", widths[k] - 1, 100.0 * m.stage_share(stages[k]));
+      std::printf(" %*.2f%%", widths[k] - 1, 100.0 * m.tally.stage_share(stages[k]));
     std::printf("\n");
   }
 }
@@ -244,21 +226,21 @@ void print_json(const std::vector<Measurement>& results, const std::vector<Datas
     nlohmann::ordered_json j;
     j["dataset"] = m.dataset;
     j["mode"] = to_string(m.mode);
-    j["queries"] = m.queries;
+    j["queries"] = m.tally.queries;
     j["mean_ns"] = m.mean_ns;
     j["median_ns"] = m.median_ns;
     j["max_ns"] = m.max_ns;
-    j["false_positives"] = m.false_positives;
-    j["false_negatives"] = m.false_negatives;
+    j["false_positives"] = m.tally.false_positives;
+    j["false_negatives"] = m.tally.false_negatives;
     nlohmann::ordered_json shares = nlohmann::ordered_json::object();
     nlohmann::ordered_json counts = nlohmann::ordered_json::object();
     for (const Stage s : all_stages()) {
-      shares[to_string(s)] = m.stage_share(s);
-      counts[to_string(s)] = m.stage_count(s);
+      shares[to_string(s)] = m.tally.stage_share(s);
+      counts[to_string(s)] = m.tally.stage_count(s);
     }
     j["stage_share"] = std::move(shares);
     j["stage_counts"] = std::move(counts);
-    j["collisions"] = m.collisions;
+    j["collisions"] = m.tally.collisions;
     for (const Dataset& d : datasets)
       if (d.label == m.dataset) j["truth"] = d.truth_source;
     j["repetitions"] = repetitions;
@@ -316,7 +298,7 @@ int run_bench(const BenchOptions& options) {
     print_table(results);
   }
   for (const Measurement& m : results)
-    if (certified(m.mode) && m.false_positives + m.false_negatives > 0) return kExitDisagree;
+    if (certified(m.mode) && m.tally.disagreements() > 0) return kExitDisagree;
   return kExitAgree;
 }
 
