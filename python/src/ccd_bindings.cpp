@@ -45,10 +45,9 @@ void bind_ccd(py::module_& m) {
       .def("__repr__", &repr)
       .def("__eq__",
            [](const CcdResult& a, const CcdResult& b) {
-             // Bitwise on the TOIs, so that equal infinities and equal zeros compare equal.
+             // TOIs are doubles in [0, t_max] or +infinity, never NaN: == compares them.
              return a.collides == b.collides && a.decided_by == b.decided_by &&
-                    (a.toi_lo == b.toi_lo || (a.toi_lo != a.toi_lo && b.toi_lo != b.toi_lo)) &&
-                    (a.toi_hi == b.toi_hi || (a.toi_hi != a.toi_hi && b.toi_hi != b.toi_hi));
+                    a.toi_lo == b.toi_lo && a.toi_hi == b.toi_hi;
            })
       .def("__bool__", [](const CcdResult& r) { return r.collides; });
 
