@@ -42,7 +42,9 @@ mpq_class to_mpq(const py::handle& value, const char* where) {
 }
 
 py::object to_fraction(const mpq_class& q) {
-  static const py::object fraction = py::module_::import("fractions").attr("Fraction");
+  // Looked up per call (sys.modules caches the import): a static py::object would be released
+  // after the interpreter has finalised, at exit.
+  const py::object fraction = py::module_::import("fractions").attr("Fraction");
   const auto as_int = [](const mpz_class& z) {
     const std::string hex = z.get_str(16);
     return py::reinterpret_steal<py::object>(PyLong_FromString(hex.c_str(), nullptr, 16));
