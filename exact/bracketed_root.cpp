@@ -92,7 +92,8 @@ std::optional<std::vector<DyadicBracket>> split_at_critical_points(const MpzPoly
   // p' and its real roots c = (P + tau sqrt(E)) / Q; at each, the sign of p from
   // prem(p, p') (of degree <= 1: p(c) = r(c) / lc(p')^n).
   MpzPolynomial dp;
-  for (int i = 1; i <= p.degree; ++i) dp.c[static_cast<std::size_t>(i - 1)] = p.c[static_cast<std::size_t>(i)] * i;
+  for (std::size_t i = 1; i <= static_cast<std::size_t>(p.degree); ++i)
+    dp.c[i - 1] = p.c[i] * static_cast<unsigned long>(i);
   dp.degree = p.degree - 1;
   mpz_class P, Q, E;
   int roots;

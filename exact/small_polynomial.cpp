@@ -478,7 +478,8 @@ int pseudo_remainder(MpzPolynomial a, const MpzPolynomial& b, MpzPolynomial* r) 
   const int n = a.degree - b.degree + 1;
   for (int k = a.degree; k >= b.degree; --k) {
     const mpz_class lead = a.c[static_cast<std::size_t>(k)];
-    for (int i = 0; i <= a.degree; ++i) a.c[static_cast<std::size_t>(i)] *= b.c[static_cast<std::size_t>(b.degree)];
+    for (int i = 0; i <= a.degree; ++i)
+      a.c[static_cast<std::size_t>(i)] *= b.c[static_cast<std::size_t>(b.degree)];
     for (int i = 0; i <= b.degree; ++i)
       a.c[static_cast<std::size_t>(i + k - b.degree)] -= lead * b.c[static_cast<std::size_t>(i)];
     a.c[static_cast<std::size_t>(k)] = 0;  // cancelled exactly
@@ -499,7 +500,9 @@ int sign_plus_sqrt(const mpz_class& X, const mpz_class& Y, const mpz_class& D) {
 
 namespace {
 
-int coefficient_sign(const MpzPolynomial& p, int i) { return sgn(p.c[static_cast<std::size_t>(i)]); }
+int coefficient_sign(const MpzPolynomial& p, int i) {
+  return sgn(p.c[static_cast<std::size_t>(i)]);
+}
 
 }  // namespace
 

@@ -62,7 +62,8 @@ void print_row(std::ostream& out, int name_width, const CheckTally& t,
                 t.disagreements(), t.false_positives, t.false_negatives, mean);
   out << line;
   for (const Stage s : stages) {
-    std::snprintf(line, sizeof line, " %*.2f%%", stage_column_width(s) - 1, 100.0 * t.stage_share(s));
+    std::snprintf(line, sizeof line, " %*.2f%%", stage_column_width(s) - 1,
+                  100.0 * t.stage_share(s));
     out << line;
   }
   out << '\n';

@@ -190,8 +190,11 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& option
     case Mode::exact: return exact_path_of(query, options);
     case Mode::filtered: break;
   }
-  return filtered_ccd(query, options, filters::vertex_face_ccd_culling, filters::vertex_face_ccd_filter,
-                      [](const VertexFaceQuery& q, const CcdOptions& o) { return exact_path_of(q, o); });
+  return filtered_ccd(query, options, filters::vertex_face_ccd_culling,
+                      filters::vertex_face_ccd_filter,
+                      [](const VertexFaceQuery& q, const CcdOptions& o) {
+                        return exact_path_of(q, o);
+                      });
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
@@ -204,7 +207,9 @@ CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
     case Mode::filtered: break;
   }
   return filtered_ccd(query, options, filters::edge_edge_ccd_culling, filters::edge_edge_ccd_filter,
-                      [](const EdgeEdgeQuery& q, const CcdOptions& o) { return exact_path_of(q, o); });
+                      [](const EdgeEdgeQuery& q, const CcdOptions& o) {
+                        return exact_path_of(q, o);
+                      });
 }
 
 }  // namespace exactccd
