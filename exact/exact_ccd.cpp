@@ -6,7 +6,7 @@
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
-#include "exact/root_isolation.hpp"
+#include "exact/earliest_contact.hpp"
 
 namespace exactccd::exact {
 
@@ -14,11 +14,6 @@ namespace {
 
 using predicates::MovingPoint;
 using predicates::Vec3;
-
-MovingPoint<Rational> moving(const RationalPoint& x0, const RationalPoint& x1) {
-  return predicates::linear_motion(Vec3<Rational>{x0.x, x0.y, x0.z},
-                                   Vec3<Rational>{x1.x, x1.y, x1.z});
-}
 
 /// A non-zero polynomial whose roots contain every contact time of the vertex-edge motion
 /// (p against the closed segment [x, y]) other than t = 0; the zero polynomial when contact at
@@ -33,40 +28,14 @@ Polynomial vertex_edge_candidates(const MovingPoint<Rational>& p, const MovingPo
   return Polynomial(dot(p - x, p - y));
 }
 
-/// The earliest time at which contact_at holds among the candidates: t = 0 when include_zero,
-/// and the roots in [0, t_max] of each polynomial in `candidates` (zero polynomials and
-/// constants have none). Each polynomial is searched in ascending order of its roots up to
-/// the best time found so far, and the earliest of the per-polynomial firsts is returned.
-template <class ContactAt>
-std::optional<AlgebraicTime> earliest_contact(std::initializer_list<Polynomial> candidates,
-                                              bool include_zero, const Rational& t_max,
-                                              ContactAt&& contact_at) {
-  if (include_zero) {
-    AlgebraicTime zero = AlgebraicTime::rational(0);
-    if (contact_at(zero)) return zero;
-  }
-  std::optional<AlgebraicTime> best;
-  for (const Polynomial& poly : candidates) {
-    if (poly.degree() < 1) continue;
-    for (AlgebraicTime& t : real_roots_in(poly, Rational(0), t_max)) {
-      if (include_zero && t.is_rational() && sgn(t.lo()) == 0) continue;  // already tried
-      if (best && compare(t, *best) >= 0) break;  // ascending: no later root can be earlier
-      if (contact_at(t)) {
-        best = std::move(t);
-        break;
-      }
-    }
-  }
-  return best;
-}
+}  // namespace
 
-/// Scales every coordinate by the least common multiple of the denominators: a uniform
-/// positive scaling of space changes no contact and no contact time, and integer data keeps
-/// GMP's rational normalisation cheap.
-RationalQuery with_integer_coordinates(const RationalQuery& q) {
+RationalQuery with_integer_coordinates(const RationalQuery& q, Rational* scale) {
   mpz_class l = 1;
   for (const auto& p : q.points)
-    for (const Rational* x : {&p.x, &p.y, &p.z}) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x->get_den_mpz_t());
+    for (const Rational* x : {&p.x, &p.y, &p.z})
+      mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x->get_den_mpz_t());
+  if (scale) *scale = l;
   if (l == 1) return q;
   RationalQuery scaled = q;
   for (auto& p : scaled.points)
@@ -83,11 +52,6 @@ CcdResult make_result(std::optional<AlgebraicTime> toi, const CcdOptions& option
   return r;
 }
 
-auto sign_at(AlgebraicTime& t) {
-  return [&t](const auto& q) { return t.sign_of(q); };
-}
-
-}  // namespace
 
 CcdResult vertex_face_ccd_exact(const RationalQuery& query, const CcdOptions& options) {
   const RationalQuery q = with_integer_coordinates(query);
@@ -100,9 +64,9 @@ CcdResult vertex_face_ccd_exact(const RationalQuery& query, const CcdOptions& op
   };
   const Polynomial cubic(predicates::vertex_face_coplanarity_cubic(p, a, b, c));
   if (!cubic.is_zero())  // contact implies coplanarity: only the cubic's roots are candidates
-    return make_result(earliest_contact({cubic}, false, t_max, contact_at), options);
+    return make_result(earliest_contact(std::initializer_list<Polynomial>{cubic}, false, t_max, contact_at), options);
   // Coplanar throughout: the first contact after t = 0 lies on an edge of the triangle.
-  return make_result(earliest_contact({vertex_edge_candidates(p, a, b),
+  return make_result(earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(p, a, b),
                                        vertex_edge_candidates(p, b, c),
                                        vertex_edge_candidates(p, c, a)},
                                       true, t_max, contact_at),
@@ -120,9 +84,9 @@ CcdResult edge_edge_ccd_exact(const RationalQuery& query, const CcdOptions& opti
   };
   const Polynomial cubic(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1));
   if (!cubic.is_zero())
-    return make_result(earliest_contact({cubic}, false, t_max, contact_at), options);
+    return make_result(earliest_contact(std::initializer_list<Polynomial>{cubic}, false, t_max, contact_at), options);
   // Coplanar throughout: the first contact after t = 0 puts an endpoint on the other segment.
-  return make_result(earliest_contact({vertex_edge_candidates(a0, b0, b1),
+  return make_result(earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(a0, b0, b1),
                                        vertex_edge_candidates(a1, b0, b1),
                                        vertex_edge_candidates(b0, a0, a1),
                                        vertex_edge_candidates(b1, a0, a1)},

@@ -1,11 +1,11 @@
 // The methods and settings the study measures: the uncertified float_only mode and tolerance
-// method (corpus/tolerance_ccd.hpp), the default path at each TOI width, the exact path.
+// method (core/float_only/tolerance_ccd.hpp), the default path at each TOI width, the exact path.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "corpus/tolerance_ccd.hpp"
+#include "core/float_only/tolerance_ccd.hpp"
 #include "exactccd/ccd.hpp"
 
 namespace exactccd::study {

@@ -1,4 +1,4 @@
-// Tests of the numerical-stability study: the tolerance method (corpus/tolerance_ccd.hpp) on hand-made
+// Tests of the numerical-stability study: the tolerance method (core/float_only/tolerance_ccd.hpp) on hand-made
 // queries whose coplanar times and distances are worked out by hand below, and the
 // `exactccd study` command on a sample file (expected verdicts from the file's truth column,
 // read here independently) and on a hand-made suite with a TOI sidecar.
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "corpus/tolerance_ccd.hpp"
+#include "core/float_only/tolerance_ccd.hpp"
 
 namespace {
 

@@ -13,6 +13,9 @@
 #include "core/src/power_of_two_scaling.hpp"
 #include "exact/algebraic_at_doubles.hpp"
 #include "exact/exact_ccd.hpp"
+#include "exact/min_separation.hpp"
+#include "core/float_only/tolerance_ccd.hpp"
+#include "filters/separation_filter.hpp"
 #include "exact/integer_query.hpp"
 #include "filters/ccd_filters.hpp"
 #include "exactccd/rational_query.hpp"
@@ -80,8 +83,25 @@ RationalQuery to_rational(const EdgeEdgeQuery& q) {
 CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
   const RoundToNearest nearest;  // the TOI's conversions to doubles compare doubles
   check_ccd_options(options);
+  if (options.min_separation > 0) return exact_ccd(query, mpq_class(options.min_separation), options);
   return query.type == QueryType::vertex_face ? exact::vertex_face_ccd_exact(query, options)
                                               : exact::edge_edge_ccd_exact(query, options);
+}
+
+CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
+                    const CcdOptions& options) {
+  const RoundToNearest nearest;
+  check_ccd_options(options);
+  if (sgn(min_separation) < 0)
+    throw std::invalid_argument("exactccd: min_separation must be >= 0");
+  if (sgn(min_separation) == 0) {
+    CcdOptions contact = options;
+    contact.min_separation = 0.0;
+    return exact_ccd(query, contact);
+  }
+  return query.type == QueryType::vertex_face
+             ? exact::vertex_face_min_separation_exact(query, min_separation, options)
+             : exact::edge_edge_min_separation_exact(query, min_separation, options);
 }
 
 namespace {
@@ -168,6 +188,37 @@ CcdResult filtered_ccd(const Query& q, const CcdOptions& options, Culled culled,
   return filters_then_exact(q, options, filter, exact_path);
 }
 
+/// Minimum-separation CCD, delta = options.min_separation > 0: culling and filters with delta,
+/// then the exact procedure; or the common practice (uncertified) in Mode::float_only.
+/// PROOF: proofs/min_separation.md#pipeline
+template <class Query, class Culled, class Filter, class Exact, class Tolerance>
+CcdResult min_separation_ccd(const Query& q, const CcdOptions& options, Culled culled,
+                             Filter filter, Exact exact_path, Tolerance tolerance) {
+  const double delta = options.min_separation;
+  CcdResult r;
+  switch (options.mode) {
+    case Mode::float_only: return tolerance(q, delta, options.t_max);
+    case Mode::exact: return exact_path(to_rational(q), mpq_class(delta), options);
+    case Mode::filtered: break;
+  }
+  if (culled(q, delta)) {
+    r.decided_by = Stage::culling;
+    return r;
+  }
+  switch (filter(q, options)) {
+    case filters::SeparationVerdict::never_within:
+      r.decided_by = Stage::filter;
+      return r;
+    case filters::SeparationVerdict::within_at_zero:
+      r.collides = true;
+      r.toi_lo = r.toi_hi = 0.0;
+      r.decided_by = Stage::filter;
+      return r;
+    case filters::SeparationVerdict::uncertain: break;
+  }
+  return exact_path(to_rational(q), mpq_class(delta), options);
+}
+
 bool all_finite(const VertexFaceQuery& q) {
   return q.p_t0.allFinite() && q.a_t0.allFinite() && q.b_t0.allFinite() && q.c_t0.allFinite() &&
          q.p_t1.allFinite() && q.a_t1.allFinite() && q.b_t1.allFinite() && q.c_t1.allFinite();
@@ -185,6 +236,11 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& option
   const RoundToNearest nearest;
   check_ccd_options(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
+  if (options.min_separation > 0)
+    return min_separation_ccd(query, options, filters::vertex_face_separation_culling,
+                              filters::vertex_face_separation_filter,
+                              exact::vertex_face_min_separation_exact,
+                              methods::tolerance_vertex_face_ccd);
   switch (options.mode) {
     case Mode::float_only: return float_only::vertex_face_ccd(query, options);
     case Mode::exact: return exact_path_of(query, options);
@@ -201,6 +257,11 @@ CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
   const RoundToNearest nearest;
   check_ccd_options(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
+  if (options.min_separation > 0)
+    return min_separation_ccd(query, options, filters::edge_edge_separation_culling,
+                              filters::edge_edge_separation_filter,
+                              exact::edge_edge_min_separation_exact,
+                              methods::tolerance_edge_edge_ccd);
   switch (options.mode) {
     case Mode::float_only: return float_only::edge_edge_ccd(query, options);
     case Mode::exact: return exact_path_of(query, options);

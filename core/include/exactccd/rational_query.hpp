@@ -28,7 +28,8 @@ struct RationalQuery {
   std::array<RationalPoint, 8> points;
 };
 
-/// Decides the query with the exact path (exact/): exact for every input (\ref semantics).
+/// Decides the query with the exact path (exact/): exact for every input (\ref semantics),
+/// with options.min_separation as the minimum separation (0: contact).
 /// \param query any rational coordinates (canonical mpq_class values).
 /// \param options t_max in (0, 1] and toi_width finite and >= 0; the mode is ignored (always
 ///        the exact path).
@@ -36,6 +37,17 @@ struct RationalQuery {
 ///         without contact.
 /// \throws std::invalid_argument for options outside their domain (see CcdOptions).
 EXACTCCD_API CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options = {});
+
+/// Minimum-separation CCD on the exact path with a rational delta (\ref min_separation): the
+/// earliest t in [0, t_max] at which the closed primitives come within Euclidean distance
+/// min_separation. options.min_separation is ignored (this delta is used instead).
+/// \param query any rational coordinates (canonical mpq_class values).
+/// \param min_separation delta >= 0; 0 is contact, as exact_ccd(query, options) decides it.
+/// \param options t_max in (0, 1] and toi_width finite and >= 0; the mode is ignored.
+/// \return the verdict and the TOI enclosure; +infinity TOIs when never within delta.
+/// \throws std::invalid_argument for a negative delta or options outside their domain.
+EXACTCCD_API CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
+                                 const CcdOptions& options = {});
 
 /// The query's coordinates as exact rationals, in the benchmark's row order.
 /// \param query any finite coordinates.

@@ -129,6 +129,12 @@ struct CcdOptions {
   double toi_width = 0.0;
   /// The path that decides (Mode::filtered, the certified default, unless comparing methods).
   Mode mode = Mode::filtered;
+  /// Minimum separation delta >= 0 (\ref min_separation "minimum-separation CCD"): contact
+  /// means the closed primitives come within Euclidean distance delta, and the TOI is the
+  /// earliest such time. 0 (the default) is contact itself, decided exactly as without this
+  /// field. Must be finite and >= 0. Mode::float_only with delta > 0 runs the common practice
+  /// (the float cubic's roots, the distance at each compared with delta): uncertified.
+  double min_separation = 0.0;
 };
 
 /// The answer to one query (\ref semantics).

@@ -1,6 +1,6 @@
 // The tolerance method (see tolerance_ccd.hpp): the float_only mode's roots, a distance test in
 // doubles at each. Nothing here is certified; it exists to be measured.
-#include "corpus/tolerance_ccd.hpp"
+#include "core/float_only/tolerance_ccd.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>

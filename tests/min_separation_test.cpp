@@ -1,0 +1,276 @@
+// Minimum-separation CCD (CcdOptions::min_separation, exact_ccd with a rational delta):
+// hand-made cases with known exact answers, delta = 0 against the contact procedure, the
+// default path against the exact path on random queries, CGAL's exact squared distances at
+// sampled rational times (a check that shares no reduction with exactccd), monotonicity in
+// delta, power-of-two invariance and bad input.
+// PROOF: proofs/min_separation.md
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/mpq_class.h>
+#include <CGAL/squared_distance_3.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+#include "exact/exact_ccd.hpp"
+#include "exact/min_separation.hpp"
+#include "exactccd/ccd.hpp"
+#include "exactccd/rational_query.hpp"
+#include "sample_double_queries.hpp"
+#include "test_scale.hpp"
+
+namespace exactccd {
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<mpq_class>;
+using V = Eigen::Vector3d;
+
+CcdOptions with_delta(double delta, Mode mode = Mode::filtered) {
+  CcdOptions o;
+  o.min_separation = delta;
+  o.mode = mode;
+  return o;
+}
+
+/// t* enclosed by the tightest pair of doubles (or equal to a double).
+void expect_tight_enclosure(const CcdResult& r, const mpq_class& t_star) {
+  ASSERT_TRUE(r.collides);
+  EXPECT_LE(cmp(mpq_class(r.toi_lo), t_star), 0);
+  EXPECT_GE(cmp(mpq_class(r.toi_hi), t_star), 0);
+  EXPECT_TRUE(r.toi_lo == r.toi_hi || std::nextafter(r.toi_lo, 2.0) == r.toi_hi);
+}
+
+// A static triangle (0,0,0), (4,0,0), (0,4,0) and delta = 1/4.
+VertexFaceQuery vertex_face(const V& p0, const V& p1) {
+  const V a(0, 0, 0), b(4, 0, 0), c(0, 4, 0);
+  return {p0, a, b, c, p1, a, b, c};
+}
+
+TEST(MinSeparationTest, VertexFaceHandMadeCasesInEveryCertifiedMode) {
+  for (const Mode mode : {Mode::filtered, Mode::exact}) {
+    SCOPED_TRACE(to_string(mode));
+    const CcdOptions o = with_delta(0.25, mode);
+    // Falling through the face: height 1 - 2t reaches 1/4 at t = 3/8.
+    expect_tight_enclosure(vertex_face_ccd(vertex_face({1, 1, 1}, {1, 1, -1}), o),
+                           mpq_class(3, 8));
+    // Sliding at height exactly delta from outside: within only once over the triangle,
+    // x = -1 + 4t = 0 at t = 1/4.
+    expect_tight_enclosure(vertex_face_ccd(vertex_face({-1, 1, 0.25}, {3, 1, 0.25}), o),
+                           mpq_class(1, 4));
+    // The same 2^-40 higher: never within.
+    const double above = 0.25 + std::ldexp(1.0, -40);
+    EXPECT_FALSE(vertex_face_ccd(vertex_face({-1, 1, above}, {3, 1, above}), o).collides);
+    // Passing the vertex sphere of a with delta = 5/16: distance^2 = (3/16)^2 + (4/16)^2 + z^2,
+    // tangent at z = 0, t = 1/2.
+    const CcdOptions sphere = with_delta(0.3125, mode);
+    const VertexFaceQuery past_a = vertex_face({-0.1875, -0.25, 1}, {-0.1875, -0.25, -1});
+    expect_tight_enclosure(vertex_face_ccd(past_a, sphere), mpq_class(1, 2));
+    EXPECT_FALSE(vertex_face_ccd(past_a, with_delta(std::nextafter(0.3125, 0.0), mode)).collides);
+    // Passing the edge capsule of ab: distance^2 = 1/16 + z^2, tangent at t = 1/2.
+    expect_tight_enclosure(vertex_face_ccd(vertex_face({1, -0.25, 1}, {1, -0.25, -1}), o),
+                           mpq_class(1, 2));
+    // One ulp short of the tangency: delta just below 1/4 misses both.
+    const CcdOptions below = with_delta(std::nextafter(0.25, 0.0), mode);
+    EXPECT_FALSE(vertex_face_ccd(vertex_face({1, -0.25, 1}, {1, -0.25, -1}), below).collides);
+    // Within delta at t = 0 already.
+    const CcdResult r = vertex_face_ccd(vertex_face({1, 1, 0.125}, {1, 1, 3}), o);
+    EXPECT_TRUE(r.collides);
+    EXPECT_EQ(r.toi_lo, 0.0);
+    EXPECT_EQ(r.toi_hi, 0.0);
+  }
+}
+
+TEST(MinSeparationTest, EdgeEdgeHandMadeCasesInEveryCertifiedMode) {
+  for (const Mode mode : {Mode::filtered, Mode::exact}) {
+    SCOPED_TRACE(to_string(mode));
+    const CcdOptions o = with_delta(0.25, mode);
+    // Parallel edges at distance exactly delta, sliding into overlap: b0.x = 2 - 5t = 1 at 1/5.
+    const EdgeEdgeQuery sliding{V(0, 0, 0),    V(1, 0, 0),     V(2, 0.25, 0),  V(3, 0.25, 0),
+                                V(0, 0, 0),    V(1, 0, 0),     V(-3, 0.25, 0), V(-2, 0.25, 0)};
+    expect_tight_enclosure(edge_edge_ccd(sliding, o), mpq_class(1, 5));
+    // Crossing edges, b falling: z = 1 - 2t = 1/4 at t = 3/8 (interior-interior region).
+    const EdgeEdgeQuery crossing{V(-1, 0, 0), V(1, 0, 0), V(0, -1, 1),  V(0, 1, 1),
+                                 V(-1, 0, 0), V(1, 0, 0), V(0, -1, -1), V(0, 1, -1)};
+    expect_tight_enclosure(edge_edge_ccd(crossing, o), mpq_class(3, 8));
+    // Parallel at distance delta + 2^-45: never within.
+    const double gap = 0.25 + std::ldexp(1.0, -45);
+    const EdgeEdgeQuery apart{V(0, 0, 0), V(1, 0, 0), V(2, gap, 0),  V(3, gap, 0),
+                              V(0, 0, 0), V(1, 0, 0), V(-3, gap, 0), V(-2, gap, 0)};
+    EXPECT_FALSE(edge_edge_ccd(apart, o).collides);
+    // Point primitives reduce to edge-edge: a point passing a segment at distance exactly delta.
+    const PointEdgeQuery point{V(0.5, 0.25, 1), V(0, 0, 0), V(1, 0, 0),
+                               V(0.5, 0.25, -1), V(0, 0, 0), V(1, 0, 0)};
+    expect_tight_enclosure(point_edge_ccd(point, o), mpq_class(1, 2));
+  }
+}
+
+TEST(MinSeparationTest, ZeroSeparationIsContactOnTheSampleQueries) {
+  const auto& all = test::sample_double_queries();
+  const std::size_t stride = test::subset_stride() * 4;
+  int compared = 0, contacts = 0;
+  for (std::size_t i = 0; i < all.size(); i += stride) {
+    const auto& q = all[i];
+    const RationalQuery r = q.type == QueryType::vertex_face ? to_rational(q.vertex_face())
+                                                             : to_rational(q.edge_edge());
+    const CcdOptions o;
+    const CcdResult contact = q.type == QueryType::vertex_face
+                                  ? exact::vertex_face_ccd_exact(r, o)
+                                  : exact::edge_edge_ccd_exact(r, o);
+    const CcdResult zero = q.type == QueryType::vertex_face
+                               ? exact::vertex_face_min_separation_exact(r, 0, o)
+                               : exact::edge_edge_min_separation_exact(r, 0, o);
+    ASSERT_EQ(zero.collides, contact.collides) << "sample query " << i;
+    ASSERT_EQ(zero.toi_lo, contact.toi_lo) << "sample query " << i;
+    ASSERT_EQ(zero.toi_hi, contact.toi_hi) << "sample query " << i;
+    ++compared;
+    contacts += contact.collides;
+  }
+  EXPECT_GE(compared, static_cast<int>(all.size() / stride));
+  EXPECT_GT(contacts, 0);
+}
+
+TEST(MinSeparationTest, ZeroSeparationOptionIsTheContactPath) {
+  const auto& all = test::sample_double_queries();
+  for (std::size_t i = 0; i < all.size(); i += test::subset_stride()) {
+    CcdOptions zero;
+    zero.min_separation = 0.0;
+    const CcdResult a = random_queries::ccd(all[i], zero), b = random_queries::ccd(all[i], {});
+    ASSERT_EQ(a.collides, b.collides);
+    ASSERT_EQ(a.toi_lo, b.toi_lo);
+    ASSERT_EQ(a.decided_by, b.decided_by);
+  }
+}
+
+/// A random query of coordinates in [-1, 1] with the given spread of motion.
+random_queries::DoubleQuery random_query(std::mt19937_64& rng, QueryType type, double motion) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  random_queries::DoubleQuery q;
+  q.type = type;
+  for (int i = 0; i < 4; ++i) {
+    q.v[i] = V(u(rng), u(rng), u(rng)) * 0.5;
+    q.v[i + 4] = q.v[i] + motion * V(u(rng), u(rng), u(rng));
+  }
+  return q;
+}
+
+TEST(MinSeparationTest, DefaultPathEqualsExactPathOnRandomQueries) {
+  std::mt19937_64 rng(20261124);
+  const int n = static_cast<int>(test::scaled_count(3000));
+  int contacts = 0, misses = 0;
+  for (int i = 0; i < n; ++i) {
+    const QueryType type = i % 2 ? QueryType::edge_edge : QueryType::vertex_face;
+    const auto q = random_query(rng, type, i % 3 == 0 ? 0.01 : 1.0);
+    const double delta = std::ldexp(1.0, -(static_cast<int>(rng() % 12) + 1));
+    CcdOptions o = with_delta(delta);
+    o.t_max = i % 5 == 0 ? 0.5 : 1.0;
+    const CcdResult fast = random_queries::ccd(q, o);
+    const CcdResult exact = random_queries::ccd(q, random_queries::with_mode(o, Mode::exact));
+    ASSERT_EQ(fast.collides, exact.collides) << "query " << i << " delta " << delta;
+    ASSERT_EQ(fast.toi_lo, exact.toi_lo) << "query " << i;
+    ASSERT_EQ(fast.toi_hi, exact.toi_hi) << "query " << i;
+    contacts += exact.collides;
+    misses += !exact.collides;
+  }
+  EXPECT_GT(contacts, n / 20);
+  EXPECT_GT(misses, n / 20);
+}
+
+Kernel::Point_3 at(const V& x0, const V& x1, const mpq_class& t) {
+  const mpq_class x = mpq_class(x0.x()) + t * (mpq_class(x1.x()) - mpq_class(x0.x()));
+  const mpq_class y = mpq_class(x0.y()) + t * (mpq_class(x1.y()) - mpq_class(x0.y()));
+  const mpq_class z = mpq_class(x0.z()) + t * (mpq_class(x1.z()) - mpq_class(x0.z()));
+  return {x, y, z};
+}
+
+/// CGAL's exact squared distance between the primitives at the rational time t.
+mpq_class squared_distance_at(const random_queries::DoubleQuery& q, const mpq_class& t) {
+  const auto& v = q.v;
+  if (q.type == QueryType::vertex_face)
+    return CGAL::squared_distance(at(v[0], v[4], t),
+                                  Kernel::Triangle_3(at(v[1], v[5], t), at(v[2], v[6], t),
+                                                     at(v[3], v[7], t)));
+  return CGAL::squared_distance(Kernel::Segment_3(at(v[0], v[4], t), at(v[1], v[5], t)),
+                                Kernel::Segment_3(at(v[2], v[6], t), at(v[3], v[7], t)));
+}
+
+TEST(MinSeparationTest, AgreesWithCgalSquaredDistancesAtSampledTimes) {
+  std::mt19937_64 rng(7);
+  const int n = static_cast<int>(test::scaled_count(400));
+  const int samples = 24;
+  int within_samples = 0, before_toi_samples = 0, exact_tois = 0;
+  for (int i = 0; i < n; ++i) {
+    const QueryType type = i % 2 ? QueryType::edge_edge : QueryType::vertex_face;
+    const auto q = random_query(rng, type, 1.0);
+    const double delta = 0.125;
+    const mpq_class delta2 = mpq_class(delta) * delta;
+    const CcdResult r = random_queries::ccd(q, with_delta(delta));
+    for (int k = 0; k <= samples; ++k) {
+      const mpq_class t(k, samples);
+      const mpq_class d2 = squared_distance_at(q, t);
+      if (cmp(d2, delta2) <= 0) {  // within delta at t: a contact no later than t
+        ++within_samples;
+        ASSERT_TRUE(r.collides) << "query " << i << " within delta at " << t;
+        ASSERT_LE(cmp(mpq_class(r.toi_lo), t), 0) << "query " << i;
+      }
+      if (r.collides && cmp(t, mpq_class(r.toi_lo)) < 0) {  // before t*: never within
+        ++before_toi_samples;
+        ASSERT_GT(cmp(d2, delta2), 0) << "query " << i << " within delta before its TOI at " << t;
+      }
+    }
+    if (r.collides && r.toi_lo == r.toi_hi) {  // t* is this double: within delta there
+      ++exact_tois;
+      ASSERT_LE(cmp(squared_distance_at(q, mpq_class(r.toi_lo)), delta2), 0) << "query " << i;
+    }
+  }
+  EXPECT_GT(within_samples, n);
+  EXPECT_GT(before_toi_samples, n);
+  EXPECT_GT(exact_tois, 0);
+}
+
+TEST(MinSeparationTest, LargerSeparationNeverLaterAndScalingByPowersOfTwoChangesNothing) {
+  std::mt19937_64 rng(11);
+  const int n = static_cast<int>(test::scaled_count(600));
+  for (int i = 0; i < n; ++i) {
+    const QueryType type = i % 2 ? QueryType::edge_edge : QueryType::vertex_face;
+    auto q = random_query(rng, type, 0.5);
+    const CcdResult small = random_queries::ccd(q, with_delta(0.0625));
+    const CcdResult large = random_queries::ccd(q, with_delta(0.125));
+    if (small.collides) {
+      ASSERT_TRUE(large.collides) << "query " << i;
+      ASSERT_LE(large.toi_lo, small.toi_lo) << "query " << i;
+    }
+    const int k = static_cast<int>(rng() % 400) - 200;
+    if (!random_queries::scale_if_exact(&q, k)) continue;
+    const CcdResult scaled = random_queries::ccd(q, with_delta(std::ldexp(0.125, k)));
+    ASSERT_EQ(scaled.collides, large.collides) << "query " << i << " k " << k;
+    ASSERT_EQ(scaled.toi_lo, large.toi_lo) << "query " << i << " k " << k;
+    ASSERT_EQ(scaled.toi_hi, large.toi_hi) << "query " << i << " k " << k;
+  }
+}
+
+TEST(MinSeparationTest, RationalSeparationOnTheOracleApi) {
+  // delta = 1/3 (not a double): crossing edges reach z = 1 - 2t = 1/3 at t = 1/3.
+  const EdgeEdgeQuery crossing{V(-1, 0, 0), V(1, 0, 0), V(0, -1, 1),  V(0, 1, 1),
+                               V(-1, 0, 0), V(1, 0, 0), V(0, -1, -1), V(0, 1, -1)};
+  expect_tight_enclosure(exact_ccd(to_rational(crossing), mpq_class(1, 3)), mpq_class(1, 3));
+  // delta = 0 is contact: at t = 1/2.
+  expect_tight_enclosure(exact_ccd(to_rational(crossing), mpq_class(0)), mpq_class(1, 2));
+  EXPECT_THROW(exact_ccd(to_rational(crossing), mpq_class(-1, 3)), std::invalid_argument);
+}
+
+TEST(MinSeparationTest, NegativeOrNonFiniteSeparationThrows) {
+  const VertexFaceQuery q = vertex_face({1, 1, 1}, {1, 1, -1});
+  for (const double bad : {-1.0, -0.0 - std::ldexp(1.0, -1074),
+                           std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::quiet_NaN()}) {
+    for (const Mode mode : {Mode::filtered, Mode::exact, Mode::float_only}) {
+      EXPECT_THROW(vertex_face_ccd(q, with_delta(bad, mode)), std::invalid_argument) << bad;
+      EXPECT_THROW(edge_edge_ccd(EdgeEdgeQuery{}, with_delta(bad, mode)), std::invalid_argument);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace exactccd
