@@ -22,23 +22,25 @@ inline auto sign_at(AlgebraicTime& t) {
   return [&t](const auto& q) { return t.sign_of(q); };
 }
 
-/// The earliest time at which contact_at holds among the candidates: t = 0 when include_zero,
-/// and the roots in [0, t_max] of each polynomial in `candidates` (zero polynomials and
-/// constants have none). Each polynomial is searched in ascending order of its roots up to
-/// the best time found so far, and the earliest of the per-polynomial firsts is returned.
+/// The earliest time at which contact_at holds among the candidates: t = t_from when
+/// include_start, and the roots in [t_from, t_max] of each polynomial in `candidates` (zero
+/// polynomials and constants have none). Each polynomial is searched in ascending order of its
+/// roots up to the best time found so far, and the earliest of the per-polynomial firsts is
+/// returned.
 template <class Polynomials, class ContactAt>
 std::optional<AlgebraicTime> earliest_contact(const Polynomials& candidates,
-                                              bool include_zero, const Rational& t_max,
-                                              ContactAt&& contact_at) {
-  if (include_zero) {
-    AlgebraicTime zero = AlgebraicTime::rational(0);
-    if (contact_at(zero)) return zero;
+                                              bool include_start, const Rational& t_max,
+                                              ContactAt&& contact_at,
+                                              const Rational& t_from = Rational(0)) {
+  if (include_start) {
+    AlgebraicTime start = AlgebraicTime::rational(t_from);
+    if (contact_at(start)) return start;
   }
   std::optional<AlgebraicTime> best;
   for (const Polynomial& poly : candidates) {
     if (poly.degree() < 1) continue;
-    for (AlgebraicTime& t : real_roots_in(poly, Rational(0), t_max)) {
-      if (include_zero && t.is_rational() && sgn(t.lo()) == 0) continue;  // already tried
+    for (AlgebraicTime& t : real_roots_in(poly, t_from, t_max)) {
+      if (include_start && t.is_rational() && cmp(t.lo(), t_from) == 0) continue;  // tried
       if (best && compare(t, *best) >= 0) break;  // ascending: no later root can be earlier
       if (contact_at(t)) {
         best = std::move(t);

@@ -10,9 +10,11 @@
 namespace exactccd::exact {
 
 /// delta >= 0 (delta = 0 is contact, as vertex_face_ccd_exact decides it); options validated.
+/// t_from in [0, t_max): the caller has certified that the primitives are never within delta
+/// on [0, t_from] when t_from > 0 (the filters' cleared prefix); the search starts there.
 CcdResult vertex_face_min_separation_exact(const RationalQuery& query, const Rational& delta,
-                                           const CcdOptions& options);
+                                           const CcdOptions& options, double t_from = 0.0);
 CcdResult edge_edge_min_separation_exact(const RationalQuery& query, const Rational& delta,
-                                         const CcdOptions& options);
+                                         const CcdOptions& options, double t_from = 0.0);
 
 }  // namespace exactccd::exact

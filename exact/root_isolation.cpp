@@ -58,6 +58,35 @@ struct Isolator {
 
 }  // namespace
 
+bool certainly_root_free(const Polynomial& p, const Rational& a, const Rational& b) {
+  if (p.is_zero()) return false;
+  const int d = p.degree();
+  if (d == 0) return true;
+  std::vector<Rational> c = p.taylor_shift(a).coefficients();  // p(a + s)
+  c.resize(static_cast<std::size_t>(d) + 1);
+  const Rational w = b - a;
+  Rational wi = 1;
+  for (int i = 1; i <= d; ++i) {  // p(a + w y)
+    wi *= w;
+    c[i] *= wi;
+  }
+  // q(x) = sum_i c_i x^i (1 + x)^(d - i)
+  std::vector<Rational> q(static_cast<std::size_t>(d) + 1);
+  for (int i = 0; i <= d; ++i) {
+    if (sgn(c[i]) == 0) continue;
+    long binomial = 1;  // C(d - i, k)
+    for (int k = 0; k <= d - i; ++k) {
+      q[i + k] += c[i] * binomial;
+      binomial = binomial * (d - i - k) / (k + 1);
+    }
+  }
+  if (sgn(q.front()) == 0 || sgn(q.back()) == 0) return false;  // p(a) = 0 or p(b) = 0
+  const int s = sgn(q.front());
+  for (const Rational& x : q)
+    if (sgn(x) == -s) return false;
+  return true;
+}
+
 std::vector<AlgebraicTime> real_roots_in(const Polynomial& p, const Rational& a,
                                          const Rational& b) {
   std::vector<AlgebraicTime> out;

@@ -5,8 +5,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
 
+#include "core/predicates/double_bits.hpp"
 #include "core/predicates/separation.hpp"
+#include "exact/polynomial.hpp"
 #include "filters/interval.hpp"
 
 namespace exactccd::filters {
@@ -198,24 +203,8 @@ struct EdgeEdgeMotion {
   }
 };
 
-/// Depth of the time subdivision: at most 2^kMaxDepth leaves, searched earliest first.
-constexpr int kMaxDepth = 6;
-
-/// Certainly never within delta on [lo, hi]: each piece of an adaptive bisection (depth
-/// first, earliest first) is shown apart, or the search gives up at the first piece of the
-/// deepest level that is not.
-template <class Motion>
-bool never_within(const Motion& m, double lo, double hi, int depth, const Interval& delta2,
-                  double delta) {
-  if (m.apart_over(Interval(lo, hi), delta2, delta)) return true;
-  if (depth == kMaxDepth) return false;
-  const double mid = lo + 0.5 * (hi - lo);  // rounded upwards: still inside (lo, hi]
-  if (!(mid > lo && mid < hi)) return false;
-  return never_within(m, lo, mid, depth + 1, delta2, delta) &&
-         never_within(m, mid, hi, depth + 1, delta2, delta);
-}
-
-/// The sign of a polynomial at t = 0 (its constant coefficient), certified or not.
+/// The sign of a polynomial at one instant (its constant coefficient, for positions at that
+/// instant), certified or not: an uncertain sign sets the flag and reads as 0.
 struct SignAtZero {
   bool* uncertain;
   template <int D>
@@ -234,13 +223,283 @@ predicates::MovingPoint<Interval> moving(const Eigen::Vector3d& x0, const Eigen:
                                    Vec3<Interval>{x1.x(), x1.y(), x1.z()});
 }
 
-/// The instant predicate at t = 0 with certified signs; true only when every sign it read
-/// was certain. PROOF: proofs/min_separation.md#within-at-zero
+using Position = Vec3<FixedPoly<Interval, 0>>;
+
+/// The enclosure of a vertex's position at the double t.
+Position position_at(const MovingVertex& v, double t) {
+  const auto x = v.at(Interval(t));
+  return {FixedPoly<Interval, 0>{{x[0]}}, FixedPoly<Interval, 0>{{x[1]}},
+          FixedPoly<Interval, 0>{{x[2]}}};
+}
+
+/// Every polynomial the instant predicate reads (the non-strict ones first, in
+/// for_each_polynomial's order, then the strict ones), with interval coefficients, padded to
+/// degree 6.
+struct PolynomialTable {
+  static constexpr int kMax = 32;
+  std::array<FixedPoly<Interval, 6>, kMax> poly;
+  std::array<bool, kMax> strict{};
+  int count = 0;
+
+  template <int D>
+  void add(const FixedPoly<Interval, D>& g, bool is_strict) {
+    static_assert(D <= 6, "the region polynomials have degree at most 6");
+    FixedPoly<Interval, 6>& p = poly[count];
+    for (int i = 0; i <= 6; ++i) p.c[i] = i <= D ? g.c[i] : Interval(0);
+    strict[count++] = is_strict;
+  }
+  template <class Separation>
+  explicit PolynomialTable(const Separation& s) {
+    s.for_each_polynomial([this](const auto& g) { add(g, false); });
+    s.for_each_strict_polynomial([this](const auto& g) { add(g, true); });
+  }
+};
+
+/// An enclosure of g over [lo, hi] in centred form: g(m + s) = sum_i c_i s^i (an interval
+/// Taylor shift to a double m inside), |s| <= h; much tighter than Horner over [lo, hi]
+/// where g is small and flat. PROOF: proofs/min_separation.md#interval-search
+Interval enclosure_over(const FixedPoly<Interval, 6>& g, double lo, double hi) {
+  const double m = lo + 0.5 * (hi - lo);  // inside [lo, hi] (rounded upwards, at most hi)
+  const double h = std::max(m - lo, hi - m);  // rounded upwards: >= every |t - m|
+  // Taylor shift by m: repeated synthetic division, exact in interval arithmetic's sense.
+  std::array<Interval, 7> c = g.c;
+  const Interval mi(m);
+  for (int k = 0; k < 6; ++k)
+    for (int i = 5; i >= k; --i) c[i] = c[i] + mi * c[i + 1];
+  Interval r = c[0];
+  double hk = 1.0;
+  for (int i = 1; i <= 6; ++i) {
+    hk *= h;  // rounded upwards
+    const Interval power = i % 2 ? Interval(-hk, hk) : Interval(0.0, hk);
+    r = r + c[i] * power;
+  }
+  return r;
+}
+
+/// Optimistic signs over [lo, hi]: a polynomial's certain sign when its enclosure excludes 0
+/// (or is exactly 0), else 0 for the non-strict conditions (which 0 satisfies) and "positive"
+/// for the strict ones. Every condition that holds somewhere in [lo, hi] reads as true.
+struct OptimisticSignOver {
+  double lo, hi;
+  template <int D>
+  static FixedPoly<Interval, 6> padded(const FixedPoly<Interval, D>& g) {
+    FixedPoly<Interval, 6> p;
+    for (int i = 0; i <= 6; ++i) p.c[i] = i <= D ? g.c[i] : Interval(0);
+    return p;
+  }
+  template <int D>
+  int operator()(const FixedPoly<Interval, D>& g) const {
+    const CertifiedSign s = certified_sign(enclosure_over(padded(g), lo, hi));
+    return s == CertifiedSign::uncertain ? 0 : static_cast<int>(s);
+  }
+  template <int D>
+  bool positive(const FixedPoly<Interval, D>& g) const {
+    return enclosure_over(padded(g), lo, hi).sup() > 0;
+  }
+};
+
+/// Depth to which separating directions are tried, and depth of the whole subdivision.
+constexpr int kDirectionDepth = 6;
+constexpr int kMaxDepth = 40;
+
+/// The search for the first time within delta over [0, t_max]: depth first, earliest half
+/// first. Every piece before the current one is certainly never within delta (`cleared` is
+/// its end). A piece is excluded by separating directions (depth <= kDirectionDepth) or by the
+/// signs of the region polynomials over it (deeper); a piece over which all signs are certain
+/// but one simple, monotone polynomial's is the first contact's, if the instant predicate
+/// certainly holds at its end. PROOF: proofs/min_separation.md#interval-search
+/// The k-th polynomial of PolynomialTable's order over the exact rationals (built on demand,
+/// only where interval signs cannot tighten a TOI).
+using ExactPolynomial = std::function<exact::Polynomial(int)>;
+
+template <class Motion, class Separation, class PointSeparation>
+class FirstWithinSearch {
+ public:
+  enum class Step : std::uint8_t { excluded, found, give_up };
+
+  FirstWithinSearch(const Motion& m, const Separation& moving_separation,
+                    const PointSeparation& at, const ExactPolynomial& exact_polynomial,
+                    const CcdOptions& options)
+      : m_(m), moving_(moving_separation), at_(at), options_(options),
+        delta2_(Interval(options.min_separation) * options.min_separation),
+        exact_polynomial_(exact_polynomial) {}
+
+  SeparationOutcome run() {
+    SeparationOutcome out;
+    const Step s = search(0.0, options_.t_max, 0);
+    out.cleared_until = cleared_;
+    if (s == Step::excluded) {
+      out.verdict = SeparationVerdict::never_within;
+    } else if (s == Step::found) {
+      out.verdict = SeparationVerdict::contact;
+      out.exact_used = exact_used_;
+      out.toi_lo = toi_lo_;
+      out.toi_hi = toi_hi_;
+    }
+    return out;
+  }
+
+ private:
+  Step search(double lo, double hi, int depth) {
+    if (depth <= kDirectionDepth &&
+        m_.apart_over(Interval(lo, hi), delta2_, options_.min_separation)) {
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    if (depth >= kDirectionDepth) {
+      const Step s = analyse(lo, hi);
+      if (s != Step::give_up || undecided_ == false) return s;
+    }
+    const double mid = lo + 0.5 * (hi - lo);  // rounded upwards: inside (lo, hi] or hi
+    if (depth == kMaxDepth || !(mid > lo && mid < hi)) return Step::give_up;
+    const Step left = search(lo, mid, depth + 1);
+    if (left != Step::excluded) return left;
+    return search(mid, hi, depth + 1);
+  }
+
+  /// Certain within delta at the double t (every sign read certain): +1; certainly not: -1;
+  /// 0 when some sign was uncertain.
+  int within_at(double t) const {
+    bool uncertain = false;
+    const bool within = at_(t).within_at(SignAtZero{&uncertain});
+    return uncertain ? 0 : (within ? 1 : -1);
+  }
+
+  /// The signs of every region polynomial over [lo, hi]; sets undecided_ when splitting the
+  /// piece may decide it.
+  Step analyse(double lo, double hi) {
+    undecided_ = false;
+    if (!table_) table_.emplace(moving_);
+    int uncertain = 0, which = -1;
+    for (int k = 0; k < table_->count; ++k) {
+      if (certified_sign(enclosure_over(table_->poly[k], lo, hi)) == CertifiedSign::uncertain) {
+        ++uncertain;
+        which = k;
+      }
+    }
+    // Not within at lo: lo is cleared, or lo = 0 is tested.
+    if (lo == 0.0 && cleared_ == 0.0) {
+      const int at_zero = within_at(0.0);
+      if (at_zero == 0) return Step::give_up;
+      if (at_zero > 0) {
+        toi_lo_ = toi_hi_ = 0.0;
+        return Step::found;
+      }
+    }
+    if (uncertain == 0) {  // every sign constant over the piece: not within anywhere in it
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    if (uncertain > 1 || table_->strict[which]) {
+      // Within at no t of the piece even with every uncertain condition read as true
+      // (within_at is monotone in the conditions): excluded.
+      const OptimisticSignOver optimistic{lo, hi};
+      if (!moving_.within_at(optimistic,
+                             [&optimistic](const auto& q) { return optimistic.positive(q); })) {
+        cleared_ = hi;
+        return Step::excluded;
+      }
+      undecided_ = true;
+      return Step::give_up;
+    }
+    const FixedPoly<Interval, 6>& g = table_->poly[which];
+    FixedPoly<Interval, 6> slope_poly{};
+    for (int i = 1; i <= 6; ++i) slope_poly.c[i - 1] = g.c[i] * Interval(i);
+    slope_poly.c[6] = Interval(0);  // Interval_nt default-constructs no value
+    const CertifiedSign slope = certified_sign(enclosure_over(slope_poly, lo, hi));
+    const int s_lo = certain_strict_sign(predicates::evaluate(g, Interval(lo)));
+    const int s_hi = certain_strict_sign(predicates::evaluate(g, Interval(hi)));
+    if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero || s_lo == 0 ||
+        s_hi == 0) {
+      undecided_ = true;
+      return Step::give_up;
+    }
+    if (s_lo == s_hi) {  // monotone, one sign at both ends: no root, as uncertain == 0
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    // g has one simple root r in (lo, hi) and is the only sign that changes over the piece.
+    // At r every condition reads as at the end where g's (non-strict) condition holds, so
+    // the piece is within delta from r on when within at hi, and nowhere when not.
+    const int at_hi = within_at(hi);
+    if (at_hi == 0) return Step::give_up;
+    if (at_hi < 0) {
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    which_ = which;
+    return tighten(g, lo, hi, s_lo);
+  }
+
+  /// The first contact is g's root r in (lo, hi), g(lo) of sign s_lo: bisection with
+  /// certified signs of g to the tightest pair of doubles (or toi_width).
+  Step tighten(const FixedPoly<Interval, 6>& g, double lo, double hi, int s_lo) {
+    for (;;) {
+      if (options_.toi_width > 0 && hi - lo <= options_.toi_width) break;  // rounded up
+      double mid = 0;
+      if (!predicates::middle_double(lo, hi, &mid)) break;
+      CertifiedSign s = certified_sign(predicates::evaluate(g, Interval(mid)));
+      if (s == CertifiedSign::uncertain) {  // near r: g's exact sign at the double mid
+        if (!exact_g_) exact_g_.emplace(exact_polynomial_(which_));
+        s = static_cast<CertifiedSign>(exact_g_->sign_at(exact::Rational(mid)));
+        exact_used_ = true;
+      }
+      if (s == CertifiedSign::zero) {
+        lo = hi = mid;
+        break;
+      }
+      (static_cast<int>(s) == s_lo ? lo : hi) = mid;
+    }
+    toi_lo_ = lo;
+    toi_hi_ = hi;
+    return Step::found;
+  }
+
+  const Motion& m_;
+  const Separation& moving_;
+  const PointSeparation& at_;
+  const CcdOptions& options_;
+  const Interval delta2_;
+  std::optional<PolynomialTable> table_;
+  const ExactPolynomial& exact_polynomial_;
+  std::optional<exact::Polynomial> exact_g_;
+  int which_ = -1;
+  bool exact_used_ = false;
+  double cleared_ = 0.0;
+  double toi_lo_ = 0.0, toi_hi_ = 0.0;
+  bool undecided_ = false;
+};
+
+template <class Motion, class Separation, class PointSeparation>
+SeparationOutcome first_within(const Motion& m, const Separation& s, const PointSeparation& at,
+                               const ExactPolynomial& exact_polynomial,
+                               const CcdOptions& options) {
+  return FirstWithinSearch<Motion, Separation, PointSeparation>(m, s, at, exact_polynomial,
+                                                               options)
+      .run();
+}
+
+/// Polynomial k (PolynomialTable's order: non-strict, then strict) of a separation over the
+/// exact rationals.
 template <class Separation>
-bool certainly_within_at_zero(const Separation& separation) {
-  bool uncertain = false;
-  const bool within = separation.within_at(SignAtZero{&uncertain});
-  return within && !uncertain;
+exact::Polynomial polynomial_number(const Separation& s, int k) {
+  exact::Polynomial found;
+  int index = 0;
+  auto pick = [&](const auto& g) {
+    if (index++ == k) found = exact::Polynomial(g);
+  };
+  s.for_each_polynomial(pick);
+  s.for_each_strict_polynomial(pick);
+  return found;
+}
+
+predicates::MovingPoint<exact::Rational> exact_moving(const Eigen::Vector3d& x0,
+                                                      const Eigen::Vector3d& x1) {
+  return predicates::linear_motion(
+      Vec3<exact::Rational>{exact::Rational(x0.x()), exact::Rational(x0.y()),
+                            exact::Rational(x0.z())},
+      Vec3<exact::Rational>{exact::Rational(x1.x()), exact::Rational(x1.y()),
+                            exact::Rational(x1.z())});
 }
 
 }  // namespace
@@ -255,35 +514,55 @@ bool edge_edge_separation_culling(const EdgeEdgeQuery& q, double delta) {
                            {&q.eb0_t0, &q.eb1_t0, &q.eb0_t1, &q.eb1_t1}, delta);
 }
 
-SeparationVerdict vertex_face_separation_filter(const VertexFaceQuery& q,
+SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                 const CcdOptions& options) {
   const RoundingGuard upward;
-  const double delta = options.min_separation;
-  const Interval delta2 = Interval(delta) * delta;
   const VertexFaceMotion m{{MovingVertex(q.p_t0, q.p_t1), MovingVertex(q.a_t0, q.a_t1),
                             MovingVertex(q.b_t0, q.b_t1), MovingVertex(q.c_t0, q.c_t1)}};
-  if (never_within(m, 0.0, options.t_max, 0, delta2, delta))
-    return SeparationVerdict::never_within;
+  const Interval delta2 = Interval(options.min_separation) * options.min_separation;
   const auto separation = predicates::vertex_face_separation(
       moving(q.p_t0, q.p_t1), moving(q.a_t0, q.a_t1), moving(q.b_t0, q.b_t1),
       moving(q.c_t0, q.c_t1), delta2);
-  return certainly_within_at_zero(separation) ? SeparationVerdict::within_at_zero
-                                              : SeparationVerdict::uncertain;
+  const auto at = [&m, &delta2](double t) {
+    return predicates::vertex_face_separation(position_at(m.v[0], t), position_at(m.v[1], t),
+                                              position_at(m.v[2], t), position_at(m.v[3], t),
+                                              delta2);
+  };
+  const ExactPolynomial exact_polynomial = [&q, &options](int k) {
+    const exact::Rational d(options.min_separation);
+    return polynomial_number(
+        predicates::vertex_face_separation(exact_moving(q.p_t0, q.p_t1),
+                                           exact_moving(q.a_t0, q.a_t1),
+                                           exact_moving(q.b_t0, q.b_t1),
+                                           exact_moving(q.c_t0, q.c_t1), exact::Rational(d * d)),
+        k);
+  };
+  return first_within(m, separation, at, exact_polynomial, options);
 }
 
-SeparationVerdict edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
+SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
   const RoundingGuard upward;
-  const double delta = options.min_separation;
-  const Interval delta2 = Interval(delta) * delta;
   const EdgeEdgeMotion m{{MovingVertex(q.ea0_t0, q.ea0_t1), MovingVertex(q.ea1_t0, q.ea1_t1),
                           MovingVertex(q.eb0_t0, q.eb0_t1), MovingVertex(q.eb1_t0, q.eb1_t1)}};
-  if (never_within(m, 0.0, options.t_max, 0, delta2, delta))
-    return SeparationVerdict::never_within;
+  const Interval delta2 = Interval(options.min_separation) * options.min_separation;
   const auto separation = predicates::edge_edge_separation(
       moving(q.ea0_t0, q.ea0_t1), moving(q.ea1_t0, q.ea1_t1), moving(q.eb0_t0, q.eb0_t1),
       moving(q.eb1_t0, q.eb1_t1), delta2);
-  return certainly_within_at_zero(separation) ? SeparationVerdict::within_at_zero
-                                              : SeparationVerdict::uncertain;
+  const auto at = [&m, &delta2](double t) {
+    return predicates::edge_edge_separation(position_at(m.v[0], t), position_at(m.v[1], t),
+                                            position_at(m.v[2], t), position_at(m.v[3], t),
+                                            delta2);
+  };
+  const ExactPolynomial exact_polynomial = [&q, &options](int k) {
+    const exact::Rational d(options.min_separation);
+    return polynomial_number(
+        predicates::edge_edge_separation(exact_moving(q.ea0_t0, q.ea0_t1),
+                                         exact_moving(q.ea1_t0, q.ea1_t1),
+                                         exact_moving(q.eb0_t0, q.eb0_t1),
+                                         exact_moving(q.eb1_t0, q.eb1_t1), exact::Rational(d * d)),
+        k);
+  };
+  return first_within(m, separation, at, exact_polynomial, options);
 }
 
 }  // namespace exactccd::filters

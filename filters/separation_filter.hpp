@@ -1,6 +1,6 @@
 // Certified floating-point decisions for minimum-separation CCD (delta > 0): culling by swept
-// boxes more than delta apart, separating directions over adaptively subdivided time
-// intervals (never within delta), and "within delta at t = 0". `uncertain` sends the query to
+// boxes more than delta apart, then a search over adaptively subdivided time intervals
+// (separating directions, signs of the region polynomials) for the first time within delta. `uncertain` sends the query to
 // the exact path. PROOF: proofs/min_separation.md#filters
 #pragma once
 
@@ -15,15 +15,25 @@ bool vertex_face_separation_culling(const VertexFaceQuery& q, double delta);
 bool edge_edge_separation_culling(const EdgeEdgeQuery& q, double delta);
 
 enum class SeparationVerdict : std::uint8_t {
-  never_within,    ///< certainly never within delta on [0, t_max]
-  within_at_zero,  ///< certainly within delta at t = 0 (the TOI is 0)
+  never_within,  ///< certainly never within delta on [0, t_max]
+  contact,       ///< certainly within delta, first at t* in [toi_lo, toi_hi]
   uncertain,
+};
+
+struct SeparationOutcome {
+  SeparationVerdict verdict = SeparationVerdict::uncertain;
+  /// When contact: toi_lo <= t* <= toi_hi, the tightest pair of doubles (or toi_width).
+  double toi_lo = 0.0, toi_hi = 0.0;
+  /// Exact signs at double times were needed to tighten the TOI.
+  bool exact_used = false;
+  /// When uncertain: never within delta on [0, cleared_until] (certified when > 0).
+  double cleared_until = 0.0;
 };
 
 /// The interval stages on finite input, options validated, delta = options.min_separation > 0.
 /// No heap allocation.
-SeparationVerdict vertex_face_separation_filter(const VertexFaceQuery& q,
+SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                 const CcdOptions& options);
-SeparationVerdict edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options);
+SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options);
 
 }  // namespace exactccd::filters

@@ -47,6 +47,7 @@ CheckTally check_queries(const QueryFile& input, std::size_t begin, std::size_t 
   CcdOptions ccd_options;
   ccd_options.t_max = settings.t_max;
   ccd_options.mode = settings.mode;
+  ccd_options.min_separation = settings.min_separation;
   CheckTally tally;
   tally.file = input.path;
   const std::size_t stop = std::min(end, input.queries.size());

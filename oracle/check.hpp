@@ -17,6 +17,7 @@ namespace exactccd::oracle {
 struct CheckSettings {
   double t_max = 1.0;          ///< in (0, 1]
   Mode mode = Mode::filtered;  ///< the path that decides every query
+  double min_separation = 0.0;  ///< delta >= 0 (0: contact)
 };
 
 /// Called after each query of the file: its 0-based index, the file's query count, the result.

@@ -234,12 +234,13 @@ void print_check_csv(std::ostream& out, Mode mode, const std::vector<CheckTally>
 }
 
 void print_check_json(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
-                      const CheckTally& total, double t_max) {
+                      const CheckTally& total, double t_max, double min_separation) {
   const std::vector<Stage> stages = reported_stages(mode, total);
   nlohmann::ordered_json j;
   j["mode"] = to_string(mode);
   j.update(counts_json(total, stages));
   j["t_max"] = t_max;
+  j["min_separation"] = min_separation;
   j["files"] = nlohmann::ordered_json::array();
   for (const CheckTally& f : files) {
     nlohmann::ordered_json entry;

@@ -48,6 +48,7 @@ void print_check_csv(std::ostream& out, Mode mode, const std::vector<CheckTally>
                      const CheckTally& total);
 
 void print_check_json(std::ostream& out, Mode mode, const std::vector<CheckTally>& files,
-                      const CheckTally& total, double t_max);
+                      const CheckTally& total, double t_max,
+                      double min_separation = 0.0);
 
 }  // namespace exactccd::oracle

@@ -124,6 +124,17 @@ void add_t_max_option(CLI::App* command, double& t_max) {
       ->capture_default_str();
 }
 
+void add_min_separation_option(CLI::App* command, double& delta) {
+  command
+      ->add_option("--min-separation", delta,
+                   "Minimum separation delta >= 0: a query collides when its primitives come "
+                   "within Euclidean distance delta, its TOI is the earliest such time (0: "
+                   "contact). The files' truth column is read as the truth for this delta "
+                   "(generate --min-separation writes such files)")
+      ->check(numeric_text(false))
+      ->capture_default_str();
+}
+
 std::tuple<CLI::Option*, CLI::Option*, CLI::Option*> add_simulation_options(
     CLI::App* command, sim::SimulationConfig& config) {
   CLI::Option* resolution =

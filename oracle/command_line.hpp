@@ -36,6 +36,8 @@ void add_force_flag(CLI::App* command, bool& force);
 /// --type vf|ee|vertex-face|edge-edge (parse_type_name).
 void add_type_option(CLI::App* command, std::string& type_name);
 void add_t_max_option(CLI::App* command, double& t_max);
+/// --min-separation D: the run decides minimum-separation CCD with delta = D (0: contact).
+void add_min_separation_option(CLI::App* command, double& delta);
 
 /// --resolution, --steps, --seed of the simulation-like set.
 std::tuple<CLI::Option*, CLI::Option*, CLI::Option*> add_simulation_options(

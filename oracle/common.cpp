@@ -1,3 +1,4 @@
+#include <cmath>
 #include "oracle/common.hpp"
 
 #include <cstdio>
@@ -25,6 +26,11 @@ void require_some_queries(const std::vector<std::string>& empty_files, std::size
 void validate_t_max(double t_max) {
   if (!(t_max > 0.0 && t_max <= 1.0))
     throw UsageError("--t-max must lie in (0, 1], got " + format_double(t_max));
+}
+
+void validate_min_separation(double delta) {
+  if (!(delta >= 0.0) || !std::isfinite(delta))
+    throw UsageError("--min-separation must be finite and >= 0, got " + format_double(delta));
 }
 
 std::string format_double(double value) {

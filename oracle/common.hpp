@@ -41,6 +41,9 @@ void require_some_queries(const std::vector<std::string>& empty_files, std::size
 /// Throws UsageError unless t_max lies in (0, 1] (NaN rejected).
 void validate_t_max(double t_max);
 
+/// Throws UsageError unless delta (--min-separation) is finite and >= 0.
+void validate_min_separation(double delta);
+
 /// `value` with 17 significant digits (%.17g): reading it back gives the same double.
 std::string format_double(double value);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "exactccd/ccd.hpp"
+#include "exactccd/rational_query.hpp"
 #include "exactccd/query_file.hpp"
 #include "oracle/answers_file.hpp"
 #include "oracle/common.hpp"
@@ -13,7 +14,7 @@ namespace exactccd::oracle {
 // `exact` is exact_ccd(query) with toi_width 0 and a contact, so lo = toi_lo <= t* <= hi =
 // toi_hi with lo == hi == t* when t* is a double, and otherwise consecutive doubles lo < t* < hi.
 bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
-                              const CcdResult& exact) {
+                              const CcdResult& exact, double min_separation) {
   if (toi <= mpq_class(exact.toi_lo)) return false;  // toi <= lo <= t*
   if (exact.toi_lo == exact.toi_hi || toi >= mpq_class(exact.toi_hi)) return true;
   // lo < toi < hi, and t* also lies in (lo, hi): decide exactly on the motion over [0, toi],
@@ -30,13 +31,14 @@ bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
     end.y = x0.y + toi * (x1.y - x0.y);
     end.z = x0.z + toi * (x1.z - x0.z);
   }
-  const CcdResult restricted = exact_ccd(over_toi);  // t_max 1, toi_width 0
+  // Reparametrising time changes no distance: the same holds for the first time within delta.
+  const CcdResult restricted = exact_ccd(over_toi, mpq_class(min_separation));  // t_max 1
   return restricted.collides && restricted.toi_lo < 1.0;
 }
 
 GradeFindings grade_file(const std::string& queries_path, const std::string& answers_path,
                          std::optional<QueryType> type, double t_max,
-                         const GradeProgress& progress) {
+                         const GradeProgress& progress, double min_separation) {
   // Before the type: a folder given as the queries is named as such, not as an untyped file.
   require_regular_file(queries_path, "a CSV file (--queries takes one file)");
   const QueryFile input = read_query_file(queries_path, resolve_query_type(queries_path, type));
@@ -46,14 +48,15 @@ GradeFindings grade_file(const std::string& queries_path, const std::string& ans
   const std::vector<Answer> answers =
       read_answers_file(answers_path, input.queries.size(), queries_path, t_max);
 
-  return grade_answers(input, answers, t_max, 0, input.queries.size(), progress);
+  return grade_answers(input, answers, t_max, 0, input.queries.size(), progress, min_separation);
 }
 
 GradeFindings grade_answers(const QueryFile& input, const std::vector<Answer>& answers,
                             double t_max, std::size_t begin, std::size_t end,
-                            const GradeProgress& progress) {
+                            const GradeProgress& progress, double min_separation) {
   CcdOptions ccd_options;
   ccd_options.t_max = t_max;
+  ccd_options.min_separation = min_separation;
   ccd_options.toi_width = 0.0;  // the tightest doubles around t*, which the toi test needs
   GradeFindings findings;
   const std::size_t stop = std::min({end, input.queries.size(), answers.size()});
@@ -66,7 +69,7 @@ GradeFindings grade_answers(const QueryFile& input, const std::vector<Answer>& a
     if (answer.collides && !exact.collides) findings.false_positives.push_back(i);
     if (!answer.collides && exact.collides) findings.false_negatives.push_back(i);
     if (answer.collides && exact.collides && answer.toi &&
-        later_than_first_contact(*answer.toi, query, exact))
+        later_than_first_contact(*answer.toi, query, exact, min_separation))
       findings.non_conservative.push_back(i);
     if (progress) progress(i + 1, input.queries.size());
   }

@@ -26,18 +26,19 @@ using GradeProgress = std::function<void(std::size_t done, std::size_t count)>;
 /// queries, an unknown type, or an answers file that does not match (answers_file.hpp).
 GradeFindings grade_file(const std::string& queries_path, const std::string& answers_path,
                          std::optional<QueryType> type, double t_max,
-                         const GradeProgress& progress = {});
+                         const GradeProgress& progress = {}, double min_separation = 0.0);
 
 /// The same on answers [begin, end) of files already read (`end` clipped to the query count;
 /// indices are the file's): one shard of it, e.g. a task of a distributed grade. `answers` as
 /// read_answers_file gives them for `input` over [0, t_max].
 GradeFindings grade_answers(const QueryFile& input, const std::vector<Answer>& answers,
                             double t_max, std::size_t begin, std::size_t end,
-                            const GradeProgress& progress = {});
+                            const GradeProgress& progress = {}, double min_separation = 0.0);
 
 /// Whether a reported `toi` (an exact rational in [0, t_max]) is later than the exact first
 /// contact time t* of `query`, exactly; `exact` is exact_ccd(query) with toi_width 0, a contact.
+/// With min_separation delta > 0, t* is the first time within delta.
 bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
-                              const CcdResult& exact);
+                              const CcdResult& exact, double min_separation = 0.0);
 
 }  // namespace exactccd::oracle

@@ -36,11 +36,13 @@ void print_grade_text(std::ostream& out, const GradeFindings& f) {
                        : "some answers are wrong or not conservative\n");
 }
 
-void print_grade_json(std::ostream& out, const GradeFindings& f, double t_max) {
+void print_grade_json(std::ostream& out, const GradeFindings& f, double t_max,
+                      double min_separation) {
   nlohmann::ordered_json j;
   j["queries"] = f.queries;
   j["tois_given"] = f.tois_given;
   j["t_max"] = t_max;
+  j["min_separation"] = min_separation;
   j["false_positives"] = f.false_positives.size();
   j["false_negatives"] = f.false_negatives.size();
   j["non_conservative_tois"] = f.non_conservative.size();

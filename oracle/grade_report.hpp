@@ -24,6 +24,7 @@ struct GradeFindings {
 inline constexpr std::size_t kMaxListedIndices = 20;
 
 void print_grade_text(std::ostream& out, const GradeFindings& findings);
-void print_grade_json(std::ostream& out, const GradeFindings& findings, double t_max);
+void print_grade_json(std::ostream& out, const GradeFindings& findings, double t_max,
+                      double min_separation = 0.0);
 
 }  // namespace exactccd::oracle

@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <tbb/parallel_for.h>
 
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
@@ -123,20 +127,76 @@ volatile std::size_t g_sink;  // keeps the batch passes' results observable
 constexpr std::size_t kWorstCandidates = 16;
 constexpr int kWorstRetimes = 2;
 
+/// A data set's answers from the exact path at one minimum separation delta > 0: the truth
+/// for that delta (a file's truth column is for contact), and the TOIs the errors are
+/// measured against.
+struct ExactAnswers {
+  std::vector<CcdResult> vertex_face, edge_edge;
+};
+
+ExactAnswers exact_answers(const Dataset& d, double delta) {
+  CcdOptions options;
+  options.mode = Mode::exact;
+  options.min_separation = delta;
+  ExactAnswers a;
+  a.vertex_face.resize(d.vertex_face.size());
+  a.edge_edge.resize(d.edge_edge.size());
+  tbb::parallel_for(std::size_t{0}, d.vertex_face.size(), [&](std::size_t i) {
+    a.vertex_face[i] = vertex_face_ccd(d.vertex_face[i], options);
+  });
+  tbb::parallel_for(std::size_t{0}, d.edge_edge.size(), [&](std::size_t i) {
+    a.edge_edge[i] = edge_edge_ccd(d.edge_edge[i], options);
+  });
+  return a;
+}
+
+/// The diagonal of the box of every coordinate of the data set (its "scene size").
+double dataset_size(const Dataset& d) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  auto add = [&](const Eigen::Vector3d& x) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  };
+  for (const VertexFaceQuery& q : d.vertex_face)
+    for (const auto* x : {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0, &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1})
+      add(*x);
+  for (const EdgeEdgeQuery& q : d.edge_edge)
+    for (const auto* x : {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1,
+                          &q.eb0_t1, &q.eb1_t1})
+      add(*x);
+  return d.size() == 0 ? 0.0 : (hi - lo).norm();
+}
+
 struct Measurement {
   std::string dataset;
   Mode mode = Mode::filtered;
+  double delta = 0.0;  // the minimum separation of the run (0: contact)
+  // Against the exact path's TOIs (delta > 0 only): contacts both report whose toi_lo lies
+  // after the exact toi_hi (not conservative), and the largest |toi_lo - exact toi_lo|.
+  bool toi_checked = false;
+  std::size_t late_tois = 0;
+  double max_toi_error = 0.0;
   CheckTally tally;  // verdicts against the truth and deciding stages, as `check` counts them
   double mean_ns = 0.0, median_ns = 0.0;
   double max_ns = 0.0;  // the slowest query: its fastest of kWorstRetimes + 1 single calls
 };
 
-Measurement measure(const Dataset& d, Mode mode, int repetitions, double overhead_ns) {
+Measurement measure(const Dataset& d, Mode mode, double delta, const ExactAnswers* exact,
+                    int repetitions, double overhead_ns) {
   CcdOptions options;
   options.mode = mode;
+  options.min_separation = delta;
   Measurement m;
   m.dataset = d.label;
   m.mode = mode;
+  m.delta = delta;
+  m.toi_checked = exact != nullptr;
+  auto compare_toi = [&m](const CcdResult& r, const CcdResult& e) {
+    if (!r.collides || !e.collides) return;
+    m.late_tois += r.toi_lo > e.toi_hi;
+    m.max_toi_error = std::max(m.max_toi_error, std::abs(r.toi_lo - e.toi_lo));
+  };
 
   // One pass timing each query on its own; it also gives the verdicts.
   std::vector<double> per_query;
@@ -146,14 +206,24 @@ Measurement measure(const Dataset& d, Mode mode, int repetitions, double overhea
     const CcdResult r = vertex_face_ccd(d.vertex_face[i], options);
     const auto stop = Clock::now();
     per_query.push_back(nanoseconds(stop - start));
-    count_query(m.tally, r, d.vertex_face_truth[i]);
+    if (exact) {
+      count_query(m.tally, r, exact->vertex_face[i].collides);
+      compare_toi(r, exact->vertex_face[i]);
+    } else {
+      count_query(m.tally, r, d.vertex_face_truth[i]);
+    }
   }
   for (std::size_t i = 0; i < d.edge_edge.size(); ++i) {
     const auto start = Clock::now();
     const CcdResult r = edge_edge_ccd(d.edge_edge[i], options);
     const auto stop = Clock::now();
     per_query.push_back(nanoseconds(stop - start));
-    count_query(m.tally, r, d.edge_edge_truth[i]);
+    if (exact) {
+      count_query(m.tally, r, exact->edge_edge[i].collides);
+      compare_toi(r, exact->edge_edge[i]);
+    } else {
+      count_query(m.tally, r, d.edge_edge_truth[i]);
+    }
   }
   // The slowest queries timed again, each keeping its fastest call: one interrupt or page fault
   // during a single call must not pass for the query's cost.
@@ -200,8 +270,12 @@ bool certified(Mode mode) { return mode != Mode::float_only; }
 void print_table(const std::vector<Measurement>& results) {
   std::size_t width = 7;
   for (const Measurement& m : results) width = std::max(width, m.dataset.size());
-  std::printf("%-*s %-10s %9s %10s %10s %9s %9s %10s", static_cast<int>(width), "dataset",
-              "mode", "queries", "mean_ns", "median_ns", "false_pos", "false_neg", "max_ns");
+  bool separation = false;
+  for (const Measurement& m : results) separation = separation || m.delta > 0;
+  std::printf("%-*s %-10s", static_cast<int>(width), "dataset", "mode");
+  if (separation) std::printf(" %10s %8s %11s", "delta", "toi_late", "toi_err_max");
+  std::printf(" %9s %10s %10s %9s %9s %10s", "queries", "mean_ns", "median_ns", "false_pos",
+              "false_neg", "max_ns");
   const std::vector<Stage>& stages = all_stages();
   std::vector<int> widths;
   for (const Stage s : stages) {
@@ -210,9 +284,13 @@ void print_table(const std::vector<Measurement>& results) {
   }
   std::printf("\n");
   for (const Measurement& m : results) {
-    std::printf("%-*s %-10s %9zu %10.1f %10.1f %9zu %9zu %10.0f", static_cast<int>(width),
-                m.dataset.c_str(), to_string(m.mode), m.tally.queries, m.mean_ns, m.median_ns,
-                m.tally.false_positives, m.tally.false_negatives, m.max_ns);
+    std::printf("%-*s %-10s", static_cast<int>(width), m.dataset.c_str(), to_string(m.mode));
+    if (separation && m.toi_checked)
+      std::printf(" %10.3g %8zu %11.3g", m.delta, m.late_tois, m.max_toi_error);
+    else if (separation)
+      std::printf(" %10.3g %8s %11s", m.delta, "-", "-");
+    std::printf(" %9zu %10.1f %10.1f %9zu %9zu %10.0f", m.tally.queries, m.mean_ns,
+                m.median_ns, m.tally.false_positives, m.tally.false_negatives, m.max_ns);
     for (std::size_t k = 0; k < stages.size(); ++k)
       std::printf(" %*.2f%%", widths[k] - 1, 100.0 * m.tally.stage_share(stages[k]));
     std::printf("\n");
@@ -226,6 +304,11 @@ void print_json(const std::vector<Measurement>& results, const std::vector<Datas
     nlohmann::ordered_json j;
     j["dataset"] = m.dataset;
     j["mode"] = to_string(m.mode);
+    j["min_separation"] = m.delta;
+    if (m.toi_checked) {
+      j["late_tois"] = m.late_tois;
+      j["max_toi_error"] = m.max_toi_error;
+    }
     j["queries"] = m.tally.queries;
     j["mean_ns"] = m.mean_ns;
     j["median_ns"] = m.median_ns;
@@ -242,7 +325,7 @@ void print_json(const std::vector<Measurement>& results, const std::vector<Datas
     j["stage_counts"] = std::move(counts);
     j["collisions"] = m.tally.collisions;
     for (const Dataset& d : datasets)
-      if (d.label == m.dataset) j["truth"] = d.truth_source;
+      if (d.label == m.dataset) j["truth"] = m.toi_checked ? "exact path" : d.truth_source;
     j["repetitions"] = repetitions;
     j["timer_overhead_ns"] = overhead_ns;
     all.push_back(std::move(j));
@@ -276,9 +359,25 @@ int run_bench(const BenchOptions& options) {
 
   const double overhead_ns = timer_overhead_ns();
   std::vector<Measurement> results;
-  for (const Dataset& d : datasets)
-    for (const Mode mode : options.modes)
-      results.push_back(measure(d, mode, options.repetitions, overhead_ns));
+  for (const Dataset& d : datasets) {
+    const double size = dataset_size(d);
+    for (const double separation : options.min_separations) {
+      const double delta = options.relative_separation ? separation * size : separation;
+      validate_min_separation(delta);
+      // delta > 0: the truth column (for contact) does not apply; the exact path's does.
+      std::optional<ExactAnswers> exact;
+      if (delta > 0) exact = exact_answers(d, delta);
+      for (const Mode mode : options.modes)
+        results.push_back(measure(d, mode, delta, exact ? &*exact : nullptr, options.repetitions,
+                                  overhead_ns));
+    }
+    if (options.relative_separation) {
+      char note[160];
+      std::snprintf(note, sizeof note, "%s: size (box diagonal) %.6g; delta = factor x size",
+                    d.label.c_str(), size);
+      notes.push_back(note);
+    }
+  }
 
   if (options.json) {
     print_json(results, datasets, options.repetitions, overhead_ns);
@@ -295,6 +394,12 @@ int run_bench(const BenchOptions& options) {
                   d.truth_source.c_str());
     for (const std::string& note : notes) std::printf("%s\n", note.c_str());
     std::printf("last columns: share of queries decided by each stage\n");
+    if (std::any_of(results.begin(), results.end(), [](const Measurement& m) {
+          return m.delta > 0;
+        }))
+      std::printf("delta > 0: truth and TOIs from the exact path at that delta; toi_late: "
+                  "contacts whose toi_lo is after the exact toi_hi; toi_err_max: largest "
+                  "|toi_lo - exact toi_lo|\n");
     print_table(results);
   }
   for (const Measurement& m : results)

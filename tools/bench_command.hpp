@@ -19,6 +19,10 @@ struct BenchOptions {
   bool simulation = false;         ///< add the simulation-like set (truth: the exact path)
   sim::SimulationConfig simulation_config;
   bool json = false;
+  /// --min-separation: each delta (or factor, with relative_separation) is one run per mode.
+  std::vector<double> min_separations = {0.0};
+  /// --relative-separation: the deltas are factors of each data set's size (box diagonal).
+  bool relative_separation = false;
   /// Used when `paths` is empty and `simulation` false.
   std::string default_path;
 };

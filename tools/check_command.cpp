@@ -40,6 +40,7 @@ void write_result_line(OutputFile& out, const std::string& file, std::size_t ind
 
 int run_check(const CheckOptions& options) {
   validate_t_max(options.t_max);
+  validate_min_separation(options.min_separation);
   const auto files = list_files(options);
 
   // Opened before the work, so that an unwritable --out fails at once; renamed into place
@@ -52,6 +53,7 @@ int run_check(const CheckOptions& options) {
   CheckSettings settings;
   settings.t_max = options.t_max;
   settings.mode = options.mode;
+  settings.min_separation = options.min_separation;
   Progress progress;
   std::vector<CheckTally> tallies;
   CheckTally total;
@@ -74,7 +76,8 @@ int run_check(const CheckOptions& options) {
 
   if (out_file) out_file->commit();
   if (options.format == "json")
-    print_check_json(std::cout, options.mode, tallies, total, options.t_max);
+    print_check_json(std::cout, options.mode, tallies, total, options.t_max,
+                     options.min_separation);
   else if (options.format == "csv")
     print_check_csv(std::cout, options.mode, tallies, total);
   else

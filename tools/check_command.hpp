@@ -14,6 +14,7 @@ struct CheckOptions {
   std::vector<std::string> paths;  ///< CSV files or directories searched for them
   std::optional<QueryType> type;   ///< --type: overrides the type from the folder name
   double t_max = 1.0;
+  double min_separation = 0.0;  ///< --min-separation: delta >= 0 (0: contact)
   Mode mode = Mode::filtered;  ///< --mode: the path that decides every query
   /// --format: table (fits 100 columns), wide (every column), csv, json (one object).
   std::string format = "table";

@@ -14,6 +14,7 @@ struct GradeOptions {
   std::string answers_path;  ///< see oracle/answers_file.hpp
   std::optional<QueryType> type;
   double t_max = 1.0;
+  double min_separation = 0.0;  ///< --min-separation: delta >= 0 (0: contact)
   bool json = false;
 };
 

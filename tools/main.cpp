@@ -128,6 +128,7 @@ int main(int argc, char** argv) {
   add_force_flag(check, check_options.force);
   add_type_option(check, check_type);
   add_t_max_option(check, check_options.t_max);
+  add_min_separation_option(check, check_options.min_separation);
   check
       ->add_option("PATH", check_options.paths,
                    "CSV files, or directories searched for vertex-face/*.csv and "
@@ -150,6 +151,7 @@ int main(int argc, char** argv) {
   grade->add_flag("--json", grade_options.json, "Print one JSON object instead of text");
   add_type_option(grade, grade_type);
   add_t_max_option(grade, grade_options.t_max);
+  add_min_separation_option(grade, grade_options.min_separation);
 
   SimulateOptions simulate_options;
   std::string simulate_truth = "exact";
@@ -207,6 +209,18 @@ int main(int argc, char** argv) {
   std::tie(bench_resolution, bench_steps, bench_seed) =
       add_simulation_options(bench, bench_options.simulation_config);
   add_type_option(bench, bench_type);
+  bench
+      ->add_option("--min-separation", bench_options.min_separations,
+                   "Comma-separated minimum separations delta >= 0, each a run of every mode "
+                   "(0: contact, truth from the data set; delta > 0: truth and TOIs from the "
+                   "exact path at delta, float_only is then the common practice: the float "
+                   "cubic's roots, the distance at each compared with delta)")
+      ->delimiter(',')
+      ->check(numeric_text(false))
+      ->capture_default_str();
+  bench->add_flag("--relative-separation", bench_options.relative_separation,
+                  "Read --min-separation as factors of each data set's size (the diagonal of "
+                  "the box of all its coordinates)");
   bench->add_option("PATH", bench_options.paths, "CSV files or folders, one data set each");
 
   // `exactccd study` runs the study program of the benchmarks (bench/study): see forward_to_study.

@@ -4,7 +4,9 @@
 // A Point is a Vec3 of FixedPoly<NT, D> (a moving point, D = 1, or a position, D = 0);
 // `delta2` is delta squared, an NT; `sign_at(q)` returns the sign of the polynomial q at the
 // instant under test (the exact path: at an algebraic time; the filters: over a time interval,
-// where it may answer `uncertain` through its own channel). Each condition is the union of the
+// where it may answer `uncertain` through its own channel), and `positive_at(q)` decides the
+// strict conditions q > 0 (by default sign_at(q) > 0). within_at is monotone: it only grows
+// when any condition changes from false to true, which the filters' optimistic exclusion uses. Each condition is the union of the
 // closed feature regions of the distance function, every one a conjunction of non-strict sign
 // conditions plus one strict "non-degenerate" condition.
 // PROOF: proofs/min_separation.md#region-decomposition
@@ -58,11 +60,21 @@ struct PointSegmentSeparation {
     f(projection_from_y());
     f(capsule());
   }
+  /// Calls f on the polynomial of the strict condition (|e|^2 > 0).
+  template <class F>
+  void for_each_strict_polynomial(F&& f) const {
+    f(length2());
+  }
+  /// `positive_at(q)`: q > 0 (the strict conditions); by default sign_at(q) > 0.
+  template <class SignAt, class PositiveAt>
+  bool within_at(SignAt&& sign_at, PositiveAt&& positive_at) const {
+    if (sign_at(sphere(x)) <= 0 || sign_at(sphere(y)) <= 0) return true;
+    return positive_at(length2()) && sign_at(projection_from_x()) >= 0 &&
+           sign_at(projection_from_y()) >= 0 && sign_at(capsule()) <= 0;
+  }
   template <class SignAt>
   bool within_at(SignAt&& sign_at) const {
-    if (sign_at(sphere(x)) <= 0 || sign_at(sphere(y)) <= 0) return true;
-    return sign_at(length2()) > 0 && sign_at(projection_from_x()) >= 0 &&
-           sign_at(projection_from_y()) >= 0 && sign_at(capsule()) <= 0;
+    return within_at(sign_at, [&sign_at](const auto& q) { return sign_at(q) > 0; });
   }
 };
 
@@ -111,12 +123,22 @@ struct VertexFaceSeparation {
       e.for_each_polynomial(f, false);
     }
   }
+  /// Calls f on every polynomial of a strict condition (|n|^2 > 0, each |e|^2 > 0).
+  template <class F>
+  void for_each_strict_polynomial(F&& f) const {
+    f(normal2());
+    for (int i = 0; i < 3; ++i) edge(i).for_each_strict_polynomial(f);
+  }
+  template <class SignAt, class PositiveAt>
+  bool within_at(SignAt&& sign_at, PositiveAt&& positive_at) const {
+    for (int i = 0; i < 3; ++i)
+      if (edge(i).within_at(sign_at, positive_at)) return true;
+    return positive_at(normal2()) && sign_at(face()) <= 0 && sign_at(inside(a, b)) >= 0 &&
+           sign_at(inside(b, c)) >= 0 && sign_at(inside(c, a)) >= 0;
+  }
   template <class SignAt>
   bool within_at(SignAt&& sign_at) const {
-    for (int i = 0; i < 3; ++i)
-      if (edge(i).within_at(sign_at)) return true;
-    return sign_at(normal2()) > 0 && sign_at(face()) <= 0 && sign_at(inside(a, b)) >= 0 &&
-           sign_at(inside(b, c)) >= 0 && sign_at(inside(c, a)) >= 0;
+    return within_at(sign_at, [&sign_at](const auto& q) { return sign_at(q) > 0; });
   }
 };
 
@@ -181,14 +203,26 @@ struct EdgeEdgeSeparation {
       e.for_each_polynomial(f, false);
     }
   }
-  template <class SignAt>
-  bool within_at(SignAt&& sign_at) const {
+  /// Calls f on every polynomial of a strict condition (|m|^2 > 0, |b1 - b0|^2 > 0,
+  /// |a1 - a0|^2 > 0).
+  template <class F>
+  void for_each_strict_polynomial(F&& f) const {
+    f(cross2());
+    endpoint(0).for_each_strict_polynomial(f);
+    endpoint(2).for_each_strict_polynomial(f);
+  }
+  template <class SignAt, class PositiveAt>
+  bool within_at(SignAt&& sign_at, PositiveAt&& positive_at) const {
     for (int i = 0; i < 4; ++i)
-      if (endpoint(i).within_at(sign_at)) return true;
-    if (sign_at(cross2()) <= 0 || sign_at(interior()) > 0) return false;
+      if (endpoint(i).within_at(sign_at, positive_at)) return true;
+    if (!positive_at(cross2()) || sign_at(interior()) > 0) return false;
     const auto m2 = cross2();
     const auto s = s_numerator(), t = t_numerator();
     return sign_at(s) >= 0 && sign_at(m2 - s) >= 0 && sign_at(t) >= 0 && sign_at(m2 - t) >= 0;
+  }
+  template <class SignAt>
+  bool within_at(SignAt&& sign_at) const {
+    return within_at(sign_at, [&sign_at](const auto& q) { return sign_at(q) > 0; });
   }
 };
 

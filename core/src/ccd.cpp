@@ -198,25 +198,27 @@ CcdResult min_separation_ccd(const Query& q, const CcdOptions& options, Culled c
   CcdResult r;
   switch (options.mode) {
     case Mode::float_only: return tolerance(q, delta, options.t_max);
-    case Mode::exact: return exact_path(to_rational(q), mpq_class(delta), options);
+    case Mode::exact: return exact_path(to_rational(q), mpq_class(delta), options, 0.0);
     case Mode::filtered: break;
   }
   if (culled(q, delta)) {
     r.decided_by = Stage::culling;
     return r;
   }
-  switch (filter(q, options)) {
+  const filters::SeparationOutcome f = filter(q, options);
+  switch (f.verdict) {
     case filters::SeparationVerdict::never_within:
       r.decided_by = Stage::filter;
       return r;
-    case filters::SeparationVerdict::within_at_zero:
+    case filters::SeparationVerdict::contact:
       r.collides = true;
-      r.toi_lo = r.toi_hi = 0.0;
-      r.decided_by = Stage::filter;
+      r.toi_lo = f.toi_lo;
+      r.toi_hi = f.toi_hi;
+      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
       return r;
     case filters::SeparationVerdict::uncertain: break;
   }
-  return exact_path(to_rational(q), mpq_class(delta), options);
+  return exact_path(to_rational(q), mpq_class(delta), options, f.cleared_until);
 }
 
 bool all_finite(const VertexFaceQuery& q) {
