@@ -125,6 +125,8 @@ int compare(AlgebraicTime& a, AlgebraicTime& b) {
   if (b.is_rational()) return a.compare(b.lo());
   // Equal iff a is a root of b's polynomial inside b's isolating interval, which holds
   // only for b's own root. PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time
+  if (cmp(a.hi(), b.lo()) <= 0) return -1;  // isolating intervals already apart
+  if (cmp(b.hi(), a.lo()) <= 0) return 1;
   const Rational b_lo = b.lo(), b_hi = b.hi();
   if (a.sign_of(b.defining_polynomial()) == 0 && a.compare(b_lo) > 0 && a.compare(b_hi) < 0)
     return 0;

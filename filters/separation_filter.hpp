@@ -4,6 +4,7 @@
 // the exact path. PROOF: proofs/min_separation.md#filters
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "exactccd/types.hpp"
@@ -13,6 +14,9 @@ namespace exactccd::filters {
 /// Certainly never within delta: the swept boxes are more than delta apart on one axis.
 bool vertex_face_separation_culling(const VertexFaceQuery& q, double delta);
 bool edge_edge_separation_culling(const EdgeEdgeQuery& q, double delta);
+
+/// The most region polynomials a separation has (edge-edge: 24).
+inline constexpr int kMaxSeparationPolynomials = 24;
 
 enum class SeparationVerdict : std::uint8_t {
   never_within,  ///< certainly never within delta on [0, t_max]
@@ -28,6 +32,12 @@ struct SeparationOutcome {
   bool exact_used = false;
   /// When uncertain: never within delta on [0, cleared_until] (certified when > 0).
   double cleared_until = 0.0;
+  /// When uncertain and bracketed: within delta at within_at, so t* lies in
+  /// (cleared_until, within_at], and known_signs[k] (-1, 0, +1; 2 unknown) is the constant
+  /// sign of region polynomial k over that bracket.
+  bool bracketed = false;
+  double within_at = 0.0;
+  std::array<signed char, kMaxSeparationPolynomials> known_signs{};
 };
 
 /// The interval stages on finite input, options validated, delta = options.min_separation > 0.

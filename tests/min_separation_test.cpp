@@ -143,6 +143,29 @@ TEST(MinSeparationTest, ZeroSeparationOptionIsTheContactPath) {
   }
 }
 
+TEST(MinSeparationTest, DefaultPathEqualsExactPathOnTheSampleQueries) {
+  // The benchmark's degenerate scenes: contacts at vertices and edges where several region
+  // polynomials vanish together, exactly the hard case of the filters' search.
+  const auto& all = test::sample_double_queries();
+  const std::size_t stride = test::subset_stride() * 2;
+  int contacts = 0, by_filters = 0;
+  for (const double delta : {1.5e-7, 1.5e-5, 1.5e-3}) {
+    for (std::size_t i = 0; i < all.size(); i += stride) {
+      const CcdOptions o = with_delta(delta);
+      const CcdResult fast = random_queries::ccd(all[i], o);
+      const CcdResult exact = random_queries::ccd(all[i], random_queries::with_mode(o, Mode::exact));
+      ASSERT_EQ(fast.collides, exact.collides) << "sample query " << i << " delta " << delta;
+      ASSERT_EQ(fast.toi_lo, exact.toi_lo) << "sample query " << i << " delta " << delta;
+      ASSERT_EQ(fast.toi_hi, exact.toi_hi) << "sample query " << i << " delta " << delta;
+      contacts += exact.collides;
+      by_filters += exact.collides && (fast.decided_by == Stage::filter ||
+                                       fast.decided_by == Stage::exact_at_double);
+    }
+  }
+  EXPECT_GT(contacts, 100);
+  EXPECT_GT(by_filters, contacts / 2);  // the search decides most contacts without GMP's roots
+}
+
 /// A random query of coordinates in [-1, 1] with the given spread of motion.
 random_queries::DoubleQuery random_query(std::mt19937_64& rng, QueryType type, double motion) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);

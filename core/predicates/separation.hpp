@@ -1,14 +1,16 @@
 // Minimum-separation predicates: "the closed primitives are within Euclidean distance delta at
-// one instant", written once over the number type as sign conditions on polynomials in t.
+// one instant", written once: the region polynomials over any number type, and the region
+// logic once over their signs.
 //
-// A Point is a Vec3 of FixedPoly<NT, D> (a moving point, D = 1, or a position, D = 0);
-// `delta2` is delta squared, an NT; `sign_at(q)` returns the sign of the polynomial q at the
-// instant under test (the exact path: at an algebraic time; the filters: over a time interval,
-// where it may answer `uncertain` through its own channel), and `positive_at(q)` decides the
-// strict conditions q > 0 (by default sign_at(q) > 0). within_at is monotone: it only grows
-// when any condition changes from false to true, which the filters' optimistic exclusion uses. Each condition is the union of the
-// closed feature regions of the distance function, every one a conjunction of non-strict sign
-// conditions plus one strict "non-degenerate" condition.
+// A Point is a Vec3 of FixedPoly<NT, D> (a moving point, D = 1); `delta2` is delta squared, an
+// NT. Each separation numbers its polynomials: the non-strict ones first (0 ..
+// kNonStrictCount - 1, every condition "<= 0" or ">= 0"), then the strict ones (each "> 0", a
+// sum of squares); for_each_polynomial visits them in that order. within(sign) decides the
+// instant predicate from sign(k), the sign (-1, 0, +1) of polynomial k at the instant under
+// test: the exact path reads exact signs at algebraic times; the filters read certified signs
+// over time intervals, or optimistic ones (0 for an uncertain non-strict polynomial, which
+// satisfies its condition, +1 for an uncertain strict one). within is monotone: it can only
+// become true when a condition becomes true, whatever the others.
 // PROOF: proofs/min_separation.md#region-decomposition
 #pragma once
 
@@ -24,17 +26,17 @@ EXACTCCD_CERTIFIED FixedPoly<NT, D> scaled(const NT& k, const FixedPoly<NT, D>& 
   return r;
 }
 
-/// The polynomials of "p within delta of the closed segment [x, y]": the sphere conditions
-/// |p - x|^2 - delta^2 <= 0 and |p - y|^2 - delta^2 <= 0, and the capsule's conditions
-/// (p - x).(y - x) >= 0, (p - y).(x - y) >= 0, |p - x|^2 |e|^2 - ((p - x).e)^2 - delta^2 |e|^2
-/// <= 0 with e = y - x and |e|^2 > 0. PROOF: proofs/min_separation.md#point-segment
+/// The polynomials of "p within delta of the closed segment [x, y]", e = y - x: the end
+/// spheres |p - x|^2 - delta^2 <= 0 and |p - y|^2 - delta^2 <= 0; the capsule's side
+/// (p - x).e >= 0, (p - y).(x - y) >= 0, |p - x|^2 |e|^2 - ((p - x).e)^2 - delta^2 |e|^2 <= 0
+/// with |e|^2 > 0. PROOF: proofs/min_separation.md#point-segment
 template <class Point, class NT>
-struct PointSegmentSeparation {
-  Point p, x, y;
-  NT delta2;
+struct PointSegmentPolynomials {
+  const Point& p;
+  const Point& x;
+  const Point& y;
+  const NT& delta2;
 
-  auto e() const { return y - x; }
-  auto length2() const { return dot(e(), e()); }
   auto sphere(const Point& v) const {
     const auto w = p - v;
     return dot(w, w) - FixedPoly<NT, 0>{{delta2}};
@@ -42,103 +44,68 @@ struct PointSegmentSeparation {
   auto projection_from_x() const { return dot(p - x, y - x); }
   auto projection_from_y() const { return dot(p - y, x - y); }
   auto capsule() const {
-    const auto w = p - x;
-    const auto ee = length2();
-    const auto we = dot(w, e());
+    const auto w = p - x, e = y - x;
+    const auto ee = dot(e, e), we = dot(w, e);
     return dot(w, w) * ee - we * we - scaled(delta2, ee);
   }
-  /// Calls f on every polynomial of a non-strict condition: the earliest time within delta is
-  /// t = 0 or a root of one of them (the strict |e|^2 > 0 is not needed).
-  /// PROOF: proofs/min_separation.md#candidate-times
-  template <class F>
-  void for_each_polynomial(F&& f, bool with_spheres = true) const {
-    if (with_spheres) {
-      f(sphere(x));
-      f(sphere(y));
-    }
-    f(projection_from_x());
-    f(projection_from_y());
-    f(capsule());
-  }
-  /// Calls f on the polynomial of the strict condition (|e|^2 > 0).
-  template <class F>
-  void for_each_strict_polynomial(F&& f) const {
-    f(length2());
-  }
-  /// `positive_at(q)`: q > 0 (the strict conditions); by default sign_at(q) > 0.
-  template <class SignAt, class PositiveAt>
-  bool within_at(SignAt&& sign_at, PositiveAt&& positive_at) const {
-    if (sign_at(sphere(x)) <= 0 || sign_at(sphere(y)) <= 0) return true;
-    return positive_at(length2()) && sign_at(projection_from_x()) >= 0 &&
-           sign_at(projection_from_y()) >= 0 && sign_at(capsule()) <= 0;
-  }
-  template <class SignAt>
-  bool within_at(SignAt&& sign_at) const {
-    return within_at(sign_at, [&sign_at](const auto& q) { return sign_at(q) > 0; });
-  }
+  auto length2() const { return dot(y - x, y - x); }
 };
 
-template <class NT, class Point>
-EXACTCCD_CERTIFIED PointSegmentSeparation<Point, NT> point_segment_separation(
-    const Point& p, const Point& x, const Point& y, const NT& delta2) {
-  return {p, x, y, delta2};
+/// The point-segment condition from the signs of its polynomials (numbers in the caller's
+/// order): an end sphere, or the capsule's side of a segment of non-zero length.
+template <class Sign>
+EXACTCCD_CERTIFIED bool point_segment_within(Sign&& sign, int sphere_x, int sphere_y,
+                                             int projection_x, int projection_y, int capsule,
+                                             int length2) {
+  if (sign(sphere_x) <= 0 || sign(sphere_y) <= 0) return true;
+  return sign(length2) > 0 && sign(projection_x) >= 0 && sign(projection_y) >= 0 &&
+         sign(capsule) <= 0;
 }
 
-/// Vertex p against the closed triangle (a, b, c): the face region (n = (b - a) x (c - a),
-/// |n|^2 > 0, (n.(p - a))^2 - delta^2 |n|^2 <= 0, and the projection of p inside the closed
-/// triangle: ((b - a) x (p - a)).n >= 0 and its two cyclic copies), or p within delta of one
-/// of the three closed edges. PROOF: proofs/min_separation.md#vertex-face-regions
+/// Vertex p against the closed triangle (a, b, c). Polynomials: 0 the face,
+/// (n.(p - a))^2 - delta^2 |n|^2 <= 0 with n = (b - a) x (c - a); 1-3 the projection inside,
+/// ((y - x) x (p - x)).n >= 0 for the edges ab, bc, ca; for edge i (ab, bc, ca) with first
+/// vertex v: 4 + 4i the sphere of v, 5 + 4i and 6 + 4i the side's projections, 7 + 4i the
+/// capsule; strict: 16 |n|^2 > 0, 17 + i edge i's |e|^2 > 0.
+/// PROOF: proofs/min_separation.md#vertex-face-regions
 template <class Point, class NT>
 struct VertexFaceSeparation {
+  static constexpr int kNonStrictCount = 16;
+  static constexpr int kCount = 20;
   Point p, a, b, c;
   NT delta2;
 
-  auto normal() const { return cross(b - a, c - a); }
-  auto normal2() const {
-    const auto n = normal();
-    return dot(n, n);
+  const Point& vertex(int i) const { return i == 0 ? a : (i == 1 ? b : c); }
+  PointSegmentPolynomials<Point, NT> edge(int i) const {
+    return {p, vertex(i), vertex((i + 1) % 3), delta2};
   }
-  auto face() const {
-    const auto n = normal();
-    const auto d = dot(n, p - a);
-    return d * d - scaled(delta2, dot(n, n));
-  }
-  auto inside(const Point& x, const Point& y) const { return dot(cross(y - x, p - x), normal()); }
-  PointSegmentSeparation<Point, NT> edge(int i) const {
-    return i == 0 ? PointSegmentSeparation<Point, NT>{p, a, b, delta2}
-                  : (i == 1 ? PointSegmentSeparation<Point, NT>{p, b, c, delta2}
-                            : PointSegmentSeparation<Point, NT>{p, c, a, delta2});
-  }
-  /// Calls f on every polynomial of a non-strict condition (each vertex sphere once).
-  /// PROOF: proofs/min_separation.md#candidate-times
   template <class F>
   void for_each_polynomial(F&& f) const {
-    f(face());
-    f(inside(a, b));
-    f(inside(b, c));
-    f(inside(c, a));
+    const auto n = cross(b - a, c - a);
+    const auto d = dot(n, p - a);
+    f(d * d - scaled(delta2, dot(n, n)));
+    for (int i = 0; i < 3; ++i) {
+      const Point& x = vertex(i);
+      f(dot(cross(vertex((i + 1) % 3) - x, p - x), n));
+    }
     for (int i = 0; i < 3; ++i) {
       const auto e = edge(i);
       f(e.sphere(e.x));
-      e.for_each_polynomial(f, false);
+      f(e.projection_from_x());
+      f(e.projection_from_y());
+      f(e.capsule());
     }
+    f(dot(n, n));
+    for (int i = 0; i < 3; ++i) f(edge(i).length2());
   }
-  /// Calls f on every polynomial of a strict condition (|n|^2 > 0, each |e|^2 > 0).
-  template <class F>
-  void for_each_strict_polynomial(F&& f) const {
-    f(normal2());
-    for (int i = 0; i < 3; ++i) edge(i).for_each_strict_polynomial(f);
-  }
-  template <class SignAt, class PositiveAt>
-  bool within_at(SignAt&& sign_at, PositiveAt&& positive_at) const {
+  /// Within delta from the signs: an edge's capsule or sphere, or the face region.
+  template <class Sign>
+  static bool within(Sign&& sign) {
     for (int i = 0; i < 3; ++i)
-      if (edge(i).within_at(sign_at, positive_at)) return true;
-    return positive_at(normal2()) && sign_at(face()) <= 0 && sign_at(inside(a, b)) >= 0 &&
-           sign_at(inside(b, c)) >= 0 && sign_at(inside(c, a)) >= 0;
-  }
-  template <class SignAt>
-  bool within_at(SignAt&& sign_at) const {
-    return within_at(sign_at, [&sign_at](const auto& q) { return sign_at(q) > 0; });
+      if (point_segment_within(sign, 4 + 4 * i, 4 + 4 * ((i + 1) % 3), 5 + 4 * i, 6 + 4 * i,
+                               7 + 4 * i, 17 + i))
+        return true;
+    return sign(16) > 0 && sign(0) <= 0 && sign(1) >= 0 && sign(2) >= 0 && sign(3) >= 0;
   }
 };
 
@@ -148,36 +115,22 @@ EXACTCCD_CERTIFIED VertexFaceSeparation<Point, NT> vertex_face_separation(
   return {p, a, b, c, delta2};
 }
 
-/// Closed segments [a0, a1] and [b0, b1]: the interior region (u = a1 - a0, v = b1 - b0,
-/// w = a0 - b0, m = u x v, |m|^2 > 0, (w.m)^2 - delta^2 |m|^2 <= 0, and the lines' closest
-/// parameters s = (BE - CD)/|m|^2 and t = (AE - BD)/|m|^2 in [0, 1], with A = u.u, B = u.v,
-/// C = v.v, D = u.w, E = v.w), or an endpoint within delta of the other closed segment.
+/// Closed segments [a0, a1] and [b0, b1], u = a1 - a0, v = b1 - b0, w = a0 - b0, m = u x v,
+/// A = u.u, B = u.v, C = v.v, D = u.w, E = v.w. Polynomials: 0 the interior region,
+/// (w.m)^2 - delta^2 |m|^2 <= 0; 1 s = BE - CD >= 0, 2 |m|^2 - s >= 0, 3 t = AE - BD >= 0,
+/// 4 |m|^2 - t >= 0 (the lines' closest parameters in [0, 1]); 5-8 the endpoint spheres
+/// a0b0, a0b1, a1b0, a1b1; for endpoint i (a0, a1 against [b0, b1], b0, b1 against [a0, a1]):
+/// 9 + 3i and 10 + 3i the side's projections, 11 + 3i the capsule; strict: 21 |m|^2 > 0,
+/// 22 |b1 - b0|^2 > 0, 23 |a1 - a0|^2 > 0.
 /// PROOF: proofs/min_separation.md#edge-edge-regions
 template <class Point, class NT>
 struct EdgeEdgeSeparation {
+  static constexpr int kNonStrictCount = 21;
+  static constexpr int kCount = 24;
   Point a0, a1, b0, b1;
   NT delta2;
 
-  auto direction_cross() const { return cross(a1 - a0, b1 - b0); }
-  auto cross2() const {
-    const auto m = direction_cross();
-    return dot(m, m);
-  }
-  auto interior() const {
-    const auto m = direction_cross();
-    const auto g = dot(a0 - b0, m);
-    return g * g - scaled(delta2, dot(m, m));
-  }
-  /// |m|^2 s and |m|^2 t (the closest parameters' numerators).
-  auto s_numerator() const {
-    const auto u = a1 - a0, v = b1 - b0, w = a0 - b0;
-    return dot(u, v) * dot(v, w) - dot(v, v) * dot(u, w);
-  }
-  auto t_numerator() const {
-    const auto u = a1 - a0, v = b1 - b0, w = a0 - b0;
-    return dot(u, u) * dot(v, w) - dot(u, v) * dot(u, w);
-  }
-  PointSegmentSeparation<Point, NT> endpoint(int i) const {
+  PointSegmentPolynomials<Point, NT> endpoint(int i) const {
     switch (i) {
       case 0: return {a0, b0, b1, delta2};
       case 1: return {a1, b0, b1, delta2};
@@ -185,44 +138,46 @@ struct EdgeEdgeSeparation {
       default: return {b1, a0, a1, delta2};
     }
   }
-  /// Calls f on every polynomial of a non-strict condition (each endpoint pair's sphere once).
-  /// PROOF: proofs/min_separation.md#candidate-times
   template <class F>
   void for_each_polynomial(F&& f) const {
-    f(interior());
-    f(s_numerator());
-    f(cross2() - s_numerator());
-    f(t_numerator());
-    f(cross2() - t_numerator());
+    const auto u = a1 - a0, v = b1 - b0, w = a0 - b0;
+    const auto m = cross(u, v);
+    const auto g = dot(w, m);
+    const auto m2 = dot(m, m);
+    f(g * g - scaled(delta2, m2));
+    const auto s = dot(u, v) * dot(v, w) - dot(v, v) * dot(u, w);
+    const auto t = dot(u, u) * dot(v, w) - dot(u, v) * dot(u, w);
+    f(s);
+    f(m2 - s);
+    f(t);
+    f(m2 - t);
+    const auto e0 = endpoint(0), e1 = endpoint(1);
+    f(e0.sphere(b0));
+    f(e0.sphere(b1));
+    f(e1.sphere(b0));
+    f(e1.sphere(b1));
     for (int i = 0; i < 4; ++i) {
       const auto e = endpoint(i);
-      if (i < 2) {  // a0, a1 against b0 and b1: the four endpoint pairs
-        f(e.sphere(e.x));
-        f(e.sphere(e.y));
-      }
-      e.for_each_polynomial(f, false);
+      f(e.projection_from_x());
+      f(e.projection_from_y());
+      f(e.capsule());
     }
+    f(m2);
+    f(e0.length2());
+    f(endpoint(2).length2());
   }
-  /// Calls f on every polynomial of a strict condition (|m|^2 > 0, |b1 - b0|^2 > 0,
-  /// |a1 - a0|^2 > 0).
-  template <class F>
-  void for_each_strict_polynomial(F&& f) const {
-    f(cross2());
-    endpoint(0).for_each_strict_polynomial(f);
-    endpoint(2).for_each_strict_polynomial(f);
-  }
-  template <class SignAt, class PositiveAt>
-  bool within_at(SignAt&& sign_at, PositiveAt&& positive_at) const {
+  /// Within delta from the signs: an endpoint's capsule or sphere, or the interior region.
+  template <class Sign>
+  static bool within(Sign&& sign) {
+    // Spheres of endpoint i against the other segment's ends (5 a0b0, 6 a0b1, 7 a1b0, 8 a1b1).
+    constexpr int kSphereX[4] = {5, 7, 5, 6};
+    constexpr int kSphereY[4] = {6, 8, 7, 8};
     for (int i = 0; i < 4; ++i)
-      if (endpoint(i).within_at(sign_at, positive_at)) return true;
-    if (!positive_at(cross2()) || sign_at(interior()) > 0) return false;
-    const auto m2 = cross2();
-    const auto s = s_numerator(), t = t_numerator();
-    return sign_at(s) >= 0 && sign_at(m2 - s) >= 0 && sign_at(t) >= 0 && sign_at(m2 - t) >= 0;
-  }
-  template <class SignAt>
-  bool within_at(SignAt&& sign_at) const {
-    return within_at(sign_at, [&sign_at](const auto& q) { return sign_at(q) > 0; });
+      if (point_segment_within(sign, kSphereX[i], kSphereY[i], 9 + 3 * i, 10 + 3 * i,
+                               11 + 3 * i, i < 2 ? 22 : 23))
+        return true;
+    return sign(21) > 0 && sign(0) <= 0 && sign(1) >= 0 && sign(2) >= 0 && sign(3) >= 0 &&
+           sign(4) >= 0;
   }
 };
 

@@ -198,7 +198,7 @@ CcdResult min_separation_ccd(const Query& q, const CcdOptions& options, Culled c
   CcdResult r;
   switch (options.mode) {
     case Mode::float_only: return tolerance(q, delta, options.t_max);
-    case Mode::exact: return exact_path(to_rational(q), mpq_class(delta), options, 0.0);
+    case Mode::exact: return exact_path(to_rational(q), mpq_class(delta), options, {});
     case Mode::filtered: break;
   }
   if (culled(q, delta)) {
@@ -218,7 +218,13 @@ CcdResult min_separation_ccd(const Query& q, const CcdOptions& options, Culled c
       return r;
     case filters::SeparationVerdict::uncertain: break;
   }
-  return exact_path(to_rational(q), mpq_class(delta), options, f.cleared_until);
+  exact::SeparationHint hint;
+  hint.t_from = f.cleared_until;
+  if (f.bracketed) {
+    hint.t_to = f.within_at;
+    hint.known_signs = f.known_signs.data();
+  }
+  return exact_path(to_rational(q), mpq_class(delta), options, hint);
 }
 
 bool all_finite(const VertexFaceQuery& q) {

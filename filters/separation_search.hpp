@@ -1,0 +1,288 @@
+// The certified search for the first time within delta (minimum-separation CCD) over
+// [0, t_max]: adaptive subdivision, depth first and earliest half first, of pieces excluded
+// by separating directions or by the region polynomials' signs, and the tightening of the one
+// polynomial root that is the first contact. Needs a RoundingGuard.
+// PROOF: proofs/min_separation.md#interval-search
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "core/predicates/double_bits.hpp"
+#include "core/predicates/motion.hpp"
+#include "exact/polynomial.hpp"
+#include "exactccd/types.hpp"
+#include "filters/interval.hpp"
+#include "filters/separation_filter.hpp"
+
+namespace exactccd::filters::separation {
+
+using predicates::FixedPoly;
+using Poly6 = FixedPoly<Interval, 6>;
+
+/// Every region polynomial of a separation (its numbering) with interval coefficients, padded
+/// to degree 6.
+template <class Separation>
+struct PolynomialTable {
+  std::array<Poly6, Separation::kCount> poly;
+
+  explicit PolynomialTable(const Separation& s) {
+    int k = 0;
+    s.for_each_polynomial([this, &k](const auto& g) {
+      constexpr int D = std::decay_t<decltype(g)>::degree;
+      static_assert(D <= 6, "the region polynomials have degree at most 6");
+      for (int i = 0; i <= 6; ++i) poly[k].c[i] = i <= D ? g.c[i] : Interval(0);
+      ++k;
+    });
+  }
+};
+
+/// An enclosure of g over [lo, hi] in centred form: g(m + s) = sum_i c_i s^i (an interval
+/// Taylor shift to a double m), |s| <= h with [lo, hi] inside [m - h, m + h]; much tighter
+/// than Horner over [lo, hi] where g is small and flat.
+EXACTCCD_CERTIFIED Interval enclosure_over(const Poly6& g, double lo, double hi) {
+  const double m = lo + 0.5 * (hi - lo);      // rounded upwards
+  const double h = std::max(m - lo, hi - m);  // rounded upwards: >= every |t - m|
+  std::array<Interval, 7> c = g.c;  // Taylor shift by m: repeated synthetic division
+  const Interval mi(m);
+  for (int k = 0; k < 6; ++k)
+    for (int i = 5; i >= k; --i) c[i] = c[i] + mi * c[i + 1];
+  Interval r = c[0];
+  double hk = 1.0;
+  for (int i = 1; i <= 6; ++i) {
+    hk *= h;  // rounded upwards
+    r = r + c[i] * (i % 2 ? Interval(-hk, hk) : Interval(0.0, hk));
+  }
+  return r;
+}
+
+EXACTCCD_CERTIFIED Poly6 derivative_of(const Poly6& g) {
+  Poly6 d;
+  for (int i = 1; i <= 6; ++i) d.c[i - 1] = g.c[i] * Interval(i);
+  d.c[6] = Interval(0);  // Interval_nt default-constructs no value
+  return d;
+}
+
+/// Depth to which separating directions are tried, and depth of the whole subdivision.
+constexpr int kDirectionDepth = 6;
+constexpr int kMaxDepth = 40;
+
+/// Polynomial k of the separation over the exact rationals (built only where interval signs
+/// cannot tighten a TOI).
+using ExactPolynomial = std::function<exact::Polynomial(int)>;
+
+/// Every piece before the current one is certainly never within delta (`cleared_` is its
+/// end). A piece is excluded by separating directions (depth <= kDirectionDepth), or when the
+/// instant predicate is false over it with every sign the table cannot certify read
+/// optimistically (within is monotone); a piece over which every sign is certain but one
+/// polynomial's, monotone with opposite certain signs at the ends, holds the first contact at
+/// that root when the predicate certainly holds at its end.
+template <class Motion, class Separation>
+class FirstWithinSearch {
+ public:
+  enum class Step : std::uint8_t { excluded, found, give_up };
+
+  FirstWithinSearch(const Motion& m, const Separation& s, const ExactPolynomial& exact_polynomial,
+                    const CcdOptions& options)
+      : m_(m), separation_(s), exact_polynomial_(exact_polynomial), options_(options),
+        delta2_(Interval(options.min_separation) * options.min_separation) {}
+
+  SeparationOutcome run() {
+    SeparationOutcome out;
+    const Step s = search(0.0, options_.t_max, 0);
+    out.cleared_until = cleared_;
+    if (s == Step::excluded) {
+      out.verdict = SeparationVerdict::never_within;
+    } else if (s == Step::found) {
+      out.verdict = SeparationVerdict::contact;
+      out.toi_lo = toi_lo_;
+      out.toi_hi = toi_hi_;
+      out.exact_used = exact_used_;
+    } else if (bracket_ && cleared_ == bracket_lo_) {
+      out.bracketed = true;
+      out.cleared_until = bracket_lo_;
+      out.within_at = bracket_hi_;
+      out.known_signs = known_;
+    }
+    return out;
+  }
+
+ private:
+  static constexpr int kUnknown = 2;
+
+  Step search(double lo, double hi, int depth) {
+    if (depth <= kDirectionDepth &&
+        m_.apart_over(Interval(lo, hi), delta2_, options_.min_separation)) {
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    if (depth >= kDirectionDepth) {
+      bool split = false;
+      const Step s = analyse(lo, hi, &split);
+      if (!split) return s;
+    }
+    const double mid = lo + 0.5 * (hi - lo);  // rounded upwards: in (lo, hi] or hi
+    if (depth == kMaxDepth || !(mid > lo && mid < hi)) {
+      if (depth >= kDirectionDepth) bracket(lo, hi);
+      return Step::give_up;
+    }
+    const Step left = search(lo, mid, depth + 1);
+    if (left != Step::excluded) return left;
+    return search(mid, hi, depth + 1);
+  }
+
+  const PolynomialTable<Separation>& table() {
+    if (!table_) table_.emplace(separation_);
+    return *table_;
+  }
+
+  /// The predicate at the double t with certified signs: +1 within, -1 not, 0 uncertain.
+  int within_at(double t) {
+    const auto& polys = table().poly;
+    bool uncertain = false;
+    const bool within = Separation::within([&](int k) {
+      const CertifiedSign s = certified_sign(predicates::evaluate(polys[k], Interval(t)));
+      if (s != CertifiedSign::uncertain) return static_cast<int>(s);
+      uncertain = true;
+      return 0;
+    });
+    return uncertain ? 0 : (within ? 1 : -1);
+  }
+
+  /// The piece [lo, hi] where the search stops (lo is cleared): when the predicate certainly
+  /// holds at hi, t* lies in (lo, hi], a root of one of the polynomials whose sign is
+  /// uncertain over the piece; the others' signs there are constant and handed to the exact
+  /// stage. PROOF: proofs/min_separation.md#interval-search
+  void bracket(double lo, double hi) {
+    if (within_at(hi) <= 0) return;
+    bracket_ = true;
+    bracket_lo_ = lo;
+    bracket_hi_ = hi;
+    known_.fill(kUnknown);
+    const auto& polys = table().poly;
+    for (int k = 0; k < Separation::kCount; ++k) {
+      const CertifiedSign s = certified_sign(enclosure_over(polys[k], lo, hi));
+      if (s != CertifiedSign::uncertain) known_[k] = static_cast<signed char>(s);
+    }
+  }
+
+  /// The signs of every region polynomial over [lo, hi]; *split when a finer piece may
+  /// decide what this one cannot.
+  Step analyse(double lo, double hi, bool* split) {
+    const auto& polys = table().poly;
+    std::array<signed char, Separation::kCount> sign;
+    int uncertain = 0, which = -1;
+    for (int k = 0; k < Separation::kCount; ++k) {
+      const CertifiedSign s = certified_sign(enclosure_over(polys[k], lo, hi));
+      sign[k] = static_cast<signed char>(s == CertifiedSign::uncertain ? kUnknown : int(s));
+      if (s == CertifiedSign::uncertain) {
+        ++uncertain;
+        which = k;
+      }
+    }
+    if (lo == 0.0 && cleared_ == 0.0) {  // not within at lo: lo is cleared, or t = 0 is tested
+      const int at_zero = within_at(0.0);
+      if (at_zero == 0) return Step::give_up;
+      if (at_zero > 0) {
+        toi_lo_ = toi_hi_ = 0.0;
+        return Step::found;
+      }
+    }
+    // Optimistic: an uncertain non-strict condition reads as satisfied (sign 0), an uncertain
+    // strict one as positive. Not within even so: not within anywhere in the piece.
+    const bool possible = Separation::within([&](int k) {
+      if (sign[k] != kUnknown) return static_cast<int>(sign[k]);
+      return k < Separation::kNonStrictCount ? 0 : 1;
+    });
+    if (!possible) {
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    if (uncertain != 1 || which >= Separation::kNonStrictCount) {
+      *split = true;
+      return Step::give_up;
+    }
+    // One polynomial g's sign is uncertain over the piece; every other sign is constant.
+    const Poly6& g = polys[which];
+    const CertifiedSign slope = certified_sign(enclosure_over(derivative_of(g), lo, hi));
+    if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero) {
+      *split = true;
+      return Step::give_up;
+    }
+    // g is strictly monotone: its signs at the ends (exact ones where intervals cannot
+    // tell) place its only possible root.
+    const int s_lo = sign_at(which, lo), s_hi = sign_at(which, hi);
+    auto within_with = [&](int g_sign) {  // the predicate with g's sign set, the others known
+      return Separation::within([&](int k) { return k == which ? g_sign : int(sign[k]); });
+    };
+    if (s_lo == 0) return Step::give_up;  // lo is not within: never reached, left to exact
+    if (s_lo == s_hi) {  // no root: every sign constant over the piece, as at lo
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    // g's only root r lies in (lo, hi]; on [lo, r) every sign is as at lo (not within). At r
+    // g's non-strict condition holds, as it does on whichever side it holds: within at r iff
+    // within on (r, hi] (or at r = hi, with g = 0).
+    if (!within_with(s_hi)) {
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    if (s_hi == 0) {
+      toi_lo_ = toi_hi_ = hi;
+      return Step::found;
+    }
+    return tighten(which, lo, hi, s_lo);
+  }
+
+  /// The sign of polynomial k at the double t: certified by intervals, else exact.
+  int sign_at(int k, double t) {
+    const CertifiedSign s = certified_sign(predicates::evaluate(table().poly[k], Interval(t)));
+    if (s != CertifiedSign::uncertain) return static_cast<int>(s);
+    if (exact_index_ != k) {
+      exact_g_ = exact_polynomial_(k);
+      exact_index_ = k;
+    }
+    exact_used_ = true;
+    return exact_g_.sign_at(exact::Rational(t));
+  }
+
+  /// The first contact is the root r in (lo, hi) of polynomial k, of sign s_lo at lo:
+  /// bisection in the order of doubles with certified signs, exact ones at doubles where the
+  /// interval cannot tell, to the tightest pair of doubles (or toi_width).
+  Step tighten(int k, double lo, double hi, int s_lo) {
+    for (;;) {
+      if (options_.toi_width > 0 && hi - lo <= options_.toi_width) break;  // rounded up
+      double mid = 0;
+      if (!predicates::middle_double(lo, hi, &mid)) break;
+      const int s = sign_at(k, mid);
+      if (s == 0) {
+        lo = hi = mid;
+        break;
+      }
+      (s == s_lo ? lo : hi) = mid;
+    }
+    toi_lo_ = lo;
+    toi_hi_ = hi;
+    return Step::found;
+  }
+
+  const Motion& m_;
+  const Separation& separation_;
+  const ExactPolynomial& exact_polynomial_;
+  const CcdOptions& options_;
+  const Interval delta2_;
+  std::optional<PolynomialTable<Separation>> table_;
+  bool bracket_ = false;
+  double bracket_lo_ = 0.0, bracket_hi_ = 0.0;
+  std::array<signed char, kMaxSeparationPolynomials> known_{};
+  exact::Polynomial exact_g_;  // polynomial exact_index_ over the rationals, built on demand
+  int exact_index_ = -1;
+  double cleared_ = 0.0;
+  double toi_lo_ = 0.0, toi_hi_ = 0.0;
+  bool exact_used_ = false;
+};
+
+}  // namespace exactccd::filters::separation
