@@ -4,13 +4,12 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <optional>
 
 #include "core/predicates/separation.hpp"
-#include "exact/earliest_contact.hpp"
-#include "exact/polynomial.hpp"
-#include "exactccd/rational_query.hpp"
 #include "filters/interval.hpp"
 #include "filters/separation_directions.hpp"
+#include "filters/separation_exact_signs.hpp"
 #include "filters/separation_search.hpp"
 
 namespace exactccd::filters {
@@ -45,44 +44,11 @@ predicates::MovingPoint<Interval> moving(const Eigen::Vector3d& x0, const Eigen:
                                    Vec3<Interval>{x1.x(), x1.y(), x1.z()});
 }
 
-/// Polynomial k of a separation over the exact rationals.
-template <class Separation>
-exact::Polynomial polynomial_number(const Separation& s, int k) {
-  exact::Polynomial found;
-  int index = 0;
-  s.for_each_polynomial([&](const auto& g) {
-    if (index++ == k) found = exact::Polynomial(g);
-  });
-  return found;
-}
-
-/// Polynomial k of the query's separation over the exact rationals, for the query scaled to
-/// integer coordinates by a power of two l (delta by l too): each region polynomial is
-/// homogeneous in the coordinates and delta, so it is scaled by a positive power of l and
-/// keeps its signs, and integers keep GMP's normalisation cheap.
-exact::Polynomial exact_polynomial_number(const RationalQuery& query, double delta, int k) {
-  exact::Rational l;
-  const RationalQuery q = exact::with_integer_coordinates(query, &l);
-  const exact::Rational d = exact::Rational(delta) * l;
-  const auto& v = q.points;
-  using exact::moving;
-  if (q.type == QueryType::vertex_face)
-    return polynomial_number(
-        predicates::vertex_face_separation(moving(v[0], v[4]), moving(v[1], v[5]),
-                                           moving(v[2], v[6]), moving(v[3], v[7]),
-                                           exact::Rational(d * d)),
-        k);
-  return polynomial_number(
-      predicates::edge_edge_separation(moving(v[0], v[4]), moving(v[1], v[5]), moving(v[2], v[6]),
-                                       moving(v[3], v[7]), exact::Rational(d * d)),
-      k);
-}
-
 template <class Motion, class Separation>
 SeparationOutcome first_within(const Motion& m, const Separation& s,
-                               const separation::ExactPolynomial& exact_polynomial,
+                               const separation::ExactSignAt& exact_sign_at,
                                const CcdOptions& options) {
-  return separation::FirstWithinSearch<Motion, Separation>(m, s, exact_polynomial, options).run();
+  return separation::FirstWithinSearch<Motion, Separation>(m, s, exact_sign_at, options).run();
 }
 
 }  // namespace
@@ -109,10 +75,15 @@ SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                     moving(q.a_t0, q.a_t1),
                                                     moving(q.b_t0, q.b_t1),
                                                     moving(q.c_t0, q.c_t1), delta2);
-  const separation::ExactPolynomial exact_polynomial = [&q, &options](int k) {
-    return exact_polynomial_number(to_rational(q), options.min_separation, k);
+  std::optional<separation::ExactSignsAtDoubles> exact;  // built on first use
+  const separation::ExactSignAt exact_sign_at = [&](int k, double t) {
+    if (!exact)
+      exact.emplace(std::array<const Eigen::Vector3d*, 4>{&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0},
+                    std::array<const Eigen::Vector3d*, 4>{&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1},
+                    options.min_separation);
+    return exact->vertex_face_sign(k, t);
   };
-  return first_within(m, s, exact_polynomial, options);
+  return first_within(m, s, exact_sign_at, options);
 }
 
 SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
@@ -126,10 +97,16 @@ SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdO
                                                   moving(q.ea1_t0, q.ea1_t1),
                                                   moving(q.eb0_t0, q.eb0_t1),
                                                   moving(q.eb1_t0, q.eb1_t1), delta2);
-  const separation::ExactPolynomial exact_polynomial = [&q, &options](int k) {
-    return exact_polynomial_number(to_rational(q), options.min_separation, k);
+  std::optional<separation::ExactSignsAtDoubles> exact;  // built on first use
+  const separation::ExactSignAt exact_sign_at = [&](int k, double t) {
+    if (!exact)
+      exact.emplace(
+          std::array<const Eigen::Vector3d*, 4>{&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0},
+          std::array<const Eigen::Vector3d*, 4>{&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
+          options.min_separation);
+    return exact->edge_edge_sign(k, t);
   };
-  return first_within(m, s, exact_polynomial, options);
+  return first_within(m, s, exact_sign_at, options);
 }
 
 }  // namespace exactccd::filters

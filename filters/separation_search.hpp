@@ -13,7 +13,6 @@
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/motion.hpp"
-#include "exact/polynomial.hpp"
 #include "exactccd/types.hpp"
 #include "filters/interval.hpp"
 #include "filters/separation_filter.hpp"
@@ -70,9 +69,9 @@ EXACTCCD_CERTIFIED Poly6 derivative_of(const Poly6& g) {
 constexpr int kDirectionDepth = 6;
 constexpr int kMaxDepth = 40;
 
-/// Polynomial k of the separation over the exact rationals (built only where interval signs
-/// cannot tighten a TOI).
-using ExactPolynomial = std::function<exact::Polynomial(int)>;
+/// The exact sign of region polynomial k at the double t (asked only where interval signs
+/// cannot tell).
+using ExactSignAt = std::function<int(int k, double t)>;
 
 /// Every piece before the current one is certainly never within delta (`cleared_` is its
 /// end). A piece is excluded by separating directions (depth <= kDirectionDepth), or when the
@@ -85,9 +84,9 @@ class FirstWithinSearch {
  public:
   enum class Step : std::uint8_t { excluded, found, give_up };
 
-  FirstWithinSearch(const Motion& m, const Separation& s, const ExactPolynomial& exact_polynomial,
+  FirstWithinSearch(const Motion& m, const Separation& s, const ExactSignAt& exact_sign_at,
                     const CcdOptions& options)
-      : m_(m), separation_(s), exact_polynomial_(exact_polynomial), options_(options),
+      : m_(m), separation_(s), exact_sign_at_(exact_sign_at), options_(options),
         delta2_(Interval(options.min_separation) * options.min_separation) {}
 
   SeparationOutcome run() {
@@ -241,12 +240,8 @@ class FirstWithinSearch {
   int sign_at(int k, double t) {
     const CertifiedSign s = certified_sign(predicates::evaluate(table().poly[k], Interval(t)));
     if (s != CertifiedSign::uncertain) return static_cast<int>(s);
-    if (exact_index_ != k) {
-      exact_g_ = exact_polynomial_(k);
-      exact_index_ = k;
-    }
     exact_used_ = true;
-    return exact_g_.sign_at(exact::Rational(t));
+    return exact_sign_at_(k, t);
   }
 
   /// The first contact is the root r in (lo, hi) of polynomial k, of sign s_lo at lo:
@@ -271,15 +266,13 @@ class FirstWithinSearch {
 
   const Motion& m_;
   const Separation& separation_;
-  const ExactPolynomial& exact_polynomial_;
+  const ExactSignAt& exact_sign_at_;
   const CcdOptions& options_;
   const Interval delta2_;
   std::optional<PolynomialTable<Separation>> table_;
   bool bracket_ = false;
   double bracket_lo_ = 0.0, bracket_hi_ = 0.0;
   std::array<signed char, kMaxSeparationPolynomials> known_{};
-  exact::Polynomial exact_g_;  // polynomial exact_index_ over the rationals, built on demand
-  int exact_index_ = -1;
   double cleared_ = 0.0;
   double toi_lo_ = 0.0, toi_hi_ = 0.0;
   bool exact_used_ = false;

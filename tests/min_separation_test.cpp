@@ -15,7 +15,10 @@
 #include <stdexcept>
 
 #include "exact/exact_ccd.hpp"
+#include "core/predicates/separation.hpp"
+#include "exact/earliest_contact.hpp"
 #include "exact/min_separation.hpp"
+#include "filters/separation_exact_signs.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/rational_query.hpp"
 #include "sample_double_queries.hpp"
@@ -198,6 +201,63 @@ TEST(MinSeparationTest, DefaultPathEqualsExactPathOnRandomQueries) {
   }
   EXPECT_GT(contacts, n / 20);
   EXPECT_GT(misses, n / 20);
+}
+
+TEST(MinSeparationTest, IntegerSignsAtDoublesEqualRationalPolynomialSigns) {
+  // The filters' exact signs at double times (integers, positions scaled by powers of two)
+  // against the region polynomials over the rationals evaluated at the same time, on random
+  // queries of wide scales and tiny motions; then exact zeros on hand-made tangencies.
+  std::mt19937_64 rng(3);
+  const int n = static_cast<int>(test::scaled_count(200));
+  int compared = 0;
+  for (int i = 0; i < n; ++i) {
+    const QueryType type = i % 2 ? QueryType::edge_edge : QueryType::vertex_face;
+    auto q = random_query(rng, type, i % 4 == 0 ? 0x1p-30 : 1.0);
+    const int k2 = static_cast<int>(rng() % 60) - 30;
+    random_queries::scale_if_exact(&q, k2);
+    const double delta = std::ldexp(1.0, k2 - 3 - static_cast<int>(rng() % 8));
+    const filters::separation::ExactSignsAtDoubles signs(
+        {&q.v[0], &q.v[1], &q.v[2], &q.v[3]}, {&q.v[4], &q.v[5], &q.v[6], &q.v[7]}, delta);
+    const RationalQuery r =
+        type == QueryType::vertex_face ? to_rational(q.vertex_face()) : to_rational(q.edge_edge());
+    const auto& p = r.points;
+    const mpq_class d2 = mpq_class(delta) * delta;
+    std::vector<exact::Polynomial> polys;
+    auto collect = [&polys](const auto& g) { polys.emplace_back(g); };
+    if (type == QueryType::vertex_face)
+      predicates::vertex_face_separation(exact::moving(p[0], p[4]), exact::moving(p[1], p[5]),
+                                         exact::moving(p[2], p[6]), exact::moving(p[3], p[7]), d2)
+          .for_each_polynomial(collect);
+    else
+      predicates::edge_edge_separation(exact::moving(p[0], p[4]), exact::moving(p[1], p[5]),
+                                       exact::moving(p[2], p[6]), exact::moving(p[3], p[7]), d2)
+          .for_each_polynomial(collect);
+    for (const double t : {0.0, 1.0, 0.5, std::ldexp(1.0, -40), std::nextafter(1.0, 0.0),
+                           std::uniform_real_distribution<double>(0, 1)(rng)}) {
+      for (int k = 0; k < static_cast<int>(polys.size()); ++k) {
+        const int expected = polys[k].sign_at(mpq_class(t));
+        const int got = type == QueryType::vertex_face ? signs.vertex_face_sign(k, t)
+                                                       : signs.edge_edge_sign(k, t);
+        ASSERT_EQ(got, expected) << "query " << i << " polynomial " << k << " t " << t;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, n * 100);
+  // Exact zeros: the vertex tangent to a's sphere (polynomial 4) at t = 1/2, delta = 5/16,
+  // and to the face plane's offset (polynomial 0) while sliding at height delta.
+  const VertexFaceQuery past_a = vertex_face({-0.1875, -0.25, 1}, {-0.1875, -0.25, -1});
+  const filters::separation::ExactSignsAtDoubles tangent(
+      {&past_a.p_t0, &past_a.a_t0, &past_a.b_t0, &past_a.c_t0},
+      {&past_a.p_t1, &past_a.a_t1, &past_a.b_t1, &past_a.c_t1}, 0.3125);
+  EXPECT_EQ(tangent.vertex_face_sign(4, 0.5), 0);
+  EXPECT_EQ(tangent.vertex_face_sign(4, std::nextafter(0.5, 0.0)), 1);
+  EXPECT_EQ(tangent.vertex_face_sign(4, std::nextafter(0.5, 1.0)), 1);
+  const VertexFaceQuery sliding = vertex_face({-1, 1, 0.25}, {3, 1, 0.25});
+  const filters::separation::ExactSignsAtDoubles slide(
+      {&sliding.p_t0, &sliding.a_t0, &sliding.b_t0, &sliding.c_t0},
+      {&sliding.p_t1, &sliding.a_t1, &sliding.b_t1, &sliding.c_t1}, 0.25);
+  for (const double t : {0.0, 0.3, 1.0}) EXPECT_EQ(slide.vertex_face_sign(0, t), 0);
 }
 
 Kernel::Point_3 at(const V& x0, const V& x1, const mpq_class& t) {

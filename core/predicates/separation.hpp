@@ -79,24 +79,29 @@ struct VertexFaceSeparation {
   PointSegmentPolynomials<Point, NT> edge(int i) const {
     return {p, vertex(i), vertex((i + 1) % 3), delta2};
   }
+  /// Calls f on every polynomial in numbering order, or on polynomial `only` alone.
   template <class F>
-  void for_each_polynomial(F&& f) const {
+  void for_each_polynomial(F&& f, int only = -1) const {
+    auto wanted = [only](int k) { return only < 0 || only == k; };
     const auto n = cross(b - a, c - a);
-    const auto d = dot(n, p - a);
-    f(d * d - scaled(delta2, dot(n, n)));
+    if (wanted(0)) {
+      const auto d = dot(n, p - a);
+      f(d * d - scaled(delta2, dot(n, n)));
+    }
     for (int i = 0; i < 3; ++i) {
       const Point& x = vertex(i);
-      f(dot(cross(vertex((i + 1) % 3) - x, p - x), n));
+      if (wanted(1 + i)) f(dot(cross(vertex((i + 1) % 3) - x, p - x), n));
     }
     for (int i = 0; i < 3; ++i) {
       const auto e = edge(i);
-      f(e.sphere(e.x));
-      f(e.projection_from_x());
-      f(e.projection_from_y());
-      f(e.capsule());
+      if (wanted(4 + 4 * i)) f(e.sphere(e.x));
+      if (wanted(5 + 4 * i)) f(e.projection_from_x());
+      if (wanted(6 + 4 * i)) f(e.projection_from_y());
+      if (wanted(7 + 4 * i)) f(e.capsule());
     }
-    f(dot(n, n));
-    for (int i = 0; i < 3; ++i) f(edge(i).length2());
+    if (wanted(16)) f(dot(n, n));
+    for (int i = 0; i < 3; ++i)
+      if (wanted(17 + i)) f(edge(i).length2());
   }
   /// Within delta from the signs: an edge's capsule or sphere, or the face region.
   template <class Sign>
@@ -138,33 +143,44 @@ struct EdgeEdgeSeparation {
       default: return {b1, a0, a1, delta2};
     }
   }
+  /// Calls f on every polynomial in numbering order, or on polynomial `only` alone.
   template <class F>
-  void for_each_polynomial(F&& f) const {
-    const auto u = a1 - a0, v = b1 - b0, w = a0 - b0;
-    const auto m = cross(u, v);
-    const auto g = dot(w, m);
-    const auto m2 = dot(m, m);
-    f(g * g - scaled(delta2, m2));
-    const auto s = dot(u, v) * dot(v, w) - dot(v, v) * dot(u, w);
-    const auto t = dot(u, u) * dot(v, w) - dot(u, v) * dot(u, w);
-    f(s);
-    f(m2 - s);
-    f(t);
-    f(m2 - t);
+  void for_each_polynomial(F&& f, int only = -1) const {
+    auto wanted = [only](int k) { return only < 0 || only == k; };
+    if (only <= 4) {  // the interior region's polynomials (all when only < 0)
+      const auto u = a1 - a0, v = b1 - b0, w = a0 - b0;
+      const auto m = cross(u, v);
+      const auto m2 = dot(m, m);
+      if (wanted(0)) {
+        const auto g = dot(w, m);
+        f(g * g - scaled(delta2, m2));
+      }
+      if (only < 0 || (only >= 1 && only <= 4)) {
+        const auto s = dot(u, v) * dot(v, w) - dot(v, v) * dot(u, w);
+        const auto t = dot(u, u) * dot(v, w) - dot(u, v) * dot(u, w);
+        if (wanted(1)) f(s);
+        if (wanted(2)) f(m2 - s);
+        if (wanted(3)) f(t);
+        if (wanted(4)) f(m2 - t);
+      }
+    }
     const auto e0 = endpoint(0), e1 = endpoint(1);
-    f(e0.sphere(b0));
-    f(e0.sphere(b1));
-    f(e1.sphere(b0));
-    f(e1.sphere(b1));
+    if (wanted(5)) f(e0.sphere(b0));
+    if (wanted(6)) f(e0.sphere(b1));
+    if (wanted(7)) f(e1.sphere(b0));
+    if (wanted(8)) f(e1.sphere(b1));
     for (int i = 0; i < 4; ++i) {
       const auto e = endpoint(i);
-      f(e.projection_from_x());
-      f(e.projection_from_y());
-      f(e.capsule());
+      if (wanted(9 + 3 * i)) f(e.projection_from_x());
+      if (wanted(10 + 3 * i)) f(e.projection_from_y());
+      if (wanted(11 + 3 * i)) f(e.capsule());
     }
-    f(m2);
-    f(e0.length2());
-    f(endpoint(2).length2());
+    if (wanted(21)) {
+      const auto m = cross(a1 - a0, b1 - b0);
+      f(dot(m, m));
+    }
+    if (wanted(22)) f(e0.length2());
+    if (wanted(23)) f(endpoint(2).length2());
   }
   /// Within delta from the signs: an endpoint's capsule or sphere, or the interior region.
   template <class Sign>

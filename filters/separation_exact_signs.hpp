@@ -1,0 +1,36 @@
+// Exact signs of the minimum-separation region polynomials at double times, in integer
+// arithmetic: the query and delta scaled by one power of two to integers, the positions at
+// t = m 2^e computed exactly as integers (scaled by 2^-e), and the one polynomial asked for
+// evaluated on them. Every region polynomial is homogeneous in the coordinates and delta, so
+// the common positive scale changes no sign. Allocates (GMP): used only where interval signs
+// cannot decide. PROOF: proofs/min_separation.md#interval-search
+#pragma once
+
+#include <gmpxx.h>
+
+#include <Eigen/Core>
+#include <array>
+
+namespace exactccd::filters::separation {
+
+class ExactSignsAtDoubles {
+ public:
+  /// The four moving vertices (x_t0, x_t1 each) and delta, all finite doubles.
+  ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*, 4>& t0,
+                      const std::array<const Eigen::Vector3d*, 4>& t1, double delta);
+
+  /// The exact sign of region polynomial k of the vertex-face separation (vertices p, a, b,
+  /// c) or of the edge-edge one (a0, a1, b0, b1) at the double t in [0, 1].
+  int vertex_face_sign(int k, double t) const;
+  int edge_edge_sign(int k, double t) const;
+
+ private:
+  using Position = std::array<mpz_class, 3>;
+  /// The positions at t and delta, all times 2^s (one s), exactly.
+  void at(double t, std::array<Position, 4>* positions, mpz_class* delta) const;
+
+  std::array<Position, 4> x0_, dx_;  // integers: coordinates times 2^-e_min
+  mpz_class delta_;
+};
+
+}  // namespace exactccd::filters::separation
