@@ -8,18 +8,31 @@
 // A second case, a fast body crossing a static sheet in one step, shows the earliest-contact call
 // where contacts are many and spread over the step.
 //
+// Minimum separation (issue 12 target: at most 1.5x): the same cloth step, one thread, with
+// SceneOptions::min_separation = 1e-4 of the cloth's size against 0, in the same run:
+//
+//   ./build/bench/scene_bench --benchmark_filter='cloth_step/min_separation' \
+//       --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//
+// The first run of each all-pairs case prints how its candidates were decided (each pair's test
+// run alone, its stage and time): where the time goes when the ratio is high; counters
+// by_culling, by_filter, by_exact hold the same counts.
+//
 // The cloth: an n x n grid folded over itself (two layers joined by a half-cylinder), wrinkled;
 // over the step the upper layer falls towards the lower one by more than the gap in places, so
 // the step has contacts. Each iteration sets the step's motion (so the hierarchies are refitted,
 // as in a new step) and runs the call.
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include "bench/scenes/meshes.hpp"
 #include "corpus/broad_phase.hpp"
+#include "exactccd/ccd.hpp"
 #include "exactccd/scene.hpp"
 
 namespace {
@@ -109,16 +122,28 @@ const FoldedCloth& cloth(int scenario) {
   return c[scenario];
 }
 
+/// The cloth's size: the longest side of its box at the start of the step (about 1).
+double cloth_size(const FoldedCloth& c) {
+  return (c.start.colwise().maxCoeff() - c.start.colwise().minCoeff()).maxCoeff();
+}
+
+/// The minimum separation of the min_separation benchmarks: 1e-4 of the cloth's size.
+double separation_of(const FoldedCloth& c) { return 1e-4 * cloth_size(c); }
+
+/// One cloth step per iteration with `options` (scenario: state.range(0)).
 template <bool Earliest>
-void BM_ClothStep(benchmark::State& state) {
+void run_cloth_step(benchmark::State& state, const exactccd::SceneOptions& options) {
   const FoldedCloth& c = cloth(static_cast<int>(state.range(0)));
   state.SetLabel(kScenarioNames[state.range(0)]);
   exactccd::Scene scene;
   const exactccd::MeshId id = scene.add_mesh(c.start, c.triangles);
-  exactccd::SceneOptions options;
-  options.max_threads = static_cast<int>(state.range(1));
   scene.set_motion(id, c.start, c.end);
-  scene.find_contacts(options);  // builds the hierarchies once, as the first step would
+  // Builds the hierarchies once, as the first step would (with the measured call: with a
+  // minimum separation an all-pairs call can take a minute, which earliest need not pay).
+  if constexpr (Earliest)
+    scene.earliest_contact(options);
+  else
+    scene.find_contacts(options);
   std::size_t contacts = 0, candidates = 0, tests = 0, built = 0;
   for (auto _ : state) {
     scene.set_motion(id, c.start, c.end);  // marks the hierarchies for a refit, as a new step
@@ -144,12 +169,103 @@ void BM_ClothStep(benchmark::State& state) {
   state.counters["narrow_tests"] = static_cast<double>(tests);
   state.counters["rebuilds"] = static_cast<double>(built);
 }
+
+template <bool Earliest>
+void BM_ClothStep(benchmark::State& state) {
+  exactccd::SceneOptions options;
+  options.max_threads = static_cast<int>(state.range(1));
+  run_cloth_step<Earliest>(state, options);
+}
 // Arguments: scenario (0 no contact, 1 late contact, 2 mid-step contact), threads.
 BENCHMARK_TEMPLATE(BM_ClothStep, false)->Name("cloth_step/all_pairs")
     ->ArgsProduct({{0, 1, 2}, {1, 2}})->ArgNames({"scenario", "threads"})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_TEMPLATE(BM_ClothStep, true)->Name("cloth_step/earliest")
     ->ArgsProduct({{1, 2}, {1, 2}})->ArgNames({"scenario", "threads"})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// How the cloth step's candidates are decided with a given min_separation: each candidate's
+/// test run again alone (one thread, outside the timed loop), its stage counted and its time
+/// summed per stage. Computed once per (scenario, delta) and printed then.
+struct StageReport {
+  static constexpr int kStages = static_cast<int>(exactccd::Stage::float_only) + 1;
+  std::size_t candidates = 0, contacts = 0;
+  std::array<std::size_t, kStages> count{};
+  std::array<double, kStages> seconds{};
+};
+
+const StageReport& stage_report(int scenario, bool with_delta) {
+  using exactccd::Stage;
+  static StageReport reports[3][2];
+  static bool done[3][2] = {};
+  StageReport& report = reports[scenario][with_delta ? 1 : 0];
+  if (done[scenario][with_delta ? 1 : 0]) return report;
+  done[scenario][with_delta ? 1 : 0] = true;
+  const FoldedCloth& c = cloth(scenario);
+  const double delta = with_delta ? separation_of(c) : 0.0;
+  exactccd::Scene scene;
+  const exactccd::MeshId id = scene.add_mesh(c.start, c.triangles);
+  scene.set_motion(id, c.start, c.end);
+  exactccd::SceneOptions options;
+  options.max_threads = 1;
+  options.record_candidates = true;
+  options.min_separation = delta;
+  const auto r = scene.find_contacts(options);
+  report.candidates = r.candidates.size();
+  report.contacts = r.contacts.size();
+  exactccd::CcdOptions ccd;
+  ccd.min_separation = delta;
+  for (const exactccd::ScenePair& p : r.candidates) {
+    const auto start = std::chrono::steady_clock::now();
+    const exactccd::CcdResult t = p.type == exactccd::QueryType::vertex_face
+                                      ? exactccd::vertex_face_ccd(scene.vertex_face_query(p), ccd)
+                                      : exactccd::edge_edge_ccd(scene.edge_edge_query(p), ccd);
+    const auto stage = static_cast<std::size_t>(t.decided_by);
+    ++report.count[stage];
+    report.seconds[stage] +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  std::printf("cloth %s, min_separation %.3g: %zu candidates, %zu contacts; by stage:",
+              kScenarioNames[scenario], delta, report.candidates, report.contacts);
+  for (int s = 0; s < StageReport::kStages; ++s) {
+    const auto k = static_cast<std::size_t>(s);
+    if (report.count[k] != 0)
+      std::printf(" %s %zu (%.1f ms)", exactccd::to_string(static_cast<Stage>(s)),
+                  report.count[k], 1e3 * report.seconds[k]);
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+  return report;
+}
+
+/// The cloth step on one thread with min_separation 0 or 1e-4 of the cloth's size (issue 12);
+/// for the all-pairs call, counters of the pairs each stage decided (from stage_report).
+template <bool Earliest>
+void BM_ClothStepSeparation(benchmark::State& state) {
+  const int scenario = static_cast<int>(state.range(0));
+  const bool with_delta = state.range(1) != 0;
+  exactccd::SceneOptions options;
+  options.max_threads = 1;
+  options.min_separation = with_delta ? separation_of(cloth(scenario)) : 0.0;
+  run_cloth_step<Earliest>(state, options);
+  state.counters["min_separation"] = options.min_separation;
+  if constexpr (!Earliest) {
+    using exactccd::Stage;
+    const StageReport& stages = stage_report(scenario, with_delta);
+    const auto count = [&](Stage s) {
+      return static_cast<double>(stages.count[static_cast<std::size_t>(s)]);
+    };
+    state.counters["by_culling"] = count(Stage::culling);
+    state.counters["by_filter"] = count(Stage::filter) + count(Stage::filter_exact_toi);
+    state.counters["by_exact"] = count(Stage::exact_at_double) + count(Stage::exact);
+  }
+}
+// Arguments: scenario, delta (0: none, 1: 1e-4 of the cloth's size).
+BENCHMARK_TEMPLATE(BM_ClothStepSeparation, false)->Name("cloth_step/min_separation/all_pairs")
+    ->ArgsProduct({{0, 1, 2}, {0, 1}})->ArgNames({"scenario", "delta"})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_TEMPLATE(BM_ClothStepSeparation, true)->Name("cloth_step/min_separation/earliest")
+    ->ArgsProduct({{1, 2}, {0, 1}})->ArgNames({"scenario", "delta"})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// The older scheme on the same step: hierarchies over the positions at the two instants. Its

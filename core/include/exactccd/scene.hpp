@@ -15,7 +15,9 @@
 /// Broad phase: a bounding volume hierarchy over the swept boxes of the primitives (the box of a
 /// primitive's start and end positions), refitted every step and rebuilt only when it degrades
 /// (Bridson et al. 2002; Redon et al. 2002). Boxes come from comparisons of the input doubles
-/// only, so culling never drops a colliding pair. PROOF: proofs/scene.md
+/// only, so culling never drops a colliding pair. With a minimum separation delta
+/// (SceneOptions::min_separation) every box's upper corner is raised by delta, rounded upwards,
+/// so culling never drops a pair that comes within delta either. PROOF: proofs/scene.md
 ///
 /// Threads: the narrow phase runs in parallel (TBB); the results do not depend on the number of
 /// threads. One Scene must not be used from two threads at once; distinct Scenes are independent.
@@ -60,8 +62,16 @@ EXACTCCD_API const char* to_string(BroadPhase broad_phase) noexcept;
 /// Options of Scene::find_contacts and Scene::earliest_contact.
 struct SceneOptions {
   /// Options of each pair's test (t_max, toi_width, mode), as in vertex_face_ccd; invalid ones
-  /// throw std::invalid_argument.
+  /// throw std::invalid_argument. ccd.min_separation must be 0 or equal to min_separation (the
+  /// scene sets it to min_separation for every pair; a delta the broad phase did not inflate its
+  /// boxes by would drop pairs), else std::invalid_argument.
   CcdOptions ccd;
+  /// Minimum separation delta >= 0 (\ref min_separation "minimum-separation CCD"): a pair is a
+  /// contact when its closed primitives come within Euclidean distance delta, with the earliest
+  /// such time as its TOI, exactly as vertex_face_ccd / edge_edge_ccd decide it with
+  /// CcdOptions::min_separation = delta; the broad phase keeps every such pair. 0 (the default)
+  /// is contact itself, the same answers as without this field. Must be finite and >= 0.
+  double min_separation = 0.0;
   /// The broad phase (swept_bvh, the default, never drops a colliding pair).
   BroadPhase broad_phase = BroadPhase::swept_bvh;
   /// Test pairs within each moving mesh (pairs sharing a vertex excluded).
@@ -107,7 +117,8 @@ struct SceneContact {
 
 /// Work counts of one call (for statistics and benchmarks).
 struct SceneStats {
-  /// Pairs whose boxes overlap (the narrow phase's input), per type.
+  /// Pairs whose boxes overlap (the narrow phase's input; boxes raised by min_separation), per
+  /// type.
   std::uint64_t vertex_face_candidates = 0;
   /// Edge-edge pairs whose boxes overlap.
   std::uint64_t edge_edge_candidates = 0;

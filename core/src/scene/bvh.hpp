@@ -29,6 +29,15 @@ inline bool overlap(const Box& a, const Box& b) {
            a.hi[2] < b.lo[2] || b.hi[2] < a.lo[2]);
 }
 
+/// Raises the upper corner by delta >= 0, each sum rounded upwards (the caller holds upward
+/// rounding): two boxes so raised overlap whenever the originals are at most delta apart on
+/// every axis, since fl(hi + delta) >= hi + delta >= the other's lo. The lower corner stays, so
+/// a raised pair overlaps exactly when no axis has hi1 + delta < lo2 or hi2 + delta < lo1 with
+/// upward rounding: the per-pair culling with delta. PROOF: proofs/scene.md#min-separation
+EXACTCCD_CERTIFIED void raise_upper_corner(Box& box, double delta) {
+  for (int k = 0; k < 3; ++k) box.hi[k] = box.hi[k] + delta;
+}
+
 /// The smallest box holding both.
 inline Box merge(const Box& a, const Box& b) {
   Box r;

@@ -56,7 +56,8 @@ enum class Span : int { swept = 0, start = 1, end = 2 };
 struct Hierarchies {
   Bvh vertices, edges, faces;
   bool built = false;
-  bool stale = false;  ///< positions changed since the last refit
+  bool stale = false;      ///< positions changed since the last refit
+  double raised_by = 0.0;  ///< the min_separation the boxes' upper corners were raised by
 };
 
 struct Mesh {
@@ -108,6 +109,19 @@ void check_triangles(const Triangles& triangles, Eigen::Index vertex_count) {
 void check_options(const SceneOptions& o) {
   check_ccd_options(o.ccd);
   if (o.max_threads < 0) throw std::invalid_argument("exactccd: max_threads must be >= 0");
+  if (!(o.min_separation >= 0.0) || !std::isfinite(o.min_separation))
+    throw std::invalid_argument("exactccd: SceneOptions::min_separation must be finite and >= 0");
+  if (o.ccd.min_separation != 0.0 && o.ccd.min_separation != o.min_separation)
+    throw std::invalid_argument(
+        "exactccd: SceneOptions::ccd.min_separation must be 0 or equal to "
+        "SceneOptions::min_separation, the scene's minimum separation (its broad phase inflates "
+        "the boxes by that one)");
+}
+
+/// The options each pair is decided with: the caller's, with min_separation as the pairs' delta.
+SceneOptions with_pair_separation(SceneOptions o) {
+  o.ccd.min_separation = o.min_separation;
+  return o;
 }
 
 Eigen::Vector3d row(const Positions& x, std::int32_t i) { return x.row(i).transpose(); }
@@ -118,16 +132,22 @@ using IndexRows = Eigen::Matrix<std::int32_t, Eigen::Dynamic, K, Eigen::RowMajor
 
 /// Boxes of a mesh's primitives over a span: min/max of input doubles only, so exact. A moving
 /// primitive stays in the box of its start and end positions (proofs/scene.md#swept-boxes).
+/// With delta > 0 each box's upper corner is then raised by delta, rounded upwards
+/// (proofs/scene.md#min-separation).
 template <int K>
 std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* indices,
-                                 Eigen::Index count) {
+                                 Eigen::Index count, double delta) {
   std::vector<Box> boxes(static_cast<std::size_t>(count));
   const bool use_start = span != Span::end || m.is_static;
   const bool use_end = span != Span::start && !m.is_static;
   const Positions& first = use_start ? m.start : m.end;
   tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
                     [&](const tbb::blocked_range<Eigen::Index>& r) {
-                      const FpGuard fp;  // min/max by comparison: no denormals-are-zero
+                      // min/max by comparison: no denormals-are-zero; the raise by delta
+                      // rounds upwards (min/max are exact in either mode).
+                      const predicates::FpEnvironmentGuard fp(
+                          delta > 0.0 ? predicates::Rounding::upward
+                                      : predicates::Rounding::to_nearest);
                       for (Eigen::Index p = r.begin(); p != r.end(); ++p) {
                         // Vertex k of primitive p: p itself for vertices (no index matrix).
                         const auto vertex = [&](int k) {
@@ -138,6 +158,7 @@ std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* i
                           if (use_start) scene::grow(box, m.start.row(vertex(k)));
                           if (use_end) scene::grow(box, m.end.row(vertex(k)));
                         }
+                        if (delta > 0.0) scene::raise_upper_corner(box, delta);
                         boxes[static_cast<std::size_t>(p)] = box;
                       }
                     });
@@ -154,16 +175,19 @@ void update(Bvh& bvh, const std::vector<Box>& boxes, bool built, SceneStats& sta
   ++stats.hierarchies_built;
 }
 
-/// Builds, refits or rebuilds (when degraded) the hierarchies of one mesh over one span.
-Hierarchies& prepare(Mesh& m, Span span, SceneStats& stats) {
+/// Builds, refits or rebuilds (when degraded) the hierarchies of one mesh over one span, boxes
+/// raised by delta; a change of delta since the last call refits them as a change of positions.
+Hierarchies& prepare(Mesh& m, Span span, double delta, SceneStats& stats) {
   // A static mesh has one set of positions: one set of hierarchies serves every span.
   Hierarchies& h = m.spans[m.is_static ? 0 : static_cast<int>(span)];
-  if (h.built && !h.stale) return h;
-  update(h.vertices, primitive_boxes<1>(m, span, nullptr, m.start.rows()), h.built, stats);
-  update(h.edges, primitive_boxes<2>(m, span, &m.edges, m.edges.rows()), h.built, stats);
-  update(h.faces, primitive_boxes<3>(m, span, &m.triangles, m.triangles.rows()), h.built, stats);
+  if (h.built && !h.stale && h.raised_by == delta) return h;
+  update(h.vertices, primitive_boxes<1>(m, span, nullptr, m.start.rows(), delta), h.built, stats);
+  update(h.edges, primitive_boxes<2>(m, span, &m.edges, m.edges.rows(), delta), h.built, stats);
+  update(h.faces, primitive_boxes<3>(m, span, &m.triangles, m.triangles.rows(), delta), h.built,
+         stats);
   h.built = true;
   h.stale = false;
+  h.raised_by = delta;
   return h;
 }
 
@@ -252,7 +276,7 @@ struct Scene::Impl {
 
   /// The candidate pairs of the swept hierarchies, in no particular order.
   std::vector<ScenePair> swept_candidates(const SceneOptions& o, SceneStats& stats) {
-    for (Mesh& m : meshes) prepare(m, Span::swept, stats);
+    for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats);
     tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
     gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, found);
     return concatenate(found);
@@ -273,7 +297,7 @@ struct Scene::Impl {
   std::vector<ScenePair> static_candidates(const SceneOptions& o, SceneStats& stats) {
     tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
     for (Span span : {Span::start, Span::end}) {
-      for (Mesh& m : meshes) prepare(m, span, stats);
+      for (Mesh& m : meshes) prepare(m, span, o.min_separation, stats);
       gather_candidates(
           o,
           [span](const Mesh& m) -> const Hierarchies& {
@@ -380,7 +404,8 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
       options.t_max = window;
       // One query per pair: culled over the window when the bound has shrunk, else decided.
       const auto decide = [&](const auto& query) -> std::optional<CcdResult> {
-        if (window < t_max && scene::disjoint_over_window(query, window)) return std::nullopt;
+        if (window < t_max && scene::disjoint_over_window(query, window, o.min_separation))
+          return std::nullopt;
         ++local.tests;
         return decide_query(query, options);
       };
@@ -478,7 +503,8 @@ auto with_threads(int max_threads, F&& f) {
 SceneResult Scene::find_contacts(const SceneOptions& options) {
   const FpGuard fp;
   check_options(options);
-  return with_threads(options.max_threads, [&] { return impl_->find_contacts(options); });
+  const SceneOptions o = with_pair_separation(options);
+  return with_threads(o.max_threads, [&] { return impl_->find_contacts(o); });
 }
 
 EarliestContact Scene::earliest_contact(const SceneOptions& options) {
@@ -486,7 +512,8 @@ EarliestContact Scene::earliest_contact(const SceneOptions& options) {
   check_options(options);
   if (options.broad_phase != BroadPhase::swept_bvh)
     throw std::invalid_argument("exactccd: earliest_contact needs the swept_bvh broad phase");
-  return with_threads(options.max_threads, [&] { return impl_->earliest_contact(options); });
+  const SceneOptions o = with_pair_separation(options);
+  return with_threads(o.max_threads, [&] { return impl_->earliest_contact(o); });
 }
 
 VertexFaceQuery Scene::vertex_face_query(const ScenePair& pair) const {
