@@ -5,6 +5,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "core/predicates/separation.hpp"
 
@@ -40,11 +41,13 @@ Point point(const std::array<mpz_class, 3>& x) {
           FixedPoly<mpz_class, 0>{{x[2]}}};
 }
 
-template <class Separation>
-int sign_of_polynomial(const Separation& s, int k) {
-  int sign = 0;
-  s.for_each_polynomial([&sign](const auto& g) { sign = sgn(g.c[0]); }, k);
-  return sign;
+/// The exponent of t's last bit: t = m 2^e with an integer m (0 for t = 0).
+long ulp_exponent(double t) {
+  if (t == 0) return 0;
+  std::int64_t m = 0;
+  int e = 0;
+  split(t, &m, &e);
+  return e;
 }
 
 }  // namespace
@@ -75,37 +78,80 @@ ExactSignsAtDoubles::ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*
   delta_ = scaled_integer(delta, e_min);
 }
 
-void ExactSignsAtDoubles::at(double t, std::array<Position, 4>* positions,
+void ExactSignsAtDoubles::at(double t, long shift, std::array<Position, 4>* positions,
                              mpz_class* delta) const {
-  // t = m 2^e (e <= 0 for t in (0, 1]): positions x0 + t dx times 2^-e = x0 2^-e + m dx.
+  // t = m 2^e: positions (x0 + t dx) 2^shift = x0 2^shift + m dx 2^(shift + e), exactly.
   std::int64_t m = 0;
   int e = 0;
   if (t != 0) split(t, &m, &e);
-  const mp_bitcnt_t shift = t == 0 ? 0 : static_cast<mp_bitcnt_t>(-e);
   const mpz_class mz(static_cast<long>(m));
+  const mp_bitcnt_t up = static_cast<mp_bitcnt_t>(shift);
+  const mp_bitcnt_t up_m = t == 0 ? 0 : static_cast<mp_bitcnt_t>(shift + e);
   for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c) (*positions)[i][c] = (x0_[i][c] << shift) + mz * dx_[i][c];
-  *delta = delta_ << shift;
+    for (int c = 0; c < 3; ++c)
+      (*positions)[i][c] = (x0_[i][c] << up) + ((mz * dx_[i][c]) << up_m);
+  *delta = delta_ << up;
 }
 
-int ExactSignsAtDoubles::vertex_face_sign(int k, double t) const {
+template <class Make>
+mpz_class ExactSignsAtDoubles::value(const Make& make, int k, double t, long shift) const {
   std::array<Position, 4> x;
   mpz_class d;
-  at(t, &x, &d);
+  at(t, shift, &x, &d);
   const mpz_class d2 = d * d;
-  return sign_of_polynomial(
-      predicates::vertex_face_separation(point(x[0]), point(x[1]), point(x[2]), point(x[3]), d2),
-      k);
+  mpz_class v;
+  make(point(x[0]), point(x[1]), point(x[2]), point(x[3]), d2)
+      .for_each_polynomial([&v](const auto& g) { v = g.c[0]; }, k);
+  return v;
+}
+
+template <class Make>
+double ExactSignsAtDoubles::secant(const Make& make, int k, double lo, double hi) const {
+  // One scale for both ends (the finer ulp's), so that the values are comparable.
+  const long shift = std::max(-ulp_exponent(lo), -ulp_exponent(hi));
+  const mpz_class v_lo = value(make, k, lo, shift), v_hi = value(make, k, hi, shift);
+  const mpz_class diff = v_lo - v_hi;
+  if (sgn(diff) == 0) return std::numeric_limits<double>::quiet_NaN();
+  long e_num = 0, e_den = 0;
+  const double num = mpz_get_d_2exp(&e_num, v_lo.get_mpz_t());
+  const double den = mpz_get_d_2exp(&e_den, diff.get_mpz_t());
+  return lo + (hi - lo) * std::ldexp(num / den, static_cast<int>(e_num - e_den));
+}
+
+namespace {
+
+struct MakeVertexFace {
+  template <class Point, class NT>
+  auto operator()(const Point& p, const Point& a, const Point& b, const Point& c,
+                  const NT& d2) const {
+    return predicates::vertex_face_separation(p, a, b, c, d2);
+  }
+};
+
+struct MakeEdgeEdge {
+  template <class Point, class NT>
+  auto operator()(const Point& a0, const Point& a1, const Point& b0, const Point& b1,
+                  const NT& d2) const {
+    return predicates::edge_edge_separation(a0, a1, b0, b1, d2);
+  }
+};
+
+}  // namespace
+
+int ExactSignsAtDoubles::vertex_face_sign(int k, double t) const {
+  return sgn(value(MakeVertexFace{}, k, t, -ulp_exponent(t)));
 }
 
 int ExactSignsAtDoubles::edge_edge_sign(int k, double t) const {
-  std::array<Position, 4> x;
-  mpz_class d;
-  at(t, &x, &d);
-  const mpz_class d2 = d * d;
-  return sign_of_polynomial(
-      predicates::edge_edge_separation(point(x[0]), point(x[1]), point(x[2]), point(x[3]), d2),
-      k);
+  return sgn(value(MakeEdgeEdge{}, k, t, -ulp_exponent(t)));
+}
+
+double ExactSignsAtDoubles::vertex_face_secant(int k, double lo, double hi) const {
+  return secant(MakeVertexFace{}, k, lo, hi);
+}
+
+double ExactSignsAtDoubles::edge_edge_secant(int k, double lo, double hi) const {
+  return secant(MakeEdgeEdge{}, k, lo, hi);
 }
 
 }  // namespace exactccd::filters::separation

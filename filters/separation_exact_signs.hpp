@@ -24,10 +24,20 @@ class ExactSignsAtDoubles {
   int vertex_face_sign(int k, double t) const;
   int edge_edge_sign(int k, double t) const;
 
+  /// A guess, in plain arithmetic and never a decision, of the root of polynomial k in
+  /// (lo, hi), 0 < lo < hi: the secant through its exact values at lo and hi. NaN when the
+  /// values do not differ.
+  double vertex_face_secant(int k, double lo, double hi) const;
+  double edge_edge_secant(int k, double lo, double hi) const;
+
  private:
   using Position = std::array<mpz_class, 3>;
-  /// The positions at t and delta, all times 2^s (one s), exactly.
-  void at(double t, std::array<Position, 4>* positions, mpz_class* delta) const;
+  /// The positions at t and delta, all times 2^shift, exactly; shift >= -(t's ulp exponent).
+  void at(double t, long shift, std::array<Position, 4>* positions, mpz_class* delta) const;
+  template <class Make>
+  mpz_class value(const Make& make, int k, double t, long shift) const;
+  template <class Make>
+  double secant(const Make& make, int k, double lo, double hi) const;
 
   std::array<Position, 4> x0_, dx_;  // integers: coordinates times 2^-e_min
   mpz_class delta_;

@@ -46,9 +46,9 @@ predicates::MovingPoint<Interval> moving(const Eigen::Vector3d& x0, const Eigen:
 
 template <class Motion, class Separation>
 SeparationOutcome first_within(const Motion& m, const Separation& s,
-                               const separation::ExactSignAt& exact_sign_at,
+                               const separation::ExactAtDoubles& exact,
                                const CcdOptions& options) {
-  return separation::FirstWithinSearch<Motion, Separation>(m, s, exact_sign_at, options).run();
+  return separation::FirstWithinSearch<Motion, Separation>(m, s, exact, options).run();
 }
 
 }  // namespace
@@ -75,15 +75,18 @@ SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                     moving(q.a_t0, q.a_t1),
                                                     moving(q.b_t0, q.b_t1),
                                                     moving(q.c_t0, q.c_t1), delta2);
-  std::optional<separation::ExactSignsAtDoubles> exact;  // built on first use
-  const separation::ExactSignAt exact_sign_at = [&](int k, double t) {
-    if (!exact)
-      exact.emplace(std::array<const Eigen::Vector3d*, 4>{&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0},
-                    std::array<const Eigen::Vector3d*, 4>{&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1},
-                    options.min_separation);
-    return exact->vertex_face_sign(k, t);
+  std::optional<separation::ExactSignsAtDoubles> integer;  // built on first use
+  auto exact_signs = [&]() -> const separation::ExactSignsAtDoubles& {
+    if (!integer)
+      integer.emplace(std::array<const Eigen::Vector3d*, 4>{&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0},
+                      std::array<const Eigen::Vector3d*, 4>{&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1},
+                      options.min_separation);
+    return *integer;
   };
-  return first_within(m, s, exact_sign_at, options);
+  const separation::ExactAtDoubles exact{
+      [&](int k, double t) { return exact_signs().vertex_face_sign(k, t); },
+      [&](int k, double lo, double hi) { return exact_signs().vertex_face_secant(k, lo, hi); }};
+  return first_within(m, s, exact, options);
 }
 
 SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
@@ -97,16 +100,19 @@ SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdO
                                                   moving(q.ea1_t0, q.ea1_t1),
                                                   moving(q.eb0_t0, q.eb0_t1),
                                                   moving(q.eb1_t0, q.eb1_t1), delta2);
-  std::optional<separation::ExactSignsAtDoubles> exact;  // built on first use
-  const separation::ExactSignAt exact_sign_at = [&](int k, double t) {
-    if (!exact)
-      exact.emplace(
+  std::optional<separation::ExactSignsAtDoubles> integer;  // built on first use
+  auto exact_signs = [&]() -> const separation::ExactSignsAtDoubles& {
+    if (!integer)
+      integer.emplace(
           std::array<const Eigen::Vector3d*, 4>{&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0},
           std::array<const Eigen::Vector3d*, 4>{&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
           options.min_separation);
-    return exact->edge_edge_sign(k, t);
+    return *integer;
   };
-  return first_within(m, s, exact_sign_at, options);
+  const separation::ExactAtDoubles exact{
+      [&](int k, double t) { return exact_signs().edge_edge_sign(k, t); },
+      [&](int k, double lo, double hi) { return exact_signs().edge_edge_secant(k, lo, hi); }};
+  return first_within(m, s, exact, options);
 }
 
 }  // namespace exactccd::filters

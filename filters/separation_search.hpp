@@ -6,6 +6,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -69,9 +70,13 @@ EXACTCCD_CERTIFIED Poly6 derivative_of(const Poly6& g) {
 constexpr int kDirectionDepth = 6;
 constexpr int kMaxDepth = 40;
 
-/// The exact sign of region polynomial k at the double t (asked only where interval signs
-/// cannot tell).
-using ExactSignAt = std::function<int(int k, double t)>;
+/// Exact arithmetic at double times, asked only where interval signs cannot tell: the exact
+/// sign of region polynomial k at the double t, and a secant guess (never a decision) of its
+/// root in (lo, hi) from its exact values there.
+struct ExactAtDoubles {
+  std::function<int(int k, double t)> sign;
+  std::function<double(int k, double lo, double hi)> secant;
+};
 
 /// Every piece before the current one is certainly never within delta (`cleared_` is its
 /// end). A piece is excluded by separating directions (depth <= kDirectionDepth), or when the
@@ -84,9 +89,9 @@ class FirstWithinSearch {
  public:
   enum class Step : std::uint8_t { excluded, found, give_up };
 
-  FirstWithinSearch(const Motion& m, const Separation& s, const ExactSignAt& exact_sign_at,
+  FirstWithinSearch(const Motion& m, const Separation& s, const ExactAtDoubles& exact,
                     const CcdOptions& options)
-      : m_(m), separation_(s), exact_sign_at_(exact_sign_at), options_(options),
+      : m_(m), separation_(s), exact_(exact), options_(options),
         delta2_(Interval(options.min_separation) * options.min_separation) {}
 
   SeparationOutcome run() {
@@ -241,23 +246,54 @@ class FirstWithinSearch {
     const CertifiedSign s = certified_sign(predicates::evaluate(table().poly[k], Interval(t)));
     if (s != CertifiedSign::uncertain) return static_cast<int>(s);
     exact_used_ = true;
-    return exact_sign_at_(k, t);
+    return exact_.sign(k, t);
   }
 
   /// The first contact is the root r in (lo, hi) of polynomial k, of sign s_lo at lo:
   /// bisection in the order of doubles with certified signs, exact ones at doubles where the
   /// interval cannot tell, to the tightest pair of doubles (or toi_width).
   Step tighten(int k, double lo, double hi, int s_lo) {
+    const Poly6& g = table().poly[k];
+    bool exact_phase = false;  // the interval signs have failed once: exact signs from here
     for (;;) {
       if (options_.toi_width > 0 && hi - lo <= options_.toi_width) break;  // rounded up
       double mid = 0;
       if (!predicates::middle_double(lo, hi, &mid)) break;
-      const int s = sign_at(k, mid);
+      if (!exact_phase) {
+        const CertifiedSign s = certified_sign(predicates::evaluate(g, Interval(mid)));
+        if (s != CertifiedSign::uncertain) {
+          if (s == CertifiedSign::zero) {
+            lo = hi = mid;
+            break;
+          }
+          (static_cast<int>(s) == s_lo ? lo : hi) = mid;
+          continue;
+        }
+        exact_phase = true;
+      }
+      // Near r the interval cannot tell: a point from the secant through g's exact values at
+      // the ends (a guess: its exact sign decides), and its neighbour on r's side, so that a
+      // good guess closes the bracket to adjacent doubles at once.
+      exact_used_ = true;
+      if (lo > 0) {
+        const double guess = exact_.secant(k, lo, hi);
+        if (guess > lo && guess < hi) mid = guess;
+      }
+      const int s = exact_.sign(k, mid);
       if (s == 0) {
         lo = hi = mid;
         break;
       }
       (s == s_lo ? lo : hi) = mid;
+      const double next = s == s_lo ? std::nextafter(mid, hi) : std::nextafter(mid, lo);
+      if (next > lo && next < hi) {
+        const int s_next = exact_.sign(k, next);
+        if (s_next == 0) {
+          lo = hi = next;
+          break;
+        }
+        (s_next == s_lo ? lo : hi) = next;
+      }
     }
     toi_lo_ = lo;
     toi_hi_ = hi;
@@ -266,7 +302,7 @@ class FirstWithinSearch {
 
   const Motion& m_;
   const Separation& separation_;
-  const ExactSignAt& exact_sign_at_;
+  const ExactAtDoubles& exact_;
   const CcdOptions& options_;
   const Interval delta2_;
   std::optional<PolynomialTable<Separation>> table_;
