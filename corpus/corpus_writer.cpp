@@ -36,6 +36,28 @@ std::string format_double(double v) {
   return buffer;
 }
 
+/// Every member of every family decided by the exact path (with the minimum separation
+/// `delta` when not null), in parallel; results[f][m] for member m of family f.
+std::vector<std::vector<CcdResult>> decide_exactly(const std::vector<Family>& families,
+                                                   const mpq_class* delta) {
+  std::vector<std::pair<std::size_t, std::size_t>> work;
+  for (std::size_t f = 0; f < families.size(); ++f)
+    for (std::size_t m = 0; m < families[f].members.size(); ++m) work.push_back({f, m});
+  std::vector<std::vector<CcdResult>> results(families.size());
+  for (std::size_t f = 0; f < families.size(); ++f) results[f].resize(families[f].members.size());
+  // Each result goes to its own slot: the output does not depend on the number of threads.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size(), 4),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        const auto [f, m] = work[i];
+                        const RationalQuery q =
+                            rational(families[f].type, families[f].members[m].points);
+                        results[f][m] = delta ? exact_ccd(q, *delta) : exact_ccd(q);
+                      }
+                    });
+  return results;
+}
+
 }  // namespace
 
 Corpus generate_corpus(std::uint64_t seed, int per_family, const std::vector<std::string>& names) {
@@ -56,20 +78,7 @@ Corpus generate_corpus(std::uint64_t seed, int per_family, const std::vector<std
     }
   }
 
-  std::vector<std::pair<std::size_t, std::size_t>> work;
-  for (std::size_t f = 0; f < families.size(); ++f)
-    for (std::size_t m = 0; m < families[f].members.size(); ++m) work.push_back({f, m});
-  std::vector<std::vector<CcdResult>> results(families.size());
-  for (std::size_t f = 0; f < families.size(); ++f) results[f].resize(families[f].members.size());
-  // Each result goes to its own slot: the output does not depend on the number of threads.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size(), 4),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        const auto [f, m] = work[i];
-                        results[f][m] =
-                            exact_ccd(rational(families[f].type, families[f].members[m].points));
-                      }
-                    });
+  const std::vector<std::vector<CcdResult>> results = decide_exactly(families, nullptr);
 
   for (std::size_t f = 0; f < listed; ++f) {
     GeneratedFamily g;
@@ -86,6 +95,20 @@ Corpus generate_corpus(std::uint64_t seed, int per_family, const std::vector<std
     }
     corpus.families.push_back(std::move(g));
   }
+  return corpus;
+}
+
+Corpus generate_min_separation_corpus(double delta, std::uint64_t seed, int per_family,
+                                      const std::vector<std::string>& names) {
+  Corpus corpus;
+  corpus.seed = seed;
+  corpus.per_family = per_family;
+  corpus.min_separation = delta;
+  std::vector<Family> families = generate_min_separation_families(delta, seed, per_family, names);
+  const mpq_class exact_delta(delta);
+  std::vector<std::vector<CcdResult>> results = decide_exactly(families, &exact_delta);
+  for (std::size_t f = 0; f < families.size(); ++f)
+    corpus.families.push_back({std::move(families[f]), std::move(results[f])});
   return corpus;
 }
 
@@ -170,7 +193,7 @@ std::string manifest_text(const Corpus& corpus) {
                         {"collisions", g.collisions()},
                         {"description", f.description}});
   }
-  const nlohmann::json manifest = {
+  nlohmann::json manifest = {
       {"generator", "exactccd generate"},
       {"seed", corpus.seed},
       {"per_family", corpus.per_family},
@@ -181,6 +204,14 @@ std::string manifest_text(const Corpus& corpus) {
        "(%.17g; the exact path's tightest pair of doubles around the first contact time; "
        "empty without contact)."},
       {"families", families}};
+  if (corpus.min_separation) {
+    // The delta of every family: truth and TOIs are those of minimum-separation CCD.
+    manifest["min_separation"] = *corpus.min_separation;
+    manifest["min_separation_exact"] = mpq_class(*corpus.min_separation).get_str();
+    manifest["format"] = manifest["format"].get<std::string>() +
+                         " Minimum separation: collides means the primitives come within "
+                         "Euclidean distance min_separation; the TOI is the earliest such time.";
+  }
   return manifest.dump(2) + "\n";
 }
 

@@ -1,6 +1,7 @@
 // The degenerate-query corpus that `exactccd generate` writes (and tests/data/degenerate-suite
-// ships): the families of families.hpp with the exact path's verdict and tightest TOI for
-// every member, serialised as
+// ships): the families of families.hpp (or, with --min-separation, those of
+// min_separation_families.hpp for one delta, recorded in the manifest) with the exact path's
+// verdict and tightest TOI for every member, serialised as
 //   DIR/manifest.json
 //   DIR/<family>/<vertex-face|edge-edge>/data_0.csv  benchmark CSV, 8 rows per query,
 //       x_num,x_den,y_num,y_den,z_num,z_den,truth; every coordinate its exact lowest-terms
@@ -12,10 +13,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "corpus/families.hpp"
+#include "corpus/min_separation_families.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::families {
@@ -31,6 +34,9 @@ struct GeneratedFamily {
 struct Corpus {
   std::uint64_t seed = 1;
   int per_family = kDefaultPerFamily;
+  /// The minimum-separation families' delta (min_separation_families.hpp); none for the
+  /// degenerate families.
+  std::optional<double> min_separation;
   std::vector<GeneratedFamily> families;
 };
 
@@ -39,6 +45,12 @@ struct Corpus {
 /// per_family.
 Corpus generate_corpus(std::uint64_t seed, int per_family,
                        const std::vector<std::string>& names = {});
+
+/// The minimum-separation families (all when `names` is empty) for `delta`, every member
+/// decided by the exact path with that delta (exact_ccd with the rational delta), in parallel.
+/// Throws std::invalid_argument as generate_min_separation_families.
+Corpus generate_min_separation_corpus(double delta, std::uint64_t seed, int per_family,
+                                      const std::vector<std::string>& names = {});
 
 /// One line per member with a claim (base families; power-of-two variants where the scaling is
 /// exact) whose exact verdict or TOI contradicts it (collides; toi_lo <= t* <= toi_hi with the

@@ -62,7 +62,8 @@ void write_corpus_files(const families::Corpus& corpus, const fs::path& root,
   std::error_code error;
   for (fs::directory_iterator family(root, error); !error && family != fs::directory_iterator();
        family.increment(error)) {
-    if (!families::is_family_name(family->path().filename().string())) continue;
+    const std::string name = family->path().filename().string();
+    if (!families::is_family_name(name) && !families::is_min_separation_family(name)) continue;
     for (const char* type : {"vertex-face", "edge-edge"}) {
       std::error_code list_error;
       for (fs::directory_iterator file(family->path() / type, list_error);
@@ -86,8 +87,22 @@ int run_generate(const GenerateOptions& options) {
     throw UsageError("--per-family must lie in [" + std::to_string(families::kMinPerFamily) + ", " +
                      std::to_string(families::kMaxPerFamily) + "], got " +
                      std::to_string(options.per_family));
+  if (options.min_separation) {
+    const std::string problem = families::min_separation_delta_problem(*options.min_separation);
+    if (!problem.empty())
+      throw UsageError("--min-separation " + problem + ", got " +
+                       format_double(*options.min_separation));
+    for (const std::string& name : options.families)
+      if (!families::is_min_separation_family(name)) {
+        std::string names;
+        for (const std::string& n : families::min_separation_family_names())
+          names += (names.empty() ? "" : ", ") + n;
+        throw UsageError("--families: unknown minimum-separation family '" + name +
+                         "' (with --min-separation: " + names + ")");
+      }
+  }
   for (const std::string& name : options.families)
-    if (!families::is_family_name(name)) {
+    if (!options.min_separation && !families::is_family_name(name)) {
       std::string suffixes;
       for (const families::Variant& v : families::variants())
         suffixes += (suffixes.empty() ? "" : ", ") + std::string(v.suffix);
@@ -106,7 +121,10 @@ int run_generate(const GenerateOptions& options) {
 
   const auto start = std::chrono::steady_clock::now();
   const families::Corpus corpus =
-      families::generate_corpus(options.seed, options.per_family, options.families);
+      options.min_separation
+          ? families::generate_min_separation_corpus(*options.min_separation, options.seed,
+                                                     options.per_family, options.families)
+          : families::generate_corpus(options.seed, options.per_family, options.families);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_corpus_files(corpus, root, overwrite);
@@ -120,6 +138,9 @@ int run_generate(const GenerateOptions& options) {
   std::printf("seed %llu, %d queries per family, exact path in %.2f s (%d threads)\n",
               static_cast<unsigned long long>(options.seed), options.per_family, seconds,
               tbb::this_task_arena::max_concurrency());
+  if (options.min_separation)
+    std::printf("minimum separation %s: collisions are queries within that distance\n",
+                format_double(*options.min_separation).c_str());
   std::printf("%-36s %-12s %8s %11s %14s\n", "family", "type", "queries", "collisions",
               "kept verdict");
   for (const families::GeneratedFamily& g : corpus.families) {

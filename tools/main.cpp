@@ -1,6 +1,7 @@
 // `exactccd`: the command-line oracle. `check` decides benchmark CSV files (exactly by default)
 // and compares with their truth column; `grade` judges another code's answers (and TOIs)
-// exactly; `simulate` writes simulation-like queries; `generate` the degenerate families;
+// exactly; `simulate` writes simulation-like queries; `generate` the degenerate families (or
+// the minimum-separation families);
 // `bench` times the modes; `study` measures the uncertified methods' errors against the exact
 // truth.
 #include <unistd.h>
@@ -247,10 +248,15 @@ int main(int argc, char** argv) {
     std::string suffixes;
     for (const auto& v : exactccd::families::variants())
       suffixes += (suffixes.empty() ? "" : ", ") + std::string(v.suffix);  // "@s1e-12, ..."
+    std::string separations;
+    for (const std::string& name : exactccd::families::min_separation_family_names())
+      separations += (separations.empty() ? "" : ", ") + name;
     generate->footer("Families: " + bases + "; each of them scaled or translated in double "
                      "arithmetic (@s, @t: no claim) or scaled by 2^k (@p2^k: claims kept where "
                      "exact), named <family>" + suffixes + "; and the random families without "
-                     "claims " + randoms + ".\n\nExit "
+                     "claims " + randoms + ". With --min-separation D: " + separations +
+                     " (within distance D exactly at the constructed time, near misses 1 ulp "
+                     "and ~2^-k D farther).\n\nExit "
                      "status: 0 written, every member as constructed; 1 written, but some "
                      "member's exact verdict or TOI contradicts its construction (listed on "
                      "stderr); 2 bad command line, an unwritable folder, or an earlier run's "
@@ -271,6 +277,14 @@ int main(int argc, char** argv) {
       ->add_option("--families", generate_options.families,
                    "Comma-separated family names (default: all)")
       ->delimiter(',');
+  double generate_min_separation = 0.0;
+  CLI::Option* generate_min_separation_option =
+      generate
+          ->add_option("--min-separation", generate_min_separation,
+                       "Write the minimum-separation families for this delta instead (0 or a "
+                       "double in [2^-900, 2^900]; e.g. 0.0009765625, 0x1p-10, 0.3): truth and "
+                       "TOI of minimum-separation CCD, delta in the manifest")
+          ->check(numeric_text(false));
 
   // CLI11 would only say that a subcommand is required.
   if (argc >= 2 && argv[1][0] != '-') {
@@ -324,7 +338,11 @@ int main(int argc, char** argv) {
         bench_options.min_separations.push_back(parse_number(word, "--min-separation"));
       return run_bench(bench_options);
     }
-    if (generate->parsed()) return run_generate(generate_options);
+    if (generate->parsed()) {
+      if (generate_min_separation_option->count() > 0)
+        generate_options.min_separation = generate_min_separation;
+      return run_generate(generate_options);
+    }
     grade_options.type = parse_type_name(grade_type);
     return run_grade(grade_options);
   });
