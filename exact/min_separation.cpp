@@ -45,32 +45,37 @@ CcdResult earliest_within(const Separation& separation, const CcdOptions& option
                      options);
 }
 
+/// The query scaled to integer coordinates by l, delta by the same l (distances scale by l,
+/// times do not), and its separation made by `make` over the exact rationals.
+template <class Make>
+CcdResult min_separation_exact(const RationalQuery& query, const Rational& delta,
+                               const CcdOptions& options, const SeparationHint& hint,
+                               Make make) {
+  Rational scale;
+  const RationalQuery q = with_integer_coordinates(query, &scale);
+  const Rational d = delta * scale;
+  const auto& v = q.points;
+  return earliest_within(make(moving(v[0], v[4]), moving(v[1], v[5]), moving(v[2], v[6]),
+                              moving(v[3], v[7]), Rational(d * d)),
+                         options, hint);
+}
+
 }  // namespace
 
 CcdResult vertex_face_min_separation_exact(const RationalQuery& query, const Rational& delta,
                                            const CcdOptions& options,
                                            const SeparationHint& hint) {
-  Rational scale;
-  const RationalQuery q = with_integer_coordinates(query, &scale);
-  const Rational d = delta * scale;
-  const auto& v = q.points;
-  return earliest_within(
-      predicates::vertex_face_separation(moving(v[0], v[4]), moving(v[1], v[5]),
-                                         moving(v[2], v[6]), moving(v[3], v[7]), Rational(d * d)),
-      options, hint);
+  return min_separation_exact(query, delta, options, hint, [](auto... a) {
+    return predicates::vertex_face_separation(a...);
+  });
 }
 
 CcdResult edge_edge_min_separation_exact(const RationalQuery& query, const Rational& delta,
                                          const CcdOptions& options,
                                          const SeparationHint& hint) {
-  Rational scale;
-  const RationalQuery q = with_integer_coordinates(query, &scale);
-  const Rational d = delta * scale;
-  const auto& v = q.points;
-  return earliest_within(
-      predicates::edge_edge_separation(moving(v[0], v[4]), moving(v[1], v[5]),
-                                       moving(v[2], v[6]), moving(v[3], v[7]), Rational(d * d)),
-      options, hint);
+  return min_separation_exact(query, delta, options, hint, [](auto... a) {
+    return predicates::edge_edge_separation(a...);
+  });
 }
 
 }  // namespace exactccd::exact

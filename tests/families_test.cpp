@@ -33,6 +33,7 @@
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
+#include "tests/generate_command_fixture.hpp"
 #include "tests/test_support.hpp"
 
 namespace {
@@ -43,6 +44,7 @@ using exactccd::CcdOptions;
 using exactccd::CcdResult;
 using exactccd::Mode;
 using exactccd::QueryType;
+using exactccd::test::GenerateCommand;
 using exactccd::RationalQuery;
 
 // Four groups per family: every sub-kind of every builder (at most four) appears.
@@ -451,52 +453,6 @@ TEST(Families, ExactFractionsAreLowestTermsAndExact) {
 
 // ------------------------------------------------------------------ the `generate` command
 
-class GenerateCommand : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactccd-generate-test-" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
-  struct Run {
-    int status = -1;
-    std::string out, err;
-  };
-
-  static std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
-  Run run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string("'") + EXACTCCD_CLI + "' " + args + " >'" +
-                                out.string() + "' 2>'" + err.string() + "' </dev/null";
-    const int raw = std::system(command.c_str());
-    Run r;
-    r.status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read(out);
-    r.err = read(err);
-    return r;
-  }
-
-  void expect_usage_error(const std::string& args, const std::string& needle) {
-    SCOPED_TRACE(args);
-    const Run r = run(args);
-    EXPECT_EQ(r.status, 2) << r.err;
-    EXPECT_EQ(r.err.rfind("exactccd: ", 0), 0u) << r.err;
-    EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
-  }
-
-  fs::path dir_;
-};
 
 TEST_F(GenerateCommand, BadArgumentsExitWithStatusTwo) {
   const std::string out = "--out '" + (dir_ / "suite").string() + "'";

@@ -38,6 +38,7 @@
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
 #include "tests/test_support.hpp"
+#include "tests/generate_command_fixture.hpp"
 
 namespace {
 
@@ -360,44 +361,7 @@ TEST(MinSeparationFamilies, CorpusDecidesWithDeltaAndRecordsItInTheManifest) {
 
 // ------------------------------------------------------------------ the `generate` command
 
-class GenerateMinSeparationCommand : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactccd-generate-ms-test-" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
-  struct Run {
-    int status = -1;
-    std::string out, err;
-  };
-
-  static std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
-  Run run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string("'") + EXACTCCD_CLI + "' " + args + " >'" +
-                                out.string() + "' 2>'" + err.string() + "' </dev/null";
-    const int raw = std::system(command.c_str());
-    Run r;
-    r.status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = read(out);
-    r.err = read(err);
-    return r;
-  }
-
-  fs::path dir_;
-};
+class GenerateMinSeparationCommand : public exactccd::test::GenerateCommand {};
 
 TEST_F(GenerateMinSeparationCommand, WritesTheLayoutWithDeltaInTheManifest) {
   const fs::path suite = dir_ / "suite";
