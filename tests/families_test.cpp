@@ -33,6 +33,7 @@
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
+#include "tests/family_expectations.hpp"
 #include "tests/generate_command_fixture.hpp"
 #include "tests/test_support.hpp"
 
@@ -44,6 +45,8 @@ using exactccd::CcdOptions;
 using exactccd::CcdResult;
 using exactccd::Mode;
 using exactccd::QueryType;
+using exactccd::test::expect_answer;
+using exactccd::test::expect_tightest_enclosure;
 using exactccd::test::GenerateCommand;
 using exactccd::RationalQuery;
 
@@ -77,25 +80,6 @@ std::string where(const fam::Family& f, std::size_t i) {
          f.members[i].kind + ")";
 }
 
-/// lo <= t <= hi, and the pair is the tightest: lo == hi == t when t is a double, else two
-/// consecutive doubles around t.
-void expect_tightest_enclosure(const mpq_class& t, double lo, double hi) {
-  EXPECT_TRUE(mpq_class(lo) <= t && t <= mpq_class(hi))
-      << "t* = " << t << " not in [" << lo << ", " << hi << "]";
-  if (mpq_class(t.get_d()) == t) {
-    EXPECT_EQ(mpq_class(lo), t);
-    EXPECT_EQ(mpq_class(hi), t);
-  } else {
-    EXPECT_EQ(hi, std::nextafter(lo, std::numeric_limits<double>::infinity()))
-        << "not consecutive doubles around t* = " << t;
-  }
-}
-
-void expect_answer(const fam::Member& m, const CcdResult& r, const std::string& what) {
-  SCOPED_TRACE(what);
-  ASSERT_EQ(r.collides, m.collides);
-  if (m.collides) expect_tightest_enclosure(m.toi, r.toi_lo, r.toi_hi);
-}
 
 TEST(Families, NamesVariantsAndArguments) {
   const auto& bases = fam::base_family_names();

@@ -38,6 +38,7 @@
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
 #include "tests/test_support.hpp"
+#include "tests/family_expectations.hpp"
 #include "tests/generate_command_fixture.hpp"
 
 namespace {
@@ -49,6 +50,7 @@ using exactccd::CcdResult;
 using exactccd::Mode;
 using exactccd::QueryType;
 using exactccd::RationalQuery;
+using exactccd::test::expect_answer;
 using Kernel = CGAL::Simple_cartesian<mpq_class>;
 
 // Four groups per family: every sub-kind of every builder (at most three) appears, and a
@@ -97,23 +99,6 @@ std::string where(const DeltaFamily& f, std::size_t i) {
          f.family.members[i].label + ", " + f.family.members[i].kind + ")";
 }
 
-void expect_tightest_enclosure(const mpq_class& t, double lo, double hi) {
-  EXPECT_TRUE(mpq_class(lo) <= t && t <= mpq_class(hi))
-      << "t* = " << t << " not in [" << lo << ", " << hi << "]";
-  if (mpq_class(t.get_d()) == t) {
-    EXPECT_EQ(mpq_class(lo), t);
-    EXPECT_EQ(mpq_class(hi), t);
-  } else {
-    EXPECT_EQ(hi, std::nextafter(lo, std::numeric_limits<double>::infinity()))
-        << "not consecutive doubles around t* = " << t;
-  }
-}
-
-void expect_answer(const fam::Member& m, const CcdResult& r, const std::string& what) {
-  SCOPED_TRACE(what);
-  ASSERT_EQ(r.collides, m.collides);
-  if (m.collides) expect_tightest_enclosure(m.toi, r.toi_lo, r.toi_hi);
-}
 
 CcdOptions options(double delta, Mode mode) {
   CcdOptions o;
