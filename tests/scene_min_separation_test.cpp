@@ -98,21 +98,6 @@ SeparationReference brute_force_within(const std::vector<RefMesh>& meshes, const
   return r;
 }
 
-::testing::AssertionResult same_pairs(const std::vector<ScenePair>& got,
-                                      const std::vector<ScenePair>& want) {
-  std::vector<ScenePair> missing, extra;
-  std::set_difference(want.begin(), want.end(), got.begin(), got.end(),
-                      std::back_inserter(missing));
-  std::set_difference(got.begin(), got.end(), want.begin(), want.end(),
-                      std::back_inserter(extra));
-  if (got == want) return ::testing::AssertionSuccess();
-  auto f = ::testing::AssertionFailure();
-  f << got.size() << " candidates, expected " << want.size() << "; " << missing.size()
-    << " missing, " << extra.size() << " extra";
-  if (!missing.empty()) f << "; first missing " << describe(missing.front());
-  if (!extra.empty()) f << "; first extra " << describe(extra.front());
-  return f;
-}
 
 /// find_contacts (contacts, earliest, candidates, counts) and earliest_contact of `scene` with
 /// `options` against the brute force with delta = options.min_separation. Returns the reference.

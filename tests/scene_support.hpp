@@ -57,6 +57,28 @@ inline std::string describe(const SceneContact& c) {
   return describe(c.pair) + " toi [" + hex(c.toi_lo) + ", " + hex(c.toi_hi) + "]";
 }
 
+/// The two candidate lists are equal (both sorted); else the counts and the first pair missing
+/// on either side.
+inline ::testing::AssertionResult same_pairs(const std::vector<ScenePair>& got,
+                                      const std::vector<ScenePair>& want) {
+  // Report the first pair missing on either side (both lists are meant to be sorted).
+  std::vector<ScenePair> missing, extra;
+  std::set_difference(want.begin(), want.end(), got.begin(), got.end(),
+                      std::back_inserter(missing));
+  std::set_difference(got.begin(), got.end(), want.begin(), want.end(),
+                      std::back_inserter(extra));
+  if (!missing.empty() || !extra.empty() || got != want) {
+    auto f = ::testing::AssertionFailure();
+    f << got.size() << " pairs, expected " << want.size() << "; " << missing.size()
+      << " missing, " << extra.size() << " extra";
+    if (!missing.empty()) f << "; first missing " << describe(missing.front());
+    if (!extra.empty()) f << "; first extra " << describe(extra.front());
+    if (missing.empty() && extra.empty()) f << "; same set, different order or duplicates";
+    return f;
+  }
+  return ::testing::AssertionSuccess();
+}
+
 inline bool same_contact(const SceneContact& a, const SceneContact& b) {
   return a.pair == b.pair && a.toi_lo == b.toi_lo && a.toi_hi == b.toi_hi;
 }

@@ -42,30 +42,7 @@ namespace {
 using namespace test;  // scene_support.hpp: scenes, printing, meshes, the reference
 
 // ---------------------------------------------------------------------------------------------
-// Comparing candidate lists
-
-::testing::AssertionResult same_pairs(const std::vector<ScenePair>& got,
-                                      const std::vector<ScenePair>& want) {
-  // Report the first pair missing on either side (both lists are meant to be sorted).
-  std::vector<ScenePair> missing, extra;
-  std::set_difference(want.begin(), want.end(), got.begin(), got.end(),
-                      std::back_inserter(missing));
-  std::set_difference(got.begin(), got.end(), want.begin(), want.end(),
-                      std::back_inserter(extra));
-  if (!missing.empty() || !extra.empty() || got != want) {
-    auto f = ::testing::AssertionFailure();
-    f << got.size() << " pairs, expected " << want.size() << "; " << missing.size()
-      << " missing, " << extra.size() << " extra";
-    if (!missing.empty()) f << "; first missing " << describe(missing.front());
-    if (!extra.empty()) f << "; first extra " << describe(extra.front());
-    if (missing.empty() && extra.empty()) f << "; same set, different order or duplicates";
-    return f;
-  }
-  return ::testing::AssertionSuccess();
-}
-
-// ---------------------------------------------------------------------------------------------
-// Checking a step against the reference
+// Checking a step against the reference (same_pairs: scene_support.hpp)
 
 void expect_accessors(const Scene& scene, const SceneSpec& spec,
                       const std::vector<RefMesh>& meshes) {
