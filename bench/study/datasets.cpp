@@ -42,37 +42,52 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The exact path's result with the tightest TOI pair, for each query, in parallel.
-std::vector<CcdResult> exact_results(const std::vector<const RationalQuery*>& queries) {
+// The exact path's result with the tightest TOI pair, for each query, in parallel; with
+// min_separation D > 0, the first time within distance D (D converted to a rational exactly).
+std::vector<CcdResult> exact_results(const std::vector<const RationalQuery*>& queries,
+                                     double min_separation) {
   std::vector<CcdResult> results(queries.size());
+  const mpq_class delta(min_separation);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, queries.size(), 16),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i)
-                        results[i] = exact_ccd(*queries[i]);
+                        results[i] = min_separation > 0.0 ? exact_ccd(*queries[i], delta)
+                                                          : exact_ccd(*queries[i]);
                     });
   return results;
 }
 
+std::string at_min_separation(double min_separation) {
+  return "exact path at minimum separation " + format_double(min_separation);
+}
+
 // Adds every query of `file` to `group`. Verdicts: the file's truth column. Exact TOIs: the
-// file's sidecar when there is one, else the exact path.
-void add_file(Dataset& d, Group& group, const std::string& file, QueryType type) {
+// file's sidecar when there is one, else the exact path. With min_separation D > 0, verdicts
+// and TOIs both from the exact path at D.
+void add_file(Dataset& d, Group& group, const std::string& file, QueryType type,
+              double min_separation) {
   const QueryFile input = read_query_file(file, type);
   const auto file_id = static_cast<std::uint32_t>(d.files.size());
   d.files.push_back(file);
 
+  std::vector<const RationalQuery*> rational;
+  for (const QueryRecord& record : input.queries) rational.push_back(&record.query);
   std::vector<Reference> refs;
   const std::string sidecar = families::sidecar_path_of(file);
   std::error_code error;
-  const bool has_sidecar = !sidecar.empty() && fs::exists(sidecar, error);
+  const bool has_sidecar =
+      min_separation == 0.0 && !sidecar.empty() && fs::exists(sidecar, error);
   if (error) throw InputError(sidecar, 0, error.message());  // a link loop, ...
-  if (has_sidecar) {
+  if (min_separation > 0.0) {
+    for (const CcdResult& r : exact_results(rational, min_separation))
+      refs.push_back({r.collides, r.collides, r.toi_lo, r.toi_hi});
+    ++d.computed_files;
+  } else if (has_sidecar) {
     for (const families::SidecarLine& s : families::read_sidecar(sidecar, input))
       refs.push_back({s.collides, s.has_toi, s.toi_lo, s.toi_hi});
     ++d.sidecar_files;
   } else {
-    std::vector<const RationalQuery*> rational;
-    for (const QueryRecord& record : input.queries) rational.push_back(&record.query);
-    const std::vector<CcdResult> exact = exact_results(rational);
+    const std::vector<CcdResult> exact = exact_results(rational, 0.0);
     for (std::size_t i = 0; i < exact.size(); ++i) {
       Reference r;
       r.collides = input.queries[i].truth;
@@ -123,7 +138,8 @@ std::string name_of(const std::string& path) {
   return name.empty() ? path : name;
 }
 
-std::string toi_source_of(const Dataset& d) {
+std::string toi_source_of(const Dataset& d, double min_separation) {
+  if (min_separation > 0.0) return at_min_separation(min_separation);
   if (d.computed_files == 0) return "sidecar (exact path, at generation)";
   if (d.sidecar_files == 0) return "exact path";
   return "sidecar where present, else exact path";
@@ -131,23 +147,24 @@ std::string toi_source_of(const Dataset& d) {
 
 }  // namespace
 
-Dataset load_plain(const std::string& path, const std::optional<QueryType>& type) {
+Dataset load_plain(const std::string& path, const std::optional<QueryType>& type,
+                   double min_separation) {
   Dataset d;
   d.name = name_of(path);
   d.path = path;
-  d.truth_source = "truth column";
+  d.truth_source = min_separation > 0.0 ? at_min_separation(min_separation) : "truth column";
   Group group;
   group.name = d.name;
   const std::vector<std::string> files = data_files(path);
   std::vector<std::string> empty_files;
   for (const std::string& file : files) {
     const std::size_t before = group.size();
-    add_file(d, group, file, resolve_query_type(file, type));
+    add_file(d, group, file, resolve_query_type(file, type), min_separation);
     if (group.size() == before) empty_files.push_back(file);
   }
   require_some_queries(empty_files, files.size(), group.size());
   d.groups.push_back(std::move(group));
-  d.toi_source = toi_source_of(d);
+  d.toi_source = toi_source_of(d, min_separation);
   return d;
 }
 
@@ -156,23 +173,26 @@ namespace {
 // Adds the files of a suite's family to its group (none when the manifest counts no query and
 // the folder is absent).
 void add_family_files(Dataset& d, Group& g, const std::string& suite_path,
-                      const std::optional<QueryType>& type, std::size_t expected) {
+                      const std::optional<QueryType>& type, std::size_t expected,
+                      double min_separation) {
   const fs::path folder = fs::path(suite_path) / g.name;
   std::error_code error;
   if (expected == 0 && !fs::exists(folder, error)) return;
   for (const std::string& file : data_files(folder.string()))
-    add_file(d, g, file, resolve_query_type(file, type));
+    add_file(d, g, file, resolve_query_type(file, type), min_separation);
 }
 
 }  // namespace
 
-Dataset load_suite(const std::string& path, const std::optional<QueryType>& type) {
+Dataset load_suite(const std::string& path, const std::optional<QueryType>& type,
+                   double min_separation) {
   const families::SuiteManifest manifest = families::read_suite_manifest(path);
   Dataset d;
   d.name = name_of(path);
   d.path = path;
   d.suite = true;
-  d.truth_source = "truth column (exact path, at generation)";
+  d.truth_source = min_separation > 0.0 ? at_min_separation(min_separation)
+                                        : "truth column (exact path, at generation)";
   d.suite_info["generator"] = manifest.generator;
   d.suite_info["seed"] = manifest.seed;
   for (const families::ManifestFamily& family : manifest.families) {
@@ -185,11 +205,15 @@ Dataset load_suite(const std::string& path, const std::optional<QueryType>& type
     g.scale = family.scale;
     g.offset = family.offset;
     g.parameters = family.parameters;
-    add_family_files(d, g, path, type, family.queries);
-    families::check_family_counts(manifest, family, g.size(), g.contacts());
+    add_family_files(d, g, path, type, family.queries, min_separation);
+    // With D > 0 the contacts are the exact path's at D, not the truth column's the manifest
+    // counts: only the query count is checked.
+    families::ManifestFamily counted = family;
+    if (min_separation > 0.0) counted.collisions.reset();
+    families::check_family_counts(manifest, counted, g.size(), g.contacts());
     d.groups.push_back(std::move(g));
   }
-  d.toi_source = toi_source_of(d);
+  d.toi_source = toi_source_of(d, min_separation);
   return d;
 }
 
@@ -198,8 +222,8 @@ bool is_suite(const std::string& path) {
   return fs::is_directory(path, error) && fs::exists(fs::path(path) / "manifest.json", error);
 }
 
-// The simulation-like set; verdicts and exact TOIs from the exact path.
-Dataset load_simulation(const sim::SimulationConfig& config) {
+// The simulation-like set; verdicts and exact TOIs from the exact path (at D when D > 0).
+Dataset load_simulation(const sim::SimulationConfig& config, double min_separation) {
   std::vector<sim::SimulationQuery> queries;
   try {
     queries = sim::generate_simulation_queries(config);
@@ -214,7 +238,7 @@ Dataset load_simulation(const sim::SimulationConfig& config) {
                       : to_rational(edge_edge_query(queries[i].points));
     pointers[i] = &rational[i];
   });
-  const std::vector<CcdResult> exact = exact_results(pointers);
+  const std::vector<CcdResult> exact = exact_results(pointers, min_separation);
 
   Dataset d;
   d.name = "simulation";
@@ -223,8 +247,8 @@ Dataset load_simulation(const sim::SimulationConfig& config) {
                 config.sheet_resolution, config.sheet_resolution, config.steps,
                 static_cast<unsigned long long>(config.seed));
   d.path = path;
-  d.truth_source = "exact path";
-  d.toi_source = "exact path";
+  d.truth_source = min_separation > 0.0 ? at_min_separation(min_separation) : "exact path";
+  d.toi_source = d.truth_source;
   d.files.push_back("simulation");
   Group g;
   g.name = d.name;

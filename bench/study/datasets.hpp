@@ -65,19 +65,24 @@ struct Dataset {
 };
 
 /// A CSV file or a folder of them, one group. Verdicts: the truth column; exact TOIs: each
-/// data_K.csv file's toi_K.csv sidecar when present, else the exact path. Throws InputError
-/// (a bad file, a coordinate that is not a double, no query at all) or UsageError.
-Dataset load_plain(const std::string& path, const std::optional<QueryType>& type);
+/// data_K.csv file's toi_K.csv sidecar when present, else the exact path. With a minimum
+/// separation D > 0 both come from the exact path at D (truth columns and sidecars are for the
+/// contact, or for the delta of their generation, so they are not read). Throws InputError (a
+/// bad file, a coordinate that is not a double, no query at all) or UsageError.
+Dataset load_plain(const std::string& path, const std::optional<QueryType>& type,
+                   double min_separation = 0.0);
 
 /// A generated suite (a folder with a manifest.json, corpus/suite_reader.hpp): one group per
-/// family, the manifest's counts checked against the files. Throws InputError.
-Dataset load_suite(const std::string& path, const std::optional<QueryType>& type);
+/// family, the manifest's counts checked against the files (with D > 0 only the query counts:
+/// the verdicts are the exact path's at D, as in load_plain). Throws InputError.
+Dataset load_suite(const std::string& path, const std::optional<QueryType>& type,
+                   double min_separation = 0.0);
 
 /// True when `path` is a folder holding a manifest.json (a generated suite).
 bool is_suite(const std::string& path);
 
-/// The simulation-like set; verdicts and exact TOIs from the exact path. Throws UsageError for
-/// a bad configuration.
-Dataset load_simulation(const sim::SimulationConfig& config);
+/// The simulation-like set; verdicts and exact TOIs from the exact path (at minimum separation
+/// D when D > 0). Throws UsageError for a bad configuration.
+Dataset load_simulation(const sim::SimulationConfig& config, double min_separation = 0.0);
 
 }  // namespace exactccd::study

@@ -1,5 +1,6 @@
 // The methods and settings the study measures: the uncertified float_only mode and tolerance
-// method (core/float_only/tolerance_ccd.hpp), the default path at each TOI width, the exact path.
+// method (core/float_only/tolerance_ccd.hpp), the default path at each TOI width, the exact path;
+// each deciding contact, or with a minimum separation D > 0 "within distance D".
 #pragma once
 
 #include <string>
@@ -18,23 +19,28 @@ struct Method {
   std::string name;        // float_only, tolerance, default, exact
   std::string setting;     // eps=1e-9, width=0, or empty
   bool certified = false;
+  /// D >= 0: every method decides "within distance D" (float_only: the common practice with
+  /// eps = D; tolerance: distance <= D + eps at a cubic root; default, exact: min_separation D).
+  double min_separation = 0.0;
 
   std::string label() const { return setting.empty() ? name : name + " " + setting; }
 };
 
 /// The methods and settings measured, in report order: float_only; the tolerance method at
-/// each eps; the default path at each TOI width; exact.
+/// each eps; the default path at each TOI width; exact; all with minimum separation D.
 std::vector<Method> methods_of(const std::vector<double>& tolerances,
-                               const std::vector<double>& widths);
+                               const std::vector<double>& widths, double min_separation = 0.0);
 
 /// Calls f(decide_vertex_face, decide_edge_edge) with the method's two deciders, so that the
 /// timed loops call them directly, with no per-query dispatch on the method.
 template <class F>
 auto with_method(const Method& m, F&& f) {
   CcdOptions options;
+  options.min_separation = m.min_separation;
   switch (m.kind) {
     case Kind::tolerance: {
-      const double eps = m.parameter;
+      // The common practice's test with a minimum separation: distance <= D + eps (in doubles).
+      const double eps = m.min_separation + m.parameter;
       return f(
           [eps](const VertexFaceQuery& q) { return methods::tolerance_vertex_face_ccd(q, eps); },
           [eps](const EdgeEdgeQuery& q) { return methods::tolerance_edge_edge_ccd(q, eps); });

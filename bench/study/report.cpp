@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iterator>
+#include <string>
 
 #include "bench/study/labels.hpp"
 
@@ -85,9 +87,10 @@ Json methods_json(const std::vector<Outcome>& outcomes, const std::vector<Method
 }  // namespace
 
 Json study_json(const std::vector<DatasetResults>& results, const std::vector<Method>& methods,
-                int repetitions) {
+                int repetitions, double min_separation) {
   Json j;
   j["command"] = "exactccd study";
+  j["min_separation"] = min_separation;
   j["timing"] = {{"threads", 1},
                  {"repetitions", repetitions},
                  {"min_sample_ns", kMinSampleNs},
@@ -158,6 +161,16 @@ Json study_json(const std::vector<DatasetResults>& results, const std::vector<Me
 
 namespace {
 
+// The fewest significant digits that read back as x (1.47e-05, not 1.4699999999999999e-05).
+std::string shortest_text(double x) {
+  char buffer[32];
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+    if (std::strtod(buffer, nullptr) == x) break;
+  }
+  return buffer;
+}
+
 std::string format_error(double e) {
   if (e == 0.0) return "0";
   char buffer[32];
@@ -213,7 +226,13 @@ void breakdown_cells(std::ostream& out, const std::vector<Outcome>& outcomes) {
 }  // namespace
 
 void study_markdown(std::ostream& out, const std::vector<DatasetResults>& results,
-                    const std::vector<Method>& methods) {
+                    const std::vector<Method>& methods, double min_separation) {
+  if (min_separation > 0.0)
+    out << "minimum separation: " << shortest_text(min_separation)
+        << " (a query collides when its primitives come within this Euclidean distance; "
+           "float_only: the common practice with eps = D; tolerance: distance <= D + eps at a "
+           "cubic root; default and exact: min_separation = D; verdicts and exact TOIs: the "
+           "exact path at D)\n\n";
   for (const DatasetResults& r : results) {
     const Dataset& d = *r.dataset;
     out << "### " << markdown_escape(d.name) << "\n\n"

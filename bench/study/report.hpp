@@ -9,10 +9,12 @@
 
 namespace exactccd::study {
 
+/// The JSON document; "min_separation" is D (0: contact).
 Json study_json(const std::vector<DatasetResults>& results, const std::vector<Method>& methods,
-                int repetitions);
+                int repetitions, double min_separation = 0.0);
 
+/// The Markdown tables; with D > 0 first a line "minimum separation: D" and what it means.
 void study_markdown(std::ostream& out, const std::vector<DatasetResults>& results,
-                    const std::vector<Method>& methods);
+                    const std::vector<Method>& methods, double min_separation = 0.0);
 
 }  // namespace exactccd::study

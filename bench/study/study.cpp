@@ -27,6 +27,7 @@ int run_study(const StudyOptions& options) {
   for (const double eps : options.tolerances)
     if (!(eps >= 0.0 && std::isfinite(eps)))
       throw UsageError("--eps: every eps must be finite and >= 0, got " + format_double(eps));
+  validate_min_separation(options.min_separation);
 
   // Opened before the work, so that an unwritable --out-md fails at once.
   std::optional<OutputFile> md_file;
@@ -36,26 +37,31 @@ int run_study(const StudyOptions& options) {
 
   std::vector<Dataset> datasets;
   for (const std::string& path : options.paths) {
-    datasets.push_back(is_suite(path) ? load_suite(path, options.type)
-                                      : load_plain(path, options.type));
+    const double delta = options.min_separation;
+    datasets.push_back(is_suite(path) ? load_suite(path, options.type, delta)
+                                      : load_plain(path, options.type, delta));
   }
-  if (options.simulation) datasets.push_back(load_simulation(options.simulation_config));
+  if (options.simulation)
+    datasets.push_back(load_simulation(options.simulation_config, options.min_separation));
   // Distinct names: the report names its plots after them.
   std::map<std::string, int> seen;
   for (Dataset& d : datasets)
     if (++seen[d.name] > 1) d.name += "-" + std::to_string(seen[d.name]);
 
-  const std::vector<Method> methods = methods_of(options.tolerances, options.widths);
+  const std::vector<Method> methods =
+      methods_of(options.tolerances, options.widths, options.min_separation);
   std::vector<DatasetResults> results;
   for (const Dataset& d : datasets) results.push_back(run_dataset(d, methods, options.repetitions));
 
   if (options.json)
-    std::cout << study_json(results, methods, options.repetitions).dump(2) << '\n';
+    std::cout << study_json(results, methods, options.repetitions, options.min_separation)
+                     .dump(2)
+              << '\n';
   else
-    study_markdown(std::cout, results, methods);
+    study_markdown(std::cout, results, methods, options.min_separation);
   if (md_file) {
     std::ostringstream markdown;
-    study_markdown(markdown, results, methods);
+    study_markdown(markdown, results, methods, options.min_separation);
     md_file->write(markdown.str());
     md_file->commit();
   }

@@ -3,7 +3,8 @@
 // path) against the exact truth: false positives, false negatives, non-conservative (late) TOIs,
 // the TOI error, and the mean time per query (single thread). A generated suite (a folder with
 // a manifest.json, written by `exactccd generate`) is also broken down per family and per
-// coordinate scale / translation.
+// coordinate scale / translation. With a minimum separation D > 0, the same for "comes within
+// distance D" (issue 12).
 #pragma once
 
 #include <optional>
@@ -22,6 +23,11 @@ struct StudyOptions {
   std::optional<QueryType> type;                  ///< --type: overrides the folder name
   std::vector<double> widths = {0.0, 1e-6, 1e-3};  ///< the default path's TOI widths
   std::vector<double> tolerances = {1e-12, 1e-9, 1e-6};  ///< the tolerance method's eps
+  /// --min-separation D >= 0: every method decides "within distance D" (float_only: the common
+  /// practice with eps = D; tolerance: distance <= D + eps at a cubic root; default and exact:
+  /// CcdOptions::min_separation = D); with D > 0 verdicts and exact TOIs come from the exact
+  /// path at D for every data set. 0: contact.
+  double min_separation = 0.0;
   int repetitions = 3;  ///< timed samples per group and method; mean_ns is their median
   bool simulation = false;  ///< add the simulation-like set (reference: the exact path)
   sim::SimulationConfig simulation_config = sim::small_simulation_config();

@@ -1,7 +1,8 @@
 // Tests of the numerical-stability study: the tolerance method (core/float_only/tolerance_ccd.hpp) on hand-made
 // queries whose coplanar times and distances are worked out by hand below, and the
 // `exactccd study` command on a sample file (expected verdicts from the file's truth column,
-// read here independently) and on a hand-made suite with a TOI sidecar.
+// read here independently), on a hand-made suite with a TOI sidecar, and with a minimum
+// separation on a hand-made file whose first times within the separation are worked out below.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -372,6 +373,141 @@ TEST_F(StudyCommand, SidecarToiIsTheReference) {
   EXPECT_EQ(exact["late_tois"], 1);
   EXPECT_EQ(exact["max_late_by"], 0.25);
   EXPECT_EQ(method_row(d["families"][1]["methods"], "exact")["late_tois"], 0);
+}
+
+// ---- `exactccd study --min-separation D` -------------------------------------------------------
+
+// D = 2^-10 and the fixed triangle a = 0, b = e_x, c = e_y (plane z = 0). Query 0 (truth 0: no
+// contact): the vertex p(t) = (s, -s, D/2) with s = 2t - 1 passes over the vertex a at height
+// D/2 without crossing the plane; its distance to the triangle is sqrt(s^2 + D^2/4) (nearest
+// point (s, 0, 0) for s >= 0, (0, -s, 0) for s < 0), within D from s = -D sqrt(3)/2 on. The
+// coplanarity cubic is the constant D/2: the common practice finds no root and misses it.
+// Query 1 (truth 1): the vertex (1/4, 1/4, 1 - 2t) through the interior: within D from
+// t* = (1 - D)/2 on, a double; the common practice reports the root 1/2, late by D/2.
+constexpr double kSeparation = 1.0 / 1024;
+
+fs::path write_separation_file(const fs::path& dir) {
+  fs::create_directories(dir / "vertex-face");
+  const fs::path file = dir / "vertex-face" / "data_0.csv";
+  std::ofstream out(file);
+  const std::string a = "0,1,0,1,0,1", b = "1,1,0,1,0,1", c = "0,1,1,1,0,1";
+  for (const std::string& p0 : {"-1,1,1,1,1,2048", "1,4,1,4,1,1"}) {
+    const bool passing = p0[0] == '-';
+    const std::string p1 = passing ? "1,1,-1,1,1,2048" : "1,4,1,4,-1,1";
+    const std::string truth = passing ? ",0\n" : ",1\n";
+    for (const std::string& row : {p0, a, b, c, p1, a, b, c}) out << row << truth;
+  }
+  return file;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The document without its timings, which differ from run to run.
+void drop_timings(nlohmann::json& j) {
+  if (j.is_object()) {
+    j.erase("mean_ns");
+    for (auto& [key, value] : j.items()) drop_timings(value);
+  } else if (j.is_array()) {
+    for (nlohmann::json& value : j) drop_timings(value);
+  }
+}
+
+TEST_F(StudyCommand, MinSeparationCommonPracticeMissesAPassingVertexExactDoesNot) {
+  const fs::path file = write_separation_file(dir_ / "data");
+  const RunResult r = run_cli({"study", "--json", "--repetitions", "1", "--min-separation",
+                               "0.0009765625", file.string()},
+                              dir_);
+  ASSERT_EQ(r.status, 0) << r.out << read_text(dir_ / "stderr.txt");
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["min_separation"], kSeparation);
+  const nlohmann::json& d = j["datasets"][0];
+  // Both queries come within D (the truth column, for contact, says only query 1).
+  EXPECT_EQ(d["queries"], 2);
+  EXPECT_EQ(d["contacts"], 2);
+  EXPECT_NE(d["truth"].get<std::string>().find("minimum separation"), std::string::npos);
+  for (const std::string& label : kCertified) {
+    const nlohmann::json& m = method_row(d["methods"], label);
+    EXPECT_EQ(m["collisions"], 2) << label;
+    EXPECT_EQ(m["false_positives"], 0) << label;
+    EXPECT_EQ(m["false_negatives"], 0) << label;
+    EXPECT_EQ(m["late_tois"], 0) << label;
+    EXPECT_EQ(m["toi_errors_measured"], 2) << label;
+  }
+  // The default path's TOIs are the exact path's tightest pairs.
+  EXPECT_EQ(method_row(d["methods"], "default width=0")["max_abs_toi_error"], 0.0);
+  // The common practice, at eps = D and at D + eps: query 0 missed, query 1 late by D/2.
+  for (const std::string label : {"float_only", "tolerance eps=1e-12", "tolerance eps=1e-9",
+                                  "tolerance eps=1e-6"}) {
+    const nlohmann::json& m = method_row(d["methods"], label);
+    EXPECT_EQ(m["false_positives"], 0) << label;
+    EXPECT_EQ(m["false_negatives"], 1) << label;
+    EXPECT_EQ(m["examples"]["false_negatives"][0], file.string() + ":0") << label;
+    EXPECT_EQ(m["late_tois"], 1) << label;
+    EXPECT_EQ(m["max_late_by"], kSeparation / 2) << label;
+  }
+
+  const RunResult markdown = run_cli(
+      {"study", "--repetitions", "1", "--min-separation", "0.0009765625", file.string()}, dir_);
+  ASSERT_EQ(markdown.status, 0);
+  EXPECT_NE(markdown.out.find("minimum separation: 0.0009765625"), std::string::npos)
+      << markdown.out;
+}
+
+TEST_F(StudyCommand, ZeroMinSeparationIsContactAsWithoutTheOption) {
+  const fs::path file = write_separation_file(dir_ / "data");
+  const RunResult plain = run_cli({"study", "--json", "--repetitions", "1", file.string()}, dir_);
+  const RunResult zero = run_cli(
+      {"study", "--json", "--repetitions", "1", "--min-separation", "0", file.string()}, dir_);
+  ASSERT_EQ(plain.status, 0) << plain.out;
+  ASSERT_EQ(zero.status, 0) << zero.out;
+  nlohmann::json a = nlohmann::json::parse(plain.out), b = nlohmann::json::parse(zero.out);
+  EXPECT_EQ(a["min_separation"], 0.0);
+  drop_timings(a);
+  drop_timings(b);
+  EXPECT_EQ(a, b);
+  // Contact: query 0 never touches, query 1 touches at 1/2, found by every method.
+  const nlohmann::json& d = a["datasets"][0];
+  EXPECT_EQ(d["contacts"], 1);
+  EXPECT_EQ(d["truth"], "truth column");
+  for (const nlohmann::json& m : d["methods"]) {
+    EXPECT_EQ(m["collisions"], 1) << m["label"];
+    EXPECT_EQ(m["false_negatives"], 0) << m["label"];
+    EXPECT_EQ(m["late_tois"], 0) << m["label"];
+  }
+  const RunResult markdown = run_cli({"study", "--repetitions", "1", file.string()}, dir_);
+  EXPECT_EQ(markdown.out.find("minimum separation"), std::string::npos) << markdown.out;
+}
+
+TEST_F(StudyCommand, MinSeparationIgnoresTheContactSidecars) {
+  // The suite whose sidecar claims t* = 1/4 (late for every method at contact, see
+  // SidecarToiIsTheReference): at D > 0 the reference is the exact path at D, t* = (1 - D)/2.
+  write_suite(dir_ / "suite", true);
+  const RunResult r = run_cli({"study", "--json", "--repetitions", "1", "--min-separation",
+                               "0.0009765625", (dir_ / "suite").string()},
+                              dir_);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json d = nlohmann::json::parse(r.out)["datasets"][0];
+  for (const nlohmann::json& family : d["families"]) {
+    const nlohmann::json& exact = method_row(family["methods"], "exact");
+    EXPECT_EQ(exact["collisions"], 1);
+    EXPECT_EQ(exact["late_tois"], 0);
+    EXPECT_EQ(method_row(family["methods"], "float_only")["late_tois"], 1);
+  }
+}
+
+TEST_F(StudyCommand, BadMinSeparationIsRefused) {
+  const fs::path file = write_separation_file(dir_ / "data");
+  for (const std::string bad : {"-1", "-1e-300", "inf", "nan", "1e999"}) {
+    const RunResult r =
+        run_cli({"study", "--repetitions", "1", "--min-separation", bad, file.string()}, dir_);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE(read_text(dir_ / "stderr.txt").find("min-separation"), std::string::npos) << bad;
+  }
 }
 
 }  // namespace
