@@ -8,6 +8,8 @@ packages=(
   googletest libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   # The Python module and its tests, the Dask oracle, the API reference (issue 11).
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed doxygen
+  # z3: the independent check of minimum-separation CCD (python/tests/test_min_separation.py).
+  python3-z3
 )
 if [[ "${1:-}" == "--with-plots" ]]; then packages+=(python3-matplotlib); fi
 # .ci/sanitizers.sh: clang with its sanitizer and libFuzzer runtimes, llvm-symbolizer for traces.

@@ -59,8 +59,8 @@ CcdResult decide(QueryType type, const double* data, const CcdOptions& options) 
 
 py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
                        double toi_width, const std::string& mode,
-                       const std::optional<int>& threads) {
-  const CcdOptions options = make_options(t_max, toi_width, mode);
+                       const std::optional<int>& threads, double min_separation) {
+  const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
   if (threads && *threads < 1)
     throw py::value_error("threads must be >= 1 (or None for every core), not " +
                           std::to_string(*threads));
@@ -115,11 +115,12 @@ void bind_batch(py::module_& m) {
   m.def(
       "_ccd_batch",
       [](const std::string& type, const py::handle& queries, double t_max, double toi_width,
-         const std::string& mode, const std::optional<int>& threads) {
-        return decide_batch(parse_query_type(type), queries, t_max, toi_width, mode, threads);
+         const std::string& mode, const std::optional<int>& threads, double min_separation) {
+        return decide_batch(parse_query_type(type), queries, t_max, toi_width, mode, threads,
+                            min_separation);
       },
       py::arg("type"), py::arg("queries"), py::arg("t_max"), py::arg("toi_width"),
-      py::arg("mode"), py::arg("threads"));
+      py::arg("mode"), py::arg("threads"), py::arg("min_separation"));
 }
 
 }  // namespace exactccd::python

@@ -28,7 +28,9 @@ Mode parse_mode(const std::string& name);
 QueryType parse_query_type(const std::string& name);
 
 /// Options as given to the Python functions; their domain is checked by the library (ValueError).
-CcdOptions make_options(double t_max, double toi_width, const std::string& mode);
+/// min_separation: CcdOptions::min_separation (0: contact; the scene has none).
+CcdOptions make_options(double t_max, double toi_width, const std::string& mode,
+                        double min_separation = 0.0);
 
 /// `object` as an array of the given shape (float64, C order), or ValueError naming `what` and
 /// the shape received. shape entries < 0 match any length.

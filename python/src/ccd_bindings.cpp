@@ -19,8 +19,8 @@ std::string repr(const CcdResult& r) {
 
 template <class Decide>
 CcdResult decide_points(const py::handle& points, double t_max, double toi_width,
-                        const std::string& mode, Decide decide) {
-  const CcdOptions options = make_options(t_max, toi_width, mode);
+                        const std::string& mode, double min_separation, Decide decide) {
+  const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
   const DoubleArray array = as_double_array(points, {8, 3}, "the query's points");
   const QueryPoints p = points_of(array.data());
   py::gil_scoped_release release;  // the exact path can take a while
@@ -53,24 +53,28 @@ void bind_ccd(py::module_& m) {
 
   m.def(
       "_vertex_face_ccd",
-      [](const py::handle& points, double t_max, double toi_width, const std::string& mode) {
-        return decide_points(points, t_max, toi_width, mode,
+      [](const py::handle& points, double t_max, double toi_width, const std::string& mode,
+         double min_separation) {
+        return decide_points(points, t_max, toi_width, mode, min_separation,
                              [](const QueryPoints& p, const CcdOptions& o) {
                                return vertex_face_ccd(
                                    {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, o);
                              });
       },
-      py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"));
+      py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"),
+      py::arg("min_separation"));
   m.def(
       "_edge_edge_ccd",
-      [](const py::handle& points, double t_max, double toi_width, const std::string& mode) {
-        return decide_points(points, t_max, toi_width, mode,
+      [](const py::handle& points, double t_max, double toi_width, const std::string& mode,
+         double min_separation) {
+        return decide_points(points, t_max, toi_width, mode, min_separation,
                              [](const QueryPoints& p, const CcdOptions& o) {
                                return edge_edge_ccd(
                                    {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, o);
                              });
       },
-      py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"));
+      py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"),
+      py::arg("min_separation"));
   m.attr("STAGE_NAMES") = py::cast(stage_names());
   m.attr("MODE_NAMES") = py::cast(std::vector<std::string>{
       to_string(Mode::filtered), to_string(Mode::float_only), to_string(Mode::exact)});

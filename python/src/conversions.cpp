@@ -21,11 +21,13 @@ QueryType parse_query_type(const std::string& name) {
                         name + "\"");
 }
 
-CcdOptions make_options(double t_max, double toi_width, const std::string& mode) {
+CcdOptions make_options(double t_max, double toi_width, const std::string& mode,
+                        double min_separation) {
   CcdOptions options;
   options.t_max = t_max;
   options.toi_width = toi_width;
   options.mode = parse_mode(mode);
+  options.min_separation = min_separation;
   return options;
 }
 

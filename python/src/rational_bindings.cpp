@@ -22,7 +22,7 @@ mpz_class to_mpz(const py::handle& integer) {
 mpq_class to_mpq(const py::handle& value, const char* where) {
   if (PyFloat_Check(value.ptr()) || PyComplex_Check(value.ptr()))
     throw py::type_error(std::string(where) +
-                         ": coordinates must be int or fractions.Fraction, not " +
+                         ": must be int or fractions.Fraction, not " +
                          std::string(py::str(value.get_type().attr("__name__"))) +
                          " (fractions.Fraction(x) is the exact value of a float x)");
   if (py::hasattr(value, "numerator") && py::hasattr(value, "denominator")) {
@@ -37,7 +37,7 @@ mpq_class to_mpq(const py::handle& value, const char* where) {
   }
   if (PyIndex_Check(value.ptr()))
     return mpq_class(to_mpz(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()))));
-  throw py::type_error(std::string(where) + ": coordinates must be int or fractions.Fraction, not " +
+  throw py::type_error(std::string(where) + ": must be int or fractions.Fraction, not " +
                        std::string(py::str(value.get_type().attr("__name__"))));
 }
 
@@ -79,22 +79,28 @@ RationalQuery rational_query(const py::handle& points, QueryType type) {
 void bind_rational(py::module_& m) {
   m.def(
       "exact_ccd",
-      [](const py::handle& points, const std::string& type, double t_max, double toi_width) {
+      [](const py::handle& points, const std::string& type, double t_max, double toi_width,
+         const py::handle& min_separation) {
         const RationalQuery query = rational_query(points, parse_query_type(type));
+        const mpq_class delta = to_mpq(min_separation, "min_separation");
         CcdOptions options;
         options.t_max = t_max;
         options.toi_width = toi_width;
         py::gil_scoped_release release;
-        return exact_ccd(query, options);
+        return exact_ccd(query, delta, options);  // delta = 0: contact, as exact_ccd(query)
       },
       py::arg("points"), py::arg("type"), py::kw_only(), py::arg("t_max") = 1.0,
-      py::arg("toi_width") = 0.0,
+      py::arg("toi_width") = 0.0, py::arg("min_separation") = 0,
       R"(Decides one query exactly from rational coordinates.
 
 points: 8 points of 3 coordinates each (int or fractions.Fraction, taken exactly; float is
 refused), in the benchmark's row order (vertex-face: p, a, b, c at t0 then at t1; edge-edge:
 ea0, ea1, eb0, eb1 at t0 then at t1). type: "vertex-face" ("vf") or "edge-edge" ("ee").
-Returns a CcdResult (stage "exact"). Raises ValueError for options outside their domain.)");
+min_separation: the minimum separation delta >= 0 as an int or fractions.Fraction (any
+rational, taken exactly): collides iff the primitives come within Euclidean distance delta,
+the TOI the earliest such time; 0 is contact.
+Returns a CcdResult (stage "exact"). Raises ValueError for options outside their domain (a
+negative min_separation among them), TypeError for a float coordinate or min_separation.)");
 }
 
 }  // namespace exactccd::python
