@@ -28,7 +28,7 @@ Mode parse_mode(const std::string& name);
 QueryType parse_query_type(const std::string& name);
 
 /// Options as given to the Python functions; their domain is checked by the library (ValueError).
-/// min_separation: CcdOptions::min_separation (0: contact; the scene has none).
+/// min_separation: CcdOptions::min_separation (0: contact).
 CcdOptions make_options(double t_max, double toi_width, const std::string& mode,
                         double min_separation = 0.0);
 

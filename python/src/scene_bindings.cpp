@@ -63,9 +63,10 @@ BroadPhase parse_broad_phase(const std::string& name) {
 
 SceneOptions scene_options(double t_max, double toi_width, const std::string& mode,
                            const std::string& broad_phase, bool self_collision, int max_threads,
-                           bool record_candidates) {
+                           bool record_candidates, double min_separation) {
   SceneOptions options;
-  options.ccd = make_options(t_max, toi_width, mode);
+  options.ccd = make_options(t_max, toi_width, mode, min_separation);
+  options.min_separation = min_separation;
   options.broad_phase = parse_broad_phase(broad_phase);
   options.self_collision = self_collision;
   if (max_threads < 0) throw py::value_error("max_threads must be >= 0 (0: every core)");
@@ -271,29 +272,34 @@ void bind_scene(py::module_& m) {
           "find_contacts",
           [](GuardedScene& g, double t_max, double toi_width, const std::string& mode,
              const std::string& broad_phase, bool self_collision, int max_threads,
-             bool record_candidates) {
-            const SceneOptions o = scene_options(t_max, toi_width, mode, broad_phase,
-                                                 self_collision, max_threads, record_candidates);
+             bool record_candidates, double min_separation) {
+            const SceneOptions o =
+                scene_options(t_max, toi_width, mode, broad_phase, self_collision, max_threads,
+                              record_candidates, min_separation);
             return g.run([&](Scene& s) { return s.find_contacts(o); });
           },
           py::kw_only(), py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0,
           py::arg("mode") = "default", py::arg("broad_phase") = "swept_bvh",
           py::arg("self_collision") = true, py::arg("max_threads") = 0,
-          py::arg("record_candidates") = false, "Every colliding pair of the step (SceneResult).")
+          py::arg("record_candidates") = false, py::arg("min_separation") = 0.0,
+          "Every colliding pair of the step (SceneResult); with min_separation delta > 0, every "
+          "pair that comes within delta.")
       .def(
           "earliest_contact",
           [](GuardedScene& g, double t_max, double toi_width, const std::string& mode,
              const std::string& broad_phase, bool self_collision, int max_threads,
-             bool record_candidates) {
-            const SceneOptions o = scene_options(t_max, toi_width, mode, broad_phase,
-                                                 self_collision, max_threads, record_candidates);
+             bool record_candidates, double min_separation) {
+            const SceneOptions o =
+                scene_options(t_max, toi_width, mode, broad_phase, self_collision, max_threads,
+                              record_candidates, min_separation);
             return g.run([&](Scene& s) { return s.earliest_contact(o); });
           },
           py::kw_only(), py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0,
           py::arg("mode") = "default", py::arg("broad_phase") = "swept_bvh",
           py::arg("self_collision") = true, py::arg("max_threads") = 0,
-          py::arg("record_candidates") = false,
-          "Only the earliest contact of the step (EarliestContact; swept_bvh only).")
+          py::arg("record_candidates") = false, py::arg("min_separation") = 0.0,
+          "Only the earliest contact (within min_separation) of the step (EarliestContact; "
+          "swept_bvh only).")
       .def(
           "vertex_face_query",
           [](GuardedScene& g, const ScenePair& p) {

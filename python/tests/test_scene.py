@@ -186,3 +186,31 @@ def test_one_scene_from_several_python_threads(two_meshes):
     with concurrent.futures.ThreadPoolExecutor(4) as pool:
         for result in pool.map(work, range(24)):
             assert result == expected
+
+
+def test_min_separation_equals_every_pair_with_delta():
+    """Two sheets passing 0.01 apart: no contact, but every pair that comes within delta = 0.02
+    is found (the boxes inflated by delta), each with the query API's answer at delta."""
+    rng = np.random.default_rng(11)
+    top, top_faces = grid(4, 0.2, 0.0, rng)
+    bottom, bottom_faces = grid(4, 0.0, 0.0, rng)
+    meshes = [(top, top + [0.3, 0.0, -0.19], top_faces), (bottom, bottom, bottom_faces)]
+    scene = build(meshes)
+    assert scene.find_contacts().contacts == []
+    delta = 0.02
+    result = scene.find_contacts(min_separation=delta, record_candidates=True)
+    assert len(result.contacts) > 0
+    expected = []
+    for pair in result.candidates:
+        if pair.type == "vertex-face":
+            r = exactccd.vertex_face_ccd(*scene.vertex_face_query(pair), min_separation=delta)
+        else:
+            r = exactccd.edge_edge_ccd(*scene.edge_edge_query(pair), min_separation=delta)
+        if r.collides:
+            expected.append((pair, r.toi_lo, r.toi_hi))
+    got = [(c.pair, c.toi_lo, c.toi_hi) for c in result.contacts]
+    assert sorted(got, key=lambda x: x[0]) == sorted(expected, key=lambda x: x[0])
+    earliest = scene.earliest_contact(min_separation=delta)
+    assert earliest.contact.toi_lo == min(lo for _, lo, _ in expected)
+    with pytest.raises(ValueError):
+        scene.find_contacts(min_separation=-1.0)
