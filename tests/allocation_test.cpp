@@ -225,6 +225,26 @@ TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnSampleQueries) {
   EXPECT_GT(a.of(Stage::culling) + a.of(Stage::filter), 1000u);
 }
 
+TEST(Allocation, MinimumSeparationCullingAndFilterDoNotAllocate) {
+  // Minimum separation: culling with delta and the interval search (stage filter: never within
+  // delta, or a first contact whose every sign intervals certified) allocate nothing; exact
+  // signs at doubles (exact_at_double) and the exact stage may.
+  StageAllocations a;
+  const auto& all = sample_double_queries();
+  for (std::size_t i = 0; i < all.size(); i += subset_stride()) {
+    for (const double delta : {1.5e-7, 1.5e-5, 1.5e-3}) {
+      CcdOptions options;
+      options.min_separation = delta;
+      std::uint64_t count = 0;
+      const CcdResult res = decide_counting(all[i], options, &count);
+      a.record(all[i], res, count);
+    }
+  }
+  expect_no_allocation_in_float_stages(a, "sample, minimum separation");
+  EXPECT_GT(a.of(Stage::culling), 100u);
+  EXPECT_GT(a.of(Stage::filter), 100u);
+}
+
 /// Queries decided at double times whose exact computations all stayed within the fixed widths
 /// (no GMP computation counted during the call) make no allocation; GMP computations are seen
 /// allocating.
