@@ -64,13 +64,16 @@ CcdResult vertex_face_ccd_exact(const RationalQuery& query, const CcdOptions& op
   };
   const Polynomial cubic(predicates::vertex_face_coplanarity_cubic(p, a, b, c));
   if (!cubic.is_zero())  // contact implies coplanarity: only the cubic's roots are candidates
-    return make_result(earliest_contact(std::initializer_list<Polynomial>{cubic}, false, t_max, contact_at), options);
+    return make_result(
+        earliest_contact(std::initializer_list<Polynomial>{cubic}, false, t_max, contact_at),
+        options);
   // Coplanar throughout: the first contact after t = 0 lies on an edge of the triangle.
-  return make_result(earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(p, a, b),
-                                       vertex_edge_candidates(p, b, c),
-                                       vertex_edge_candidates(p, c, a)},
-                                      true, t_max, contact_at),
-                     options);
+  return make_result(
+      earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(p, a, b),
+                                                         vertex_edge_candidates(p, b, c),
+                                                         vertex_edge_candidates(p, c, a)},
+                       true, t_max, contact_at),
+      options);
 }
 
 CcdResult edge_edge_ccd_exact(const RationalQuery& query, const CcdOptions& options) {
@@ -84,14 +87,17 @@ CcdResult edge_edge_ccd_exact(const RationalQuery& query, const CcdOptions& opti
   };
   const Polynomial cubic(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1));
   if (!cubic.is_zero())
-    return make_result(earliest_contact(std::initializer_list<Polynomial>{cubic}, false, t_max, contact_at), options);
+    return make_result(
+        earliest_contact(std::initializer_list<Polynomial>{cubic}, false, t_max, contact_at),
+        options);
   // Coplanar throughout: the first contact after t = 0 puts an endpoint on the other segment.
-  return make_result(earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(a0, b0, b1),
-                                       vertex_edge_candidates(a1, b0, b1),
-                                       vertex_edge_candidates(b0, a0, a1),
-                                       vertex_edge_candidates(b1, a0, a1)},
-                                      true, t_max, contact_at),
-                     options);
+  return make_result(
+      earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(a0, b0, b1),
+                                                         vertex_edge_candidates(a1, b0, b1),
+                                                         vertex_edge_candidates(b0, a0, a1),
+                                                         vertex_edge_candidates(b1, a0, a1)},
+                       true, t_max, contact_at),
+      options);
 }
 
 }  // namespace exactccd::exact

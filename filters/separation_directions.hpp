@@ -73,7 +73,8 @@ EXACTCCD_CERTIFIED bool apart_along(const Eigen::Vector3d& s, const Positions<N1
 
 /// Axis-aligned gaps wider than delta over T.
 template <std::size_t N1, std::size_t N2>
-EXACTCCD_CERTIFIED bool apart_on_an_axis(const Positions<N1>& first, const Positions<N2>& second, double delta) {
+EXACTCCD_CERTIFIED bool apart_on_an_axis(const Positions<N1>& first, const Positions<N2>& second,
+                                         double delta) {
   for (int k = 0; k < 3; ++k) {
     double lo1 = first[0][k].inf(), hi1 = first[0][k].sup();
     for (const auto& x : first) {
@@ -92,8 +93,10 @@ EXACTCCD_CERTIFIED bool apart_on_an_axis(const Positions<N1>& first, const Posit
 
 /// The closest point to p on the closed triangle (a, b, c) in plain arithmetic (Ericson,
 /// Real-Time Collision Detection, 5.1.5): a direction guess only, never a decision.
-EXACTCCD_CERTIFIED Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                    const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+EXACTCCD_CERTIFIED Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& p,
+                                                       const Eigen::Vector3d& a,
+                                                       const Eigen::Vector3d& b,
+                                                       const Eigen::Vector3d& c) {
   const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0 && d2 <= 0) return a;

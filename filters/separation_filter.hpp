@@ -1,7 +1,7 @@
 // Certified floating-point decisions for minimum-separation CCD (delta > 0): culling by swept
 // boxes more than delta apart, then a search over adaptively subdivided time intervals
-// (separating directions, signs of the region polynomials) for the first time within delta. `uncertain` sends the query to
-// the exact path. PROOF: proofs/min_separation.md#filters
+// (separating directions, signs of the region polynomials) for the first time within delta.
+// `uncertain` sends the query to the exact path. PROOF: proofs/min_separation.md#filters
 #pragma once
 
 #include <array>

@@ -156,7 +156,8 @@ TEST(MinSeparationTest, DefaultPathEqualsExactPathOnTheSampleQueries) {
     for (std::size_t i = 0; i < all.size(); i += stride) {
       const CcdOptions o = with_delta(delta);
       const CcdResult fast = random_queries::ccd(all[i], o);
-      const CcdResult exact = random_queries::ccd(all[i], random_queries::with_mode(o, Mode::exact));
+      const CcdResult exact =
+          random_queries::ccd(all[i], random_queries::with_mode(o, Mode::exact));
       ASSERT_EQ(fast.collides, exact.collides) << "sample query " << i << " delta " << delta;
       ASSERT_EQ(fast.toi_lo, exact.toi_lo) << "sample query " << i << " delta " << delta;
       ASSERT_EQ(fast.toi_hi, exact.toi_hi) << "sample query " << i << " delta " << delta;

@@ -199,9 +199,9 @@ void summary_markdown(std::ostream& out, const std::vector<Outcome>& outcomes,
     char ns[32];
     std::snprintf(ns, sizeof ns, "%.1f", o.mean_ns());
     out << "| " << markdown_escape(methods[m].label())
-        << (methods[m].certified ? " (certified)" : "") << " | " << ns << " | " << o.false_positives << " | " << o.false_negatives << " | "
-        << o.late << " | " << format_error(s.max_abs) << " | " << format_error(s.median_abs)
-        << " | " << format_error(s.max_late_by) << " |\n";
+        << (methods[m].certified ? " (certified)" : "") << " | " << ns << " | " << o.false_positives
+        << " | " << o.false_negatives << " | " << o.late << " | " << format_error(s.max_abs)
+        << " | " << format_error(s.median_abs) << " | " << format_error(s.max_late_by) << " |\n";
   }
 }
 

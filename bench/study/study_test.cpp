@@ -1,8 +1,8 @@
-// Tests of the numerical-stability study: the tolerance method (core/float_only/tolerance_ccd.hpp) on hand-made
-// queries whose coplanar times and distances are worked out by hand below, and the
-// `exactccd study` command on a sample file (expected verdicts from the file's truth column,
-// read here independently), on a hand-made suite with a TOI sidecar, and with a minimum
-// separation on a hand-made file whose first times within the separation are worked out below.
+// Tests of the numerical-stability study: the tolerance method (core/float_only/tolerance_ccd.hpp)
+// on hand-made queries whose coplanar times and distances are worked out by hand below, and the
+// `exactccd study` command on a sample file (expected verdicts from the file's truth column, read
+// here independently), on a hand-made suite with a TOI sidecar, and with a minimum separation on a
+// hand-made file whose first times within the separation are worked out below.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

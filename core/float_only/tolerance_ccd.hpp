@@ -1,12 +1,12 @@
 // The tolerance-based floating-point CCD test: the common practice that the numerical-stability
 // study measures. UNCERTIFIED: it misses contacts and reports false ones.
 //
-// In plain double arithmetic: the coplanarity cubic's roots in [0, t_max] (the float_only
-// mode's root finder, core/float_only/float_only_ccd.hpp), then, earliest first, the distance between
-// the primitives at each root (point-triangle for vertex-face, segment-segment for edge-edge);
-// the first root where that distance is <= eps is the time of impact. A cubic that vanishes
-// identically in doubles (motion coplanar throughout, a zero-length edge, a triangle degenerate
-// throughout) yields only the two ends 0 and t_max as candidate roots, as in the classic codes.
+// In plain double arithmetic: the coplanarity cubic's roots in [0, t_max] (the float_only mode's
+// root finder, core/float_only/float_only_ccd.hpp), then, earliest first, the distance between the
+// primitives at each root (point-triangle for vertex-face, segment-segment for edge-edge); the
+// first root where that distance is <= eps is the time of impact. A cubic that vanishes identically
+// in doubles (motion coplanar throughout, a zero-length edge, a triangle degenerate throughout)
+// yields only the two ends 0 and t_max as candidate roots, as in the classic codes.
 //
 // eps is an ABSOLUTE distance, as such codes use it, so the method depends on the coordinates'
 // scale: eps = 1e-9 is a tight tolerance for a mesh of unit size and a coarse one for a mesh of

@@ -83,7 +83,8 @@ RationalQuery to_rational(const EdgeEdgeQuery& q) {
 CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
   const RoundToNearest nearest;  // the TOI's conversions to doubles compare doubles
   check_ccd_options(options);
-  if (options.min_separation > 0) return exact_ccd(query, mpq_class(options.min_separation), options);
+  if (options.min_separation > 0)
+    return exact_ccd(query, mpq_class(options.min_separation), options);
   return query.type == QueryType::vertex_face ? exact::vertex_face_ccd_exact(query, options)
                                               : exact::edge_edge_ccd_exact(query, options);
 }

@@ -69,7 +69,8 @@ RationalQuery rational_query(const py::handle& points, QueryType type) {
     mpq_class* coordinates[3] = {&p.x, &p.y, &p.z};
     for (std::size_t k = 0; k < 3; ++k)
       *coordinates[k] =
-          to_mpq(xyz[k], ("points[" + std::to_string(row) + "][" + std::to_string(k) + "]").c_str());
+          to_mpq(xyz[k],
+                 ("points[" + std::to_string(row) + "][" + std::to_string(k) + "]").c_str());
   }
   return query;
 }
