@@ -16,6 +16,10 @@
 
 namespace exactccd::filters::separation {
 
+/// [d, d] for any double d, infinities included (an overflowed bound): Interval_nt's
+/// one-argument constructor asserts a finite value.
+EXACTCCD_CERTIFIED Interval exact_interval(double d) { return Interval(d, d); }
+
 /// A vertex's linear motion: x(T) = x0 + T (x1 - x0) enclosed over a time interval T.
 struct MovingVertex {
   std::array<Interval, 3> x0, dx;
@@ -53,7 +57,7 @@ EXACTCCD_CERTIFIED double support_gap(const Eigen::Vector3d& s, const Positions<
     const Interval proj = Interval(s[0]) * x[0] + Interval(s[1]) * x[1] + Interval(s[2]) * x[2];
     min2 = std::min(min2, proj.inf());
   }
-  return (Interval(min2) - Interval(max1)).inf();
+  return (exact_interval(min2) - exact_interval(max1)).inf();
 }
 
 /// Certainly more than delta apart along the direction s (either orientation): the convex
@@ -66,7 +70,8 @@ EXACTCCD_CERTIFIED bool apart_along(const Eigen::Vector3d& s, const Positions<N1
   const Interval norm2 = Interval(s[0]) * s[0] + Interval(s[1]) * s[1] + Interval(s[2]) * s[2];
   for (const double orientation : {1.0, -1.0}) {
     const double gap = support_gap<N1, N2>(orientation * s, first, second);
-    if (gap > 0 && (Interval(gap) * gap).inf() > (delta2 * norm2).sup()) return true;
+    if (gap > 0 && (exact_interval(gap) * exact_interval(gap)).inf() > (delta2 * norm2).sup())
+      return true;
   }
   return false;
 }
@@ -86,7 +91,9 @@ EXACTCCD_CERTIFIED bool apart_on_an_axis(const Positions<N1>& first, const Posit
       lo2 = std::min(lo2, x[k].inf());
       hi2 = std::max(hi2, x[k].sup());
     }
-    if ((Interval(lo2) - hi1).inf() > delta || (Interval(lo1) - hi2).inf() > delta) return true;
+    if ((exact_interval(lo2) - exact_interval(hi1)).inf() > delta ||
+        (exact_interval(lo1) - exact_interval(hi2)).inf() > delta)
+      return true;
   }
   return false;
 }

@@ -281,7 +281,7 @@ mpq_class squared_distance_at(const random_queries::DoubleQuery& q, const mpq_cl
 
 TEST(MinSeparationTest, AgreesWithCgalSquaredDistancesAtSampledTimes) {
   std::mt19937_64 rng(7);
-  const int n = static_cast<int>(test::scaled_count(400));
+  const int n = static_cast<int>(test::at_least(test::scaled_count(400), 100));
   const int samples = 24;
   int within_samples = 0, before_toi_samples = 0, exact_tois = 0;
   for (int i = 0; i < n; ++i) {
