@@ -94,24 +94,6 @@ CLI::Validator numeric_text(bool integer) {
       integer ? "INTEGER" : "NUMBER");
 }
 
-std::vector<std::string> comma_separated(const std::string& text) {
-  std::vector<std::string> words;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', start);
-    words.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
-    if (comma == std::string::npos) return words;
-    start = comma + 1;
-  }
-}
-
-double parse_number(const std::string& text, const std::string& option) {
-  std::string word = text;
-  const std::string problem = numeric_text(false)(word);
-  if (!problem.empty()) throw UsageError(option + ": " + problem);
-  return std::strtod(text.c_str(), nullptr);
-}
-
 CLI::Validator seed_text() {
   return CLI::Validator(
       [](std::string& text) {

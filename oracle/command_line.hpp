@@ -7,7 +7,6 @@
 #include <functional>
 #include <string>
 #include <tuple>
-#include <vector>
 
 #include "corpus/simulation_queries.hpp"
 
@@ -29,13 +28,6 @@ int run_reporting_errors(const std::function<int()>& command);
 /// Checks that an option's argument is a whole number before CLI11 converts it (CLI11 reads an
 /// empty argument as 0): [+-]digits for an integer; for a number, what strtod reads entirely.
 CLI::Validator numeric_text(bool integer);
-
-/// The words of a comma-separated list, empty ones kept (so that their parser refuses them).
-std::vector<std::string> comma_separated(const std::string& text);
-
-/// The number `text` is (what strtod reads entirely, no leading space); UsageError naming
-/// `option` otherwise.
-double parse_number(const std::string& text, const std::string& option);
 
 /// Digits only, below 2^64: CLI11 would wrap a negative number around and saturate a large one.
 CLI::Validator seed_text();

@@ -191,8 +191,13 @@ int main(int argc, char** argv) {
   bench->add_flag("--json", bench_options.json,
                   "Print a JSON array, one object per data set and mode (dataset, mode, queries, "
                   "mean_ns, median_ns, false_positives, false_negatives, stage_share, ...)");
-  std::string bench_modes_text = "float_only,default,exact";
-  bench->add_option("--modes", bench_modes_text, "Comma-separated modes: float_only,default,exact")
+  // One comma-separated argument each (as the study's --widths), so that a PATH after them stays
+  // a PATH.
+  std::vector<std::string> bench_modes = mode_names();
+  bench->add_option("--modes", bench_modes, "Comma-separated modes: float_only,default,exact")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(CLI::IsMember(mode_names()))
       ->capture_default_str();
   bench
       ->add_option("--repetitions", bench_options.repetitions,
@@ -208,13 +213,15 @@ int main(int argc, char** argv) {
   std::tie(bench_resolution, bench_steps, bench_seed) =
       add_simulation_options(bench, bench_options.simulation_config);
   add_type_option(bench, bench_type);
-  std::string bench_separations = "0";
   bench
-      ->add_option("--min-separation", bench_separations,
+      ->add_option("--min-separation", bench_options.min_separations,
                    "Comma-separated minimum separations delta >= 0, each a run of every mode "
                    "(0: contact, truth from the data set; delta > 0: truth and TOIs from the "
                    "exact path at delta, float_only is then the common practice: the float "
                    "cubic's roots, the distance at each compared with delta)")
+      ->delimiter(',')
+      ->allow_extra_args(false)
+      ->check(numeric_text(false))
       ->capture_default_str();
   bench->add_flag("--relative-separation", bench_options.relative_separation,
                   "Read --min-separation as factors of each data set's size (the diagonal of "
@@ -326,16 +333,8 @@ int main(int argc, char** argv) {
           throw UsageError(option->get_name() + " needs --simulation");
       bench_options.type = parse_type_name(bench_type);
       bench_options.modes.clear();
-      for (const std::string& name : comma_separated(bench_modes_text)) {
-        const std::optional<exactccd::Mode> mode = parse_mode_name(name);
-        if (!mode)
-          throw UsageError("--modes: " + exactccd::quote_for_message(name) +
-                           " is not one of float_only, default, exact");
-        bench_options.modes.push_back(*mode);
-      }
-      bench_options.min_separations.clear();
-      for (const std::string& word : comma_separated(bench_separations))
-        bench_options.min_separations.push_back(parse_number(word, "--min-separation"));
+      for (const std::string& name : bench_modes)
+        bench_options.modes.push_back(*parse_mode_name(name));
       return run_bench(bench_options);
     }
     if (generate->parsed()) {
