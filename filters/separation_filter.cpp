@@ -51,6 +51,33 @@ SeparationOutcome first_within(const Motion& m, const Separation& s,
   return separation::FirstWithinSearch<Motion, Separation>(m, s, exact, options).run();
 }
 
+using Vertices = std::array<const Eigen::Vector3d*, 4>;
+
+/// The search over [0, t_max] for the four moving vertices (t0, t1) of one query type: `make`
+/// builds its separation, `sign` and `secant` are ExactSignsAtDoubles' members for that type
+/// (the integer query built only when first asked).
+template <class Motion, class Make, class Sign, class Secant>
+SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
+                                    const CcdOptions& options, Make make, Sign sign,
+                                    Secant secant) {
+  using separation::MovingVertex;
+  const RoundingGuard upward;
+  const Motion m{{MovingVertex(*t0[0], *t1[0]), MovingVertex(*t0[1], *t1[1]),
+                  MovingVertex(*t0[2], *t1[2]), MovingVertex(*t0[3], *t1[3])}};
+  const Interval delta2 = Interval(options.min_separation) * options.min_separation;
+  const auto s = make(moving(*t0[0], *t1[0]), moving(*t0[1], *t1[1]), moving(*t0[2], *t1[2]),
+                      moving(*t0[3], *t1[3]), delta2);
+  std::optional<separation::ExactSignsAtDoubles> integer;
+  auto exact_signs = [&]() -> const separation::ExactSignsAtDoubles& {
+    if (!integer) integer.emplace(t0, t1, options.min_separation);
+    return *integer;
+  };
+  const separation::ExactAtDoubles exact{
+      [&](int k, double t) { return (exact_signs().*sign)(k, t); },
+      [&](int k, double lo, double hi) { return (exact_signs().*secant)(k, lo, hi); }};
+  return first_within(m, s, exact, options);
+}
+
 }  // namespace
 
 bool vertex_face_separation_culling(const VertexFaceQuery& q, double delta) {
@@ -65,54 +92,19 @@ bool edge_edge_separation_culling(const EdgeEdgeQuery& q, double delta) {
 
 SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                 const CcdOptions& options) {
-  using separation::MovingVertex;
-  const RoundingGuard upward;
-  const separation::VertexFaceMotion m{
-      {MovingVertex(q.p_t0, q.p_t1), MovingVertex(q.a_t0, q.a_t1), MovingVertex(q.b_t0, q.b_t1),
-       MovingVertex(q.c_t0, q.c_t1)}};
-  const Interval delta2 = Interval(options.min_separation) * options.min_separation;
-  const auto s = predicates::vertex_face_separation(moving(q.p_t0, q.p_t1),
-                                                    moving(q.a_t0, q.a_t1),
-                                                    moving(q.b_t0, q.b_t1),
-                                                    moving(q.c_t0, q.c_t1), delta2);
-  std::optional<separation::ExactSignsAtDoubles> integer;  // built on first use
-  auto exact_signs = [&]() -> const separation::ExactSignsAtDoubles& {
-    if (!integer)
-      integer.emplace(std::array<const Eigen::Vector3d*, 4>{&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0},
-                      std::array<const Eigen::Vector3d*, 4>{&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1},
-                      options.min_separation);
-    return *integer;
-  };
-  const separation::ExactAtDoubles exact{
-      [&](int k, double t) { return exact_signs().vertex_face_sign(k, t); },
-      [&](int k, double lo, double hi) { return exact_signs().vertex_face_secant(k, lo, hi); }};
-  return first_within(m, s, exact, options);
+  return separation_filter<separation::VertexFaceMotion>(
+      {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0}, {&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1}, options,
+      [](const auto&... x) { return predicates::vertex_face_separation(x...); },
+      &separation::ExactSignsAtDoubles::vertex_face_sign,
+      &separation::ExactSignsAtDoubles::vertex_face_secant);
 }
 
 SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
-  using separation::MovingVertex;
-  const RoundingGuard upward;
-  const separation::EdgeEdgeMotion m{
-      {MovingVertex(q.ea0_t0, q.ea0_t1), MovingVertex(q.ea1_t0, q.ea1_t1),
-       MovingVertex(q.eb0_t0, q.eb0_t1), MovingVertex(q.eb1_t0, q.eb1_t1)}};
-  const Interval delta2 = Interval(options.min_separation) * options.min_separation;
-  const auto s = predicates::edge_edge_separation(moving(q.ea0_t0, q.ea0_t1),
-                                                  moving(q.ea1_t0, q.ea1_t1),
-                                                  moving(q.eb0_t0, q.eb0_t1),
-                                                  moving(q.eb1_t0, q.eb1_t1), delta2);
-  std::optional<separation::ExactSignsAtDoubles> integer;  // built on first use
-  auto exact_signs = [&]() -> const separation::ExactSignsAtDoubles& {
-    if (!integer)
-      integer.emplace(
-          std::array<const Eigen::Vector3d*, 4>{&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0},
-          std::array<const Eigen::Vector3d*, 4>{&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
-          options.min_separation);
-    return *integer;
-  };
-  const separation::ExactAtDoubles exact{
-      [&](int k, double t) { return exact_signs().edge_edge_sign(k, t); },
-      [&](int k, double lo, double hi) { return exact_signs().edge_edge_secant(k, lo, hi); }};
-  return first_within(m, s, exact, options);
+  return separation_filter<separation::EdgeEdgeMotion>(
+      {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0}, {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
+      options, [](const auto&... x) { return predicates::edge_edge_separation(x...); },
+      &separation::ExactSignsAtDoubles::edge_edge_sign,
+      &separation::ExactSignsAtDoubles::edge_edge_secant);
 }
 
 }  // namespace exactccd::filters
