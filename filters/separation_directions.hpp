@@ -158,10 +158,11 @@ EXACTCCD_CERTIFIED std::pair<Eigen::Vector3d, Eigen::Vector3d> closest_on_segmen
 /// Vertex-face: the positions over T and the direction guesses at T's middle.
 struct VertexFaceMotion {
   std::array<MovingVertex, 4> v;  // p, a, b, c
-  bool apart_over(const Interval& T, const Interval& delta2, double delta) const {
+  /// `axes`: try the axes too (false where culling has just tried the same boxes).
+  bool apart_over(const Interval& T, const Interval& delta2, double delta, bool axes) const {
     const Positions<1> first{v[0].at(T)};
     const Positions<3> second{v[1].at(T), v[2].at(T), v[3].at(T)};
-    if (apart_on_an_axis<1, 3>(first, second, delta)) return true;
+    if (axes && apart_on_an_axis<1, 3>(first, second, delta)) return true;
     const double mid = 0.5 * (T.inf() + T.sup());
     const Eigen::Vector3d p = v[0].guess_at(mid), a = v[1].guess_at(mid), b = v[2].guess_at(mid),
                           c = v[3].guess_at(mid);
@@ -174,10 +175,11 @@ struct VertexFaceMotion {
 /// Edge-edge: the positions over T and the direction guesses at T's middle.
 struct EdgeEdgeMotion {
   std::array<MovingVertex, 4> v;  // a0, a1, b0, b1
-  bool apart_over(const Interval& T, const Interval& delta2, double delta) const {
+  /// `axes`: try the axes too (false where culling has just tried the same boxes).
+  bool apart_over(const Interval& T, const Interval& delta2, double delta, bool axes) const {
     const Positions<2> first{v[0].at(T), v[1].at(T)};
     const Positions<2> second{v[2].at(T), v[3].at(T)};
-    if (apart_on_an_axis<2, 2>(first, second, delta)) return true;
+    if (axes && apart_on_an_axis<2, 2>(first, second, delta)) return true;
     const double mid = 0.5 * (T.inf() + T.sup());
     const Eigen::Vector3d a0 = v[0].guess_at(mid), a1 = v[1].guess_at(mid),
                           b0 = v[2].guess_at(mid), b1 = v[3].guess_at(mid);

@@ -119,7 +119,9 @@ class FirstWithinSearch {
 
   Step search(double lo, double hi, int depth) {
     if (depth <= kDirectionDepth &&
-        m_.apart_over(Interval(lo, hi), delta2_, options_.min_separation)) {
+        m_.apart_over(Interval(lo, hi), delta2_, options_.min_separation,
+                      // over all of [0, 1] the axes repeat the culling's boxes
+                      !(lo == 0.0 && hi == 1.0))) {
       cleared_ = hi;
       return Step::excluded;
     }
