@@ -7,28 +7,9 @@
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "exact/earliest_contact.hpp"
+#include "exact/vertex_edge_candidates.hpp"
 
 namespace exactccd::exact {
-
-namespace {
-
-using predicates::MovingPoint;
-using predicates::Vec3;
-
-/// A non-zero polynomial whose roots contain every contact time of the vertex-edge motion
-/// (p against the closed segment [x, y]) other than t = 0; the zero polynomial when contact at
-/// t = 0 is the only possibility left. PROOF: proofs/exact_ccd.md#lemma-vertex-edge-candidates
-Polynomial vertex_edge_candidates(const MovingPoint<Rational>& p, const MovingPoint<Rational>& x,
-                                  const MovingPoint<Rational>& y) {
-  const auto n = cross(y - x, p - x);
-  for (int k = 0; k < 3; ++k) {
-    Polynomial q(n[k]);
-    if (!q.is_zero()) return q;
-  }
-  return Polynomial(dot(p - x, p - y));
-}
-
-}  // namespace
 
 RationalQuery with_integer_coordinates(const RationalQuery& q, Rational* scale) {
   mpz_class l = 1;
