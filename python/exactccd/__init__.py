@@ -27,6 +27,8 @@ from ._exactccd import (
     __version__,
     EarliestContact,
     InputError,
+    RigidCcdResult,
+    RigidMotion,
     Scene,
     SceneContact,
     ScenePair,
@@ -35,6 +37,8 @@ from ._exactccd import (
     exact_ccd,
     find_query_files,
     query_type_from_path,
+    rigid_edge_edge_ccd,
+    rigid_vertex_face_ccd,
 )
 from .query_files import (
     QueryData,
@@ -43,16 +47,18 @@ from .query_files import (
     write_query_file,
 )
 
-for _type in (CcdResult, EarliestContact, InputError, Scene, SceneContact, ScenePair, SceneResult,
+for _type in (CcdResult, EarliestContact, InputError, RigidCcdResult, RigidMotion, Scene,
+              SceneContact, ScenePair, SceneResult,
               SceneStats):
     _type.__module__ = __name__
 
 __all__ = [
-    "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES", "QueryData",
-    "STAGE_NAMES", "Scene", "SceneContact", "ScenePair", "SceneResult", "SceneStats",
-    "edge_edge_ccd", "edge_edge_ccd_batch", "exact_ccd", "find_query_files",
-    "query_type_from_path", "read_query_file", "read_query_file_exact", "vertex_face_ccd",
-    "vertex_face_ccd_batch", "write_query_file",
+    "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES",
+    "QueryData", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene", "SceneContact",
+    "ScenePair", "SceneResult", "SceneStats", "edge_edge_ccd", "edge_edge_ccd_batch", "exact_ccd",
+    "find_query_files", "query_type_from_path", "read_query_file", "read_query_file_exact",
+    "rigid_edge_edge_ccd", "rigid_vertex_face_ccd", "vertex_face_ccd", "vertex_face_ccd_batch",
+    "write_query_file",
 ]
 
 

@@ -49,5 +49,6 @@ void bind_rational(py::module_& m);
 void bind_query_files(py::module_& m);
 void bind_scene(py::module_& m);
 void bind_oracle(py::module_& m);
+void bind_rigid(py::module_& m);
 
 }  // namespace exactccd::python

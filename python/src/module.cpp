@@ -15,4 +15,5 @@ PYBIND11_MODULE(_exactccd, m) {
   python::bind_query_files(m);
   python::bind_scene(m);
   python::bind_oracle(m);
+  python::bind_rigid(m);
 }

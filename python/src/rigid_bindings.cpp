@@ -1,0 +1,125 @@
+// Rigid-body CCD (exactccd/rigid.hpp): RigidMotion, the side motions and the two queries.
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include <cstdio>
+
+#include "bindings.hpp"
+#include "exactccd/rigid.hpp"
+
+namespace exactccd::python {
+
+namespace {
+
+Eigen::Vector3d vector3(const py::handle& object, const char* what) {
+  const DoubleArray array = as_double_array(object, {3}, what);
+  return {array.data()[0], array.data()[1], array.data()[2]};
+}
+
+/// A side's motion: a RigidMotion, or an (n, 3) array of end positions (straight lines).
+SideMotion side_motion(const py::handle& motion, int vertices, const char* what) {
+  if (py::isinstance<RigidMotion>(motion)) return SideMotion::of(motion.cast<RigidMotion>());
+  const DoubleArray ends = as_double_array(motion, {vertices, 3}, what);
+  SideMotion side;
+  side.kind = PathKind::linear;
+  for (int i = 0; i < vertices; ++i)
+    side.linear_end[i] = Eigen::Vector3d(ends.data()[3 * i], ends.data()[3 * i + 1],
+                                         ends.data()[3 * i + 2]);
+  return side;
+}
+
+std::string repr(const RigidCcdResult& r) {
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "RigidCcdResult(collides=%s, toi_lo=%.17g, toi_hi=%.17g, has_time=%s, "
+                "time_lo=%.17g, time_hi=%.17g, stage='%s')",
+                r.ccd.collides ? "True" : "False", r.ccd.toi_lo, r.ccd.toi_hi,
+                r.has_time ? "True" : "False", r.time_lo, r.time_hi, to_string(r.ccd.decided_by));
+  return text;
+}
+
+}  // namespace
+
+void bind_rigid(py::module_& m) {
+  py::class_<RigidMotion>(m, "RigidMotion",
+                          "A rational rigid motion: at parameter s a point x0 is at pivot + s "
+                          "translation + C(s cayley) (x0 - pivot), C the Cayley rotation.")
+      .def(py::init([](const py::handle& pivot, const py::handle& translation,
+                       const py::handle& cayley) {
+             RigidMotion r;
+             r.pivot = vector3(pivot, "pivot");
+             r.translation = vector3(translation, "translation");
+             r.cayley = vector3(cayley, "cayley");
+             return r;
+           }),
+           py::arg("pivot") = py::make_tuple(0.0, 0.0, 0.0),
+           py::arg("translation") = py::make_tuple(0.0, 0.0, 0.0),
+           py::arg("cayley") = py::make_tuple(0.0, 0.0, 0.0))
+      .def_static("turn", &RigidMotion::turn, py::arg("pivot"), py::arg("axis"), py::arg("angle"),
+                  py::arg("translation") = Eigen::Vector3d::Zero(),
+                  "The turn by `angle` radians (|angle| < pi) about the line through pivot along "
+                  "axis, the pivot moving by translation (cayley rounded to doubles).")
+      .def_readonly("pivot", &RigidMotion::pivot)
+      .def_readonly("translation", &RigidMotion::translation)
+      .def_readonly("cayley", &RigidMotion::cayley)
+      .def("position_at",
+           [](const RigidMotion& r, const py::handle& x0, double s) {
+             return position_at(r, vector3(x0, "x0"), s);
+           },
+           py::arg("x0"), py::arg("s"), "x(s) in double arithmetic (not certified).");
+
+  py::class_<RigidCcdResult>(m, "RigidCcdResult",
+                             "collides, the enclosure [toi_lo, toi_hi] of the first contact's "
+                             "motion parameter s, and its time [time_lo, time_hi] when has_time.")
+      .def_property_readonly("collides", [](const RigidCcdResult& r) { return r.ccd.collides; })
+      .def_property_readonly("toi_lo", [](const RigidCcdResult& r) { return r.ccd.toi_lo; })
+      .def_property_readonly("toi_hi", [](const RigidCcdResult& r) { return r.ccd.toi_hi; })
+      .def_property_readonly("stage",
+                             [](const RigidCcdResult& r) { return to_string(r.ccd.decided_by); })
+      .def_readonly("has_time", &RigidCcdResult::has_time)
+      .def_readonly("time_lo", &RigidCcdResult::time_lo)
+      .def_readonly("time_hi", &RigidCcdResult::time_hi)
+      .def("__repr__", &repr)
+      .def("__bool__", [](const RigidCcdResult& r) { return r.ccd.collides; });
+
+  m.def(
+      "rigid_vertex_face_ccd",
+      [](const py::handle& points, const py::handle& vertex_motion,
+         const py::handle& face_motion, double t_max, double toi_width, const std::string& mode) {
+        const DoubleArray x = as_double_array(points, {4, 3}, "the points p, a, b, c");
+        RigidVertexFaceQuery q;
+        Eigen::Vector3d* rows[4] = {&q.p, &q.a, &q.b, &q.c};
+        for (int i = 0; i < 4; ++i)
+          *rows[i] = Eigen::Vector3d(x.data()[3 * i], x.data()[3 * i + 1], x.data()[3 * i + 2]);
+        q.vertex = side_motion(vertex_motion, 1, "the vertex's end position");
+        q.face = side_motion(face_motion, 3, "the face's end positions");
+        const CcdOptions options = make_options(t_max, toi_width, mode);
+        py::gil_scoped_release release;
+        return vertex_face_ccd(q, options);
+      },
+      py::arg("points"), py::arg("vertex_motion"), py::arg("face_motion"), py::kw_only(),
+      py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "default",
+      "Vertex p against the closed triangle (a, b, c): points = (4, 3) positions at s = 0; each "
+      "motion a RigidMotion or an array of end positions (straight lines).");
+  m.def(
+      "rigid_edge_edge_ccd",
+      [](const py::handle& points, const py::handle& motion_a, const py::handle& motion_b,
+         double t_max, double toi_width, const std::string& mode) {
+        const DoubleArray x = as_double_array(points, {4, 3}, "the points ea0, ea1, eb0, eb1");
+        RigidEdgeEdgeQuery q;
+        Eigen::Vector3d* rows[4] = {&q.ea0, &q.ea1, &q.eb0, &q.eb1};
+        for (int i = 0; i < 4; ++i)
+          *rows[i] = Eigen::Vector3d(x.data()[3 * i], x.data()[3 * i + 1], x.data()[3 * i + 2]);
+        q.edge_a = side_motion(motion_a, 2, "edge a's end positions");
+        q.edge_b = side_motion(motion_b, 2, "edge b's end positions");
+        const CcdOptions options = make_options(t_max, toi_width, mode);
+        py::gil_scoped_release release;
+        return edge_edge_ccd(q, options);
+      },
+      py::arg("points"), py::arg("motion_a"), py::arg("motion_b"), py::kw_only(),
+      py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "default",
+      "Closed segment [ea0, ea1] against [eb0, eb1]: points = (4, 3) positions at s = 0; each "
+      "motion a RigidMotion or an array of end positions (straight lines).");
+}
+
+}  // namespace exactccd::python
