@@ -130,14 +130,43 @@ class ExtendedSigns {
   /// +1 / -1, 2 for a certain zero, 0 when uncertain.
   int sign_at(double t) {
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
-    if (!ready_) {
-      g_ = coplanarity_over<ExtendedInterval>(query_);
-      ready_ = true;
-    }
+    prepare();
     return extended_sign(predicates::evaluate(g_, ExtendedInterval(t)));
+  }
+  /// A double strictly inside (lo, hi) (some double must lie there) near the root (g(hi) of
+  /// sign sign_hi): Newton's method on the midpoints of the extended coefficients, safeguarded
+  /// by bisection; only a choice of probe.
+  double root_guess(double lo, double hi, int sign_hi) {
+    const predicates::X87EnvironmentGuard nearest;
+    prepare();
+    long double c[6];
+    for (int i = 0; i < 6; ++i) c[i] = g_.c[i].lo / 2 + g_.c[i].hi / 2;
+    long double a = lo, b = hi, t = a + (b - a) / 2;
+    for (int n = 0; n < 40; ++n) {
+      long double v = c[5], d = 0;
+      for (int i = 4; i >= 0; --i) d = d * t + v, v = v * t + c[i];
+      if (!(v != 0)) break;  // a root of the guide, or NaN
+      ((v > 0) == (sign_hi > 0) ? b : a) = t;
+      long double next = t - v / d;
+      if (!(next > a && next < b)) next = a + (b - a) / 2;
+      if (next == t) break;
+      t = next;
+    }
+    const double guess = static_cast<double>(t);
+    if (guess > lo && guess < hi) return guess;
+    double mid = lo;
+    predicates::middle_double(lo, hi, &mid);  // lo < mid < hi: the caller has a double inside
+    return mid;
   }
 
  private:
+  void prepare() {
+    if (ready_) return;
+    const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
+    g_ = coplanarity_over<ExtendedInterval>(query_);
+    ready_ = true;
+  }
+
   const DoubleRigidQuery& query_;
   FixedPoly<ExtendedInterval, 5> g_;
   bool ready_ = false;
@@ -436,9 +465,23 @@ bool RootSearch::narrow_by_intervals(Bracket& b) const {
 /// width when toi_width > 0), each sign from the double or extended intervals when certain,
 /// else exact.
 void RootSearch::narrow_finely(Bracket& b, bool to_tightest) {
+  auto done = [&] { return to_tightest ? tightest(b) : toi_final(b); };
+#if EXACTCCD_EXTENDED_INTERVAL
+  // First the double nearest the extended guide's root and its neighbour towards r: with the
+  // guide as accurate as the extended enclosures, usually the tightest pair at once.
+  if (!done()) {
+    const double guess = extended_.root_guess(b.lo, b.hi, b.sign_hi);
+    const Side s = fine_side_of(guess, b.sign_hi);
+    classify(b, guess, s);
+    if (!done() && s != Side::at) {
+      const std::uint64_t x = order_bits(guess);
+      const double next = double_of(s == Side::below ? x + 1 : x - 1);
+      if (next > b.lo && next < b.hi) classify(b, next, fine_side_of(next, b.sign_hi));
+    }
+  }
+#endif
   double mid;
-  while (!(to_tightest ? tightest(b) : toi_final(b)) &&
-         predicates::middle_double(b.lo, b.hi, &mid))
+  while (!done() && predicates::middle_double(b.lo, b.hi, &mid))
     classify(b, mid, fine_side_of(mid, b.sign_hi));
 }
 

@@ -17,6 +17,7 @@
 #include "core/src/ccd_options_check.hpp"
 #include "exact/rigid_ccd.hpp"
 #include "filters/interval.hpp"
+#include "core/src/rigid_exact_signs.hpp"
 #include "filters/rigid_filter.hpp"
 
 namespace exactccd {
@@ -76,41 +77,6 @@ filters::DoubleRigidQuery checked_query(const RigidEdgeEdgeQuery& query) {
   add_side(query.edge_b, 2, "edge_b", &q.side[1]);
   return q;
 }
-
-/// The same query over the rationals (the same values), for the exact path.
-exact::RationalRigidQuery rational_query(const filters::DoubleRigidQuery& d) {
-  exact::RationalRigidQuery q;
-  q.type = d.type;
-  for (int i = 0; i < 4; ++i) q.start[i] = rational(d.start[i]);
-  const int first = d.type == QueryType::vertex_face ? 1 : 2;
-  for (int k = 0; k < 2; ++k) {
-    const filters::DoubleSide& s = d.side[k];
-    exact::RationalSide& r = q.side[k];
-    r.rigid = s.rigid;
-    if (s.rigid) {
-      r.motion = {rational(s.motion.pivot), rational(s.motion.translation),
-                  rational(s.motion.cayley)};
-    } else {
-      for (int i = 0; i < (k == 0 ? first : 4 - first); ++i) r.end[i] = rational(s.end[i]);
-    }
-  }
-  return q;
-}
-
-/// Exact signs of the reduced coplanarity polynomial at doubles, for the filter: its rational
-/// coefficients are formed on the first call (most queries never make one).
-class ExactCoplanaritySigns final : public filters::RigidExactSigns {
- public:
-  explicit ExactCoplanaritySigns(const filters::DoubleRigidQuery& q) : query_(q) {}
-  int coplanarity_sign_at(double s) override {
-    if (!g_) g_ = exact::rigid_coplanarity_polynomial(rational_query(query_));
-    return g_->sign_at(exact::Rational(s));
-  }
-
- private:
-  const filters::DoubleRigidQuery& query_;
-  std::optional<exact::Polynomial> g_;
-};
 
 bool is_zero(const Vec3<double>& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
@@ -220,7 +186,7 @@ RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
         "exactccd: Mode::float_only has no rigid-motion test (use Mode::filtered or exact)");
   const filters::DoubleRigidQuery q = checked_query(query);
   if (options.mode == Mode::filtered) {
-    ExactCoplanaritySigns exact(q);
+    RigidExactSignsAtDoubles exact(q);
     if (std::optional<CcdResult> r = filters::rigid_ccd_filter(q, options, exact))
       return with_time(*r, q);
   }
