@@ -50,59 +50,56 @@ StackDyadic operator*(const StackDyadic& a, const StackDyadic& b) {
   return r;
 }
 
-StackDyadic StackDyadic::sum(const StackDyadic& a, const StackDyadic& b_in, bool negate_b) {
-  if (a.overflow_ || b_in.overflow_) return overflowed();
-  StackDyadic b = b_in;
-  if (negate_b && b.size_ != 0) b.negative_ = !b.negative_;
+StackDyadic StackDyadic::sum(const StackDyadic& a, const StackDyadic& b, bool negate_b) {
+  if (a.overflow_ || b.overflow_) return overflowed();
   if (b.size_ == 0) return a;
-  if (a.size_ == 0) return b;
+  if (a.size_ == 0) return negate_b ? -b : b;
+  const bool b_negative = b.negative_ != negate_b;
   // Align: the operand with the larger exponent is shifted left onto the smaller one's.
-  const StackDyadic& low = a.exponent_ <= b.exponent_ ? a : b;
-  const StackDyadic& high = a.exponent_ <= b.exponent_ ? b : a;
+  const bool a_low = a.exponent_ <= b.exponent_;
+  const StackDyadic& low = a_low ? a : b;
+  const StackDyadic& high = a_low ? b : a;
+  const bool low_negative = a_low ? a.negative_ : b_negative;
+  const bool high_negative = a_low ? b_negative : a.negative_;
   const long shift = high.exponent_ - low.exponent_;
   if (shift >= 64L * kLimbs) return overflowed();
   const int whole = static_cast<int>(shift / 64), bits = static_cast<int>(shift % 64);
-  const int shifted_size = high.size_ + whole + 1;
-  if (shifted_size > kLimbs) return overflowed();
   mp_limb_t shifted[kLimbs];
-  for (int i = 0; i < whole; ++i) shifted[i] = 0;
-  if (bits == 0) {
-    for (int i = 0; i < high.size_; ++i) shifted[whole + i] = high.limb_[i];
-    shifted[whole + high.size_] = 0;
-  } else {
-    shifted[whole + high.size_] = mpn_lshift(shifted + whole, high.limb_, high.size_, bits);
+  const mp_limb_t* y = high.limb_;
+  int ys = high.size_;
+  if (shift != 0) {
+    if (high.size_ + whole + 1 > kLimbs) return overflowed();
+    for (int i = 0; i < whole; ++i) shifted[i] = 0;
+    if (bits == 0) {
+      for (int i = 0; i < high.size_; ++i) shifted[whole + i] = high.limb_[i];
+      ys = whole + high.size_;
+    } else {
+      const mp_limb_t out = mpn_lshift(shifted + whole, high.limb_, high.size_, bits);
+      ys = whole + high.size_;
+      if (out != 0) shifted[ys++] = out;
+    }
+    y = shifted;
   }
-  int hs = shifted_size;
-  while (hs > 0 && shifted[hs - 1] == 0) --hs;
-  // Signed addition of the magnitudes low.limb_ (low.size_) and shifted (hs).
-  StackDyadic r;
-  r.exponent_ = low.exponent_;
+  // Signed addition of the magnitudes x = low's and y (the shifted high's).
   const mp_limb_t* x = low.limb_;
-  const mp_limb_t* y = shifted;
-  int xs = low.size_, ys = hs;
-  bool x_negative = low.negative_, y_negative = high.negative_;
+  int xs = low.size_;
+  bool x_negative = low_negative, y_negative = high_negative;
   if (xs < ys || (xs == ys && mpn_cmp(x, y, xs) < 0)) {  // x the larger magnitude
     std::swap(x, y);
     std::swap(xs, ys);
     std::swap(x_negative, y_negative);
   }
+  StackDyadic r;
+  r.exponent_ = low.exponent_;
+  r.negative_ = x_negative;
   if (x_negative == y_negative) {
     if (xs + 1 > kLimbs) return overflowed();
-    mp_limb_t carry = 0;
-    if (ys > 0)
-      carry = mpn_add(r.limb_, x, xs, y, ys);
-    else
-      mpn_copyi(r.limb_, x, xs);
-    r.limb_[xs] = carry;
+    r.limb_[xs] = mpn_add(r.limb_, x, xs, y, ys);
     r.size_ = xs + 1;
   } else {
-    if (ys > 0)
-      mpn_sub(r.limb_, x, xs, y, ys);  // no borrow: |x| >= |y|
-    else
-      mpn_copyi(r.limb_, x, xs);
+    mpn_sub(r.limb_, x, xs, y, ys);  // no borrow: |x| >= |y|
     r.size_ = xs;
   }
-  r.negative_ = x_negative;
   r.normalise();
   return r;
 }

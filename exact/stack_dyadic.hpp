@@ -15,7 +15,9 @@ namespace exactccd::exact {
 
 class StackDyadic {
  public:
-  static constexpr int kLimbs = 24;  ///< 1536 bits: far more than the rigid coefficients need
+  /// 1024 bits: the rigid coefficients of doubles near unit scale need about 400, their values
+  /// at a double about 700; wider spreads of exponents overflow to the rationals.
+  static constexpr int kLimbs = 16;
 
   StackDyadic() = default;  ///< zero
   /// The double d exactly (finite).
