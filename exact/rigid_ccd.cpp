@@ -4,6 +4,7 @@
 #include <initializer_list>
 
 #include "core/predicates/inclusion.hpp"
+#include "core/predicates/rigid_coplanarity.hpp"
 #include "exact/earliest_contact.hpp"
 #include "exact/vertex_edge_candidates.hpp"
 
@@ -34,24 +35,6 @@ SidePaths paths_of(const RationalSide& side, const Vec3<Rational>* start, int co
   return paths;
 }
 
-/// f with every factor w (a denominator 1 + |q|^2 s^2 of degree 2, which has no real root)
-/// divided out as often as it divides f: the same real roots, a lower degree.
-/// PROOF: proofs/rigid_ccd.md#degree
-Polynomial without_denominator_factors(Polynomial f,
-                                       std::initializer_list<const FixedPoly<Rational, 2>*> ws) {
-  for (const FixedPoly<Rational, 2>* w : ws) {
-    const Polynomial divisor(*w);
-    if (divisor.degree() < 1) continue;
-    while (f.degree() >= divisor.degree()) {
-      Polynomial quotient, remainder;
-      divide(f, divisor, &quotient, &remainder);
-      if (!remainder.is_zero()) break;
-      f = std::move(quotient);
-    }
-  }
-  return f;
-}
-
 }  // namespace
 
 std::array<RigidPoint<Rational>, 4> common_denominator_points(const RationalRigidQuery& q) {
@@ -67,27 +50,19 @@ std::array<RigidPoint<Rational>, 4> common_denominator_points(const RationalRigi
   return points;
 }
 
-namespace {
-
-Polynomial coplanarity_of(const RationalRigidQuery& q,
-                          const std::array<RigidPoint<Rational>, 4>& y) {
-  const FixedPoly<Rational, 2> w0 = denominator_of(q.side[0]), w1 = denominator_of(q.side[1]);
-  const auto f = q.type == QueryType::vertex_face
-                     ? predicates::coplanarity_determinant(y[0], y[1], y[2], y[3])
-                     : predicates::coplanarity_determinant(y[3], y[0], y[1], y[2]);
-  return without_denominator_factors(Polynomial(f), {&w0, &w1});
-}
-
-}  // namespace
-
 Polynomial rigid_coplanarity_polynomial(const RationalRigidQuery& q) {
-  return coplanarity_of(q, common_denominator_points(q));
+  const auto& x = q.start;
+  return Polynomial(q.type == QueryType::vertex_face
+                        ? predicates::vertex_face_rigid_coplanarity<Rational>(
+                              x[0], x[1], x[2], x[3], q.side[0], q.side[1])
+                        : predicates::edge_edge_rigid_coplanarity<Rational>(
+                              x[0], x[1], x[2], x[3], q.side[0], q.side[1]));
 }
 
 CcdResult rigid_ccd_exact(const RationalRigidQuery& q, const CcdOptions& options) {
   const auto y = common_denominator_points(q);
   const Rational t_max(options.t_max);
-  const Polynomial f = coplanarity_of(q, y);
+  const Polynomial f = rigid_coplanarity_polynomial(q);
   if (q.type == QueryType::vertex_face) {
     const auto &p = y[0], &a = y[1], &b = y[2], &c = y[3];
     auto contact_at = [&](AlgebraicTime& t) {

@@ -31,9 +31,10 @@ struct RationalRigidQuery {
 std::array<predicates::RigidPoint<Rational>, 4> common_denominator_points(
     const RationalRigidQuery& query);
 
-/// The coplanarity determinant of the four points on the common denominator with the factors
-/// w_0, w_1 divided out as often as they divide it: the same real roots, degree <= 5 whatever the
-/// motions. PROOF: proofs/rigid_ccd.md#degree
+/// The reduced coplanarity polynomial g (core/predicates/rigid_coplanarity.hpp): the coplanarity
+/// determinant of the four points on the common denominator divided by w_0^2 (side 0 rigid) and
+/// w_1^2 (side 1 rigid), in closed form: the same real roots and signs, degree <= 5 whatever the
+/// motions. PROOF: proofs/rigid_ccd.md#degree, proofs/rigid_ccd.md#reduced-polynomial
 Polynomial rigid_coplanarity_polynomial(const RationalRigidQuery& query);
 
 /// Options must already be validated; min_separation is ignored (contact). The TOI is in s.

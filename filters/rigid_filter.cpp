@@ -1,7 +1,15 @@
 // PROOF: proofs/rigid_ccd.md#filters
 #include "filters/rigid_filter.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "core/predicates/double_bits.hpp"
+#include "core/predicates/rigid_coplanarity.hpp"
+#include "filters/extended_interval.hpp"
 #include "filters/interval.hpp"
+#include "filters/polynomial_bernstein.hpp"
 
 namespace exactccd::filters {
 
@@ -9,21 +17,74 @@ namespace {
 
 using predicates::FixedPoly;
 using predicates::Vec3;
+using Quintic = FixedPoly<Interval, 5>;
+using Boxes = std::array<Vec3<Interval>, 4>;
 
-/// The number of equal pieces [0, t_max] is cut into: boxes of a turning arc over a piece are
-/// much tighter than over the whole motion, and 16 keeps the filter cheap.
-constexpr int kPieces = 16;
+// ---------------------------------------------------------------------------------------------
+// Power-of-two normalisation (PROOF: proofs/rigid_ccd.md#filters, step 0)
+
+/// A largest |coordinate| in [2^-64, 2^65) is left as it is.
+constexpr int kComfortableExponent = 64;
+
+/// Calls f on every position-like vector of the query: the points at s = 0, the pivots and
+/// translations of rigid sides, the end positions of linear ones. Scaling all of them by 2^k
+/// scales every position x(s) by 2^k (the Cayley vectors are angles and stay).
+template <class Query, class F>
+void for_each_position(Query& q, F&& f) {
+  for (auto& x : q.start) f(x);
+  const int first = q.type == QueryType::vertex_face ? 1 : 2;
+  for (int side = 0; side < 2; ++side) {
+    auto& s = q.side[side];
+    if (s.rigid) {
+      f(s.motion.pivot);
+      f(s.motion.translation);
+    } else {
+      for (int i = 0; i < (side == 0 ? first : 4 - first); ++i) f(s.end[i]);
+    }
+  }
+}
+
+/// The exponent k that brings the largest |coordinate| into [1/2, 1) when it lies outside the
+/// comfortable range and every coordinate times 2^k is again a double (no bit lost); else 0.
+int normalising_exponent(const DoubleRigidQuery& q) {
+  double largest = 0;
+  int lowest_bit = 1 << 20;  // the exponent of the lowest set bit of any coordinate
+  for_each_position(q, [&](const Vec3<double>& x) {
+    for (int k = 0; k < 3; ++k) {
+      const double m = std::fabs(x[k]);
+      if (m == 0) continue;
+      largest = std::max(largest, m);
+      int e;
+      const double mantissa = std::frexp(m, &e);  // m = mantissa 2^e, mantissa in [1/2, 1)
+      // mantissa 2^53 is an integer (exact); its trailing zeros lift the lowest bit.
+      const auto integer = static_cast<std::uint64_t>(std::ldexp(mantissa, 53));
+      lowest_bit = std::min(lowest_bit, e - 53 + __builtin_ctzll(integer));
+    }
+  });
+  if (largest == 0) return 0;
+  int e;
+  std::frexp(largest, &e);
+  if (std::abs(e - 1) <= kComfortableExponent) return 0;
+  const int k = -e;
+  return k > 0 || lowest_bit + k >= -1074 ? k : 0;
+}
+
+DoubleRigidQuery scaled(DoubleRigidQuery q, int k) {
+  for_each_position(q, [k](Vec3<double>& x) {
+    x = {std::ldexp(x.x, k), std::ldexp(x.y, k), std::ldexp(x.z, k)};
+  });
+  return q;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Paths and positions in intervals
 
 Vec3<Interval> exact_interval(const Vec3<double>& x) { return {x.x, x.y, x.z}; }
 
-predicates::RigidMotionOver<Interval> interval_motion(const predicates::RigidMotionOver<double>& m) {
-  return {exact_interval(m.pivot), exact_interval(m.translation), exact_interval(m.cayley)};
-}
-
 struct IntervalPaths {
-  std::array<Vec3<FixedPoly<Interval, 3>>, 4> numerator;
-  std::array<FixedPoly<Interval, 2>, 2> denominator;
-  int first_side_count;
+  std::array<Vec3<FixedPoly<Interval, 3>>, 4> numerator;  // X_i(s)
+  std::array<FixedPoly<Interval, 2>, 2> denominator;      // w_side(s)
+  int first_side_count = 1;                               // points of side 0
 };
 
 IntervalPaths interval_paths(const DoubleRigidQuery& q) {
@@ -31,7 +92,9 @@ IntervalPaths interval_paths(const DoubleRigidQuery& q) {
   paths.first_side_count = q.type == QueryType::vertex_face ? 1 : 2;
   for (int side = 0; side < 2; ++side) {
     const DoubleSide& s = q.side[side];
-    const auto motion = interval_motion(s.motion);
+    const predicates::RigidMotionOver<Interval> motion{exact_interval(s.motion.pivot),
+                                                       exact_interval(s.motion.translation),
+                                                       exact_interval(s.motion.cayley)};
     paths.denominator[side] =
         s.rigid ? predicates::rigid_path_denominator(motion)
                 : FixedPoly<Interval, 2>{{Interval(1), Interval(0), Interval(0)}};
@@ -47,61 +110,503 @@ IntervalPaths interval_paths(const DoubleRigidQuery& q) {
   return paths;
 }
 
-/// Encloses the box of x(s) = X(s) / w(s) over s in `piece` (w >= 1 there).
-Vec3<Interval> box_over(const Vec3<FixedPoly<Interval, 3>>& X, const FixedPoly<Interval, 2>& w,
-                        const Interval& piece) {
-  const Interval den = predicates::evaluate(w, piece);
-  return {predicates::evaluate(X.x, piece) / den, predicates::evaluate(X.y, piece) / den,
-          predicates::evaluate(X.z, piece) / den};
+/// g with coefficients over NT (an interval type: enclosures of the exact coefficients).
+template <class NT>
+FixedPoly<NT, 5> coplanarity_over(const DoubleRigidQuery& q) {
+  using predicates::edge_edge_rigid_coplanarity;
+  using predicates::vertex_face_rigid_coplanarity;
+  const auto& x = q.start;
+  return q.type == QueryType::vertex_face
+             ? vertex_face_rigid_coplanarity<NT>(x[0], x[1], x[2], x[3], q.side[0], q.side[1])
+             : edge_edge_rigid_coplanarity<NT>(x[0], x[1], x[2], x[3], q.side[0], q.side[1]);
 }
 
-bool boxes_apart(const Vec3<Interval>* a, int na, const Vec3<Interval>* b, int nb) {
+#if EXACTCCD_EXTENDED_INTERVAL
+/// Signs of g at doubles from its coefficients in extended-precision intervals, formed on
+/// first use (about 2^11 times tighter than the double ones).
+class ExtendedSigns {
+ public:
+  explicit ExtendedSigns(const DoubleRigidQuery& q) : query_(q) {}
+  /// +1 / -1, 2 for a certain zero, 0 when uncertain.
+  int sign_at(double t) {
+    const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
+    prepare();
+    return extended_sign(predicates::evaluate(g_, ExtendedInterval(t)));
+  }
+  /// A double strictly inside (lo, hi) (some double must lie there) near the root (g(hi) of
+  /// sign sign_hi): Newton's method on the midpoints of the extended coefficients, safeguarded
+  /// by bisection; only a choice of probe.
+  double root_guess(double lo, double hi, int sign_hi) {
+    const predicates::X87EnvironmentGuard nearest;
+    prepare();
+    long double c[6];
+    for (int i = 0; i < 6; ++i) c[i] = g_.c[i].lo / 2 + g_.c[i].hi / 2;
+    long double a = lo, b = hi, t = a + (b - a) / 2;
+    for (int n = 0; n < 40; ++n) {
+      long double v = c[5], d = 0;
+      for (int i = 4; i >= 0; --i) d = d * t + v, v = v * t + c[i];
+      if (!(v != 0)) break;  // a root of the guide, or NaN
+      ((v > 0) == (sign_hi > 0) ? b : a) = t;
+      long double next = t - v / d;
+      if (!(next > a && next < b)) next = a + (b - a) / 2;
+      if (next == t) break;
+      t = next;
+    }
+    const double guess = static_cast<double>(t);
+    if (guess > lo && guess < hi) return guess;
+    double mid = lo;
+    predicates::middle_double(lo, hi, &mid);  // lo < mid < hi: the caller has a double inside
+    return mid;
+  }
+
+ private:
+  void prepare() {
+    if (ready_) return;
+    const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
+    g_ = coplanarity_over<ExtendedInterval>(query_);
+    ready_ = true;
+  }
+
+  const DoubleRigidQuery& query_;
+  FixedPoly<ExtendedInterval, 5> g_;
+  bool ready_ = false;
+};
+#endif
+
+/// Boxes enclosing every position x(s) = X(s) / w(s), s in T (w >= 1 there).
+Boxes positions_over(const IntervalPaths& paths, const Interval& T) {
+  const Interval w[2] = {predicates::evaluate(paths.denominator[0], T),
+                         predicates::evaluate(paths.denominator[1], T)};
+  Boxes x;
+  for (int i = 0; i < 4; ++i) {
+    const Interval& d = w[i < paths.first_side_count ? 0 : 1];
+    const auto& X = paths.numerator[i];
+    x[i] = {predicates::evaluate(X.x, T) / d, predicates::evaluate(X.y, T) / d,
+            predicates::evaluate(X.z, T) / d};
+  }
+  return x;
+}
+
+/// On some axis the hulls of the two primitives' boxes are disjoint. A NaN bound (overflow)
+/// never separates.
+bool boxes_apart(const Boxes& x, int first) {
   for (int k = 0; k < 3; ++k) {
-    double a_lo = a[0][k].inf(), a_hi = a[0][k].sup();
-    for (int i = 1; i < na; ++i) a_lo = std::min(a_lo, a[i][k].inf()), a_hi = std::max(a_hi, a[i][k].sup());
-    double b_lo = b[0][k].inf(), b_hi = b[0][k].sup();
-    for (int i = 1; i < nb; ++i) b_lo = std::min(b_lo, b[i][k].inf()), b_hi = std::max(b_hi, b[i][k].sup());
-    if (a_hi < b_lo || b_hi < a_lo) return true;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int i = 0; i < 4; ++i) {
+      const int side = i < first ? 0 : 1;
+      const double l = x[i][k].inf(), h = x[i][k].sup();
+      if (!(l <= h)) return false;
+      lo[side] = std::min(lo[side], l);
+      hi[side] = std::max(hi[side], h);
+    }
+    if (hi[0] < lo[1] || hi[1] < lo[0]) return true;
   }
   return false;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Inclusion on boxes (PROOF: proofs/rigid_ccd.md#inclusion-over-brackets)
+
+enum class Inclusion : std::uint8_t { excluded, included, unknown };
+
+/// Over a time interval whose position boxes are x: `excluded` when no s of it is a contact;
+/// `included` when every coplanar s of it is a contact.
+Inclusion vertex_face_inclusion(const Boxes& x) {
+  const auto &p = x[0], &a = x[1], &b = x[2], &c = x[3];
+  for (int k = 0; k < 3; ++k) {
+    const int s = certain_strict_sign(predicates::orient2d_along_axis(k, a, b, c));
+    if (s == 0) continue;
+    const int e[3] = {certain_strict_sign(predicates::orient2d_along_axis(k, a, b, p)),
+                      certain_strict_sign(predicates::orient2d_along_axis(k, b, c, p)),
+                      certain_strict_sign(predicates::orient2d_along_axis(k, c, a, p))};
+    if (e[0] == -s || e[1] == -s || e[2] == -s) return Inclusion::excluded;
+    if (e[0] == s && e[1] == s && e[2] == s) return Inclusion::included;
+  }
+  return Inclusion::unknown;
+}
+
+Inclusion edge_edge_inclusion(const Boxes& x) {
+  const auto &a0 = x[0], &a1 = x[1], &b0 = x[2], &b1 = x[3];
+  for (int k = 0; k < 3; ++k) {
+    const int o[4] = {certain_strict_sign(predicates::orient2d_along_axis(k, a0, a1, b0)),
+                      certain_strict_sign(predicates::orient2d_along_axis(k, a0, a1, b1)),
+                      certain_strict_sign(predicates::orient2d_along_axis(k, b0, b1, a0)),
+                      certain_strict_sign(predicates::orient2d_along_axis(k, b0, b1, a1))};
+    if ((o[0] != 0 && o[0] == o[1]) || (o[2] != 0 && o[2] == o[3])) return Inclusion::excluded;
+    if (o[0] != 0 && o[1] == -o[0] && o[2] != 0 && o[3] == -o[2]) return Inclusion::included;
+  }
+  return Inclusion::unknown;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Brackets of a single root (PROOF: proofs/rigid_ccd.md#toi-tightening)
+
+/// lo < r < hi with g(lo), g(hi) certainly non-zero of signs -sign_hi, sign_hi, r the only
+/// root of g in [lo, hi] (simple); or lo == hi == r.
+struct Bracket {
+  double lo, hi;
+  int sign_hi;
+};
+
+/// g with the midpoints of its interval coefficients: only a guide for where to probe.
+/// Nothing is decided from it, whatever its rounding or accuracy.
+struct Guide {
+  double c[6], w[6];
+  explicit Guide(const Quintic& g) {
+    for (int i = 0; i < 6; ++i) {
+      c[i] = g.c[i].inf() / 2 + g.c[i].sup() / 2;
+      w[i] = g.c[i].sup() - g.c[i].inf();
+    }
+  }
+  double value(double t) const {
+    double r = c[5];
+    for (int i = 4; i >= 0; --i) r = r * t + c[i];
+    return r;
+  }
+  double slope(double t) const {
+    double r = 5 * c[5];
+    for (int i = 4; i >= 1; --i) r = r * t + i * c[i];
+    return r;
+  }
+  double width(double t) const {
+    double r = w[5];
+    for (int i = 4; i >= 0; --i) r = r * t + w[i];
+    return r;
+  }
+  /// A guess at the root in (lo, hi): Newton's method safeguarded by bisection of the guide's
+  /// own bracket.
+  double root(double lo, double hi, int sign_hi) const {
+    double a = lo, b = hi;
+    const double g_lo = value(lo), g_hi = value(hi);
+    double t = lo + (hi - lo) * (g_lo / (g_lo - g_hi));
+    if (!(t > lo && t < hi)) t = lo + (hi - lo) / 2;  // NaN included
+    for (int i = 0; i < 60; ++i) {
+      const double v = value(t);
+      if (!(v != 0)) break;  // a root of the guide, or NaN
+      ((v > 0) == (sign_hi > 0) ? b : a) = t;
+      double next = t - v / slope(t);
+      if (!(next > a && next < b)) next = a + (b - a) / 2;
+      if (next == a || next == b) break;
+      const double moved = std::fabs(next - t);
+      const bool close = moved <= std::fabs(t) * 0x1p-50;
+      t = next;
+      if (close) break;
+    }
+    return t;
+  }
+};
+
+/// hi - lo <= width, the difference rounded up through the interval type.
+bool certainly_within_width(double lo, double hi, double width) {
+  return (Interval(hi) - Interval(lo)).sup() <= width;
+}
+
+using predicates::double_of;
+using predicates::order_bits;
+
+/// No double lies strictly inside the bracket: it is the tightest pair (or the exact root).
+bool tightest(const Bracket& b) { return order_bits(b.hi) - order_bits(b.lo) < 2; }
+
+enum class Side : std::uint8_t { below, at, above, unknown };
+
+class RootSearch {
+ public:
+  RootSearch(const Quintic& g, const DoubleRigidQuery& query, const IntervalPaths& paths,
+             const CcdOptions& options, RigidExactSigns& exact)
+      : g_(g), guide_(g), paths_(paths), type_(query.type), t_max_(options.t_max),
+        toi_width_(options.toi_width), exact_(exact)
+#if EXACTCCD_EXTENDED_INTERVAL
+        , extended_(query)
+#endif
+  {
+  }
+
+  std::optional<CcdResult> run();
+
+ private:
+  struct Node {
+    Bernstein<Interval, 5> b;
+    double u0, u1;
+    int depth;
+  };
+  static constexpr int kMaxDepth = 14;
+  enum class RootVerdict : std::uint8_t { contact, no_contact, undecided };
+
+  Side side_of(double t, int sign_hi) const {
+    const CertifiedSign s = certified_sign(predicates::evaluate(g_, Interval(t)));
+    if (s == CertifiedSign::uncertain) return Side::unknown;
+    if (s == CertifiedSign::zero) return Side::at;
+    return static_cast<int>(s) == sign_hi ? Side::above : Side::below;
+  }
+  /// The sign of g at the double t: from the double intervals, else the extended ones, else
+  /// exact (then exact_used_).
+  int fine_sign_at(double t) {
+    const CertifiedSign s = certified_sign(predicates::evaluate(g_, Interval(t)));
+    if (s != CertifiedSign::uncertain) return static_cast<int>(s);
+#if EXACTCCD_EXTENDED_INTERVAL
+    const int x = extended_.sign_at(t);
+    if (x != 0) return x == 2 ? 0 : x;
+#endif
+    exact_used_ = true;
+    return exact_.coplanarity_sign_at(t);
+  }
+  Side fine_side_of(double t, int sign_hi) {
+    const int s = fine_sign_at(t);
+    return s == 0 ? Side::at : (s == sign_hi ? Side::above : Side::below);
+  }
+  /// The sign of g at the double t (0 or t_max).
+  int resolved_sign_at(double t) {
+    exact_used_ = false;
+    const int s = fine_sign_at(t);
+    verdict_exact_ = verdict_exact_ || exact_used_;
+    return s;
+  }
+  Inclusion inclusion_over(const Interval& T) const {
+    const Boxes x = positions_over(paths_, T);
+    return type_ == QueryType::vertex_face ? vertex_face_inclusion(x) : edge_edge_inclusion(x);
+  }
+  bool discarded(const Interval& T) const {
+    const Boxes x = positions_over(paths_, T);
+    if (boxes_apart(x, paths_.first_side_count)) return true;
+    const Inclusion i =
+        type_ == QueryType::vertex_face ? vertex_face_inclusion(x) : edge_edge_inclusion(x);
+    return i == Inclusion::excluded;
+  }
+  bool toi_final(const Bracket& b) const {
+    return tightest(b) || (toi_width_ > 0 && certainly_within_width(b.lo, b.hi, toi_width_));
+  }
+  static void classify(Bracket& b, double t, Side s) {
+    if (s == Side::below) b.lo = t;
+    if (s == Side::above) b.hi = t;
+    if (s == Side::at) b.lo = b.hi = t;
+  }
+  bool narrow_by_intervals(Bracket& b) const;
+  void narrow_finely(Bracket& b, bool to_tightest);
+  RootVerdict decide_root(Bracket& b);
+  CcdResult contact(const Bracket& b) const {
+    CcdResult r;
+    r.collides = true;
+    r.toi_lo = b.lo;
+    r.toi_hi = b.hi;
+    r.decided_by = verdict_exact_ ? Stage::exact_at_double
+                                  : (toi_exact_ ? Stage::filter_exact_toi : Stage::filter);
+    return r;
+  }
+
+  const Quintic& g_;
+  const Guide guide_;
+  const IntervalPaths& paths_;
+  const QueryType type_;
+  const double t_max_, toi_width_;
+  RigidExactSigns& exact_;
+#if EXACTCCD_EXTENDED_INTERVAL
+  ExtendedSigns extended_;
+#endif
+  bool exact_used_ = false;     // exact signs consulted by the current narrowing
+  bool verdict_exact_ = false;  // exact signs decided part of the verdict
+  bool toi_exact_ = false;      // exact signs tightened the reported TOI
+};
+
+/// Narrows b towards the tightest pair with interval signs only: a guess by the guide, probes
+/// at growing distances from it on each side where r may lie, then bisection in bit order; stops
+/// at the first uncertain sign of the bisection. True when the tightest pair (or r) is reached.
+bool RootSearch::narrow_by_intervals(Bracket& b) const {
+  if (tightest(b)) return true;
+  std::uint64_t below = order_bits(b.lo), above = order_bits(b.hi);
+  auto probe = [&](std::uint64_t x) {
+    const double t = double_of(x);
+    const Side s = side_of(t, b.sign_hi);
+    classify(b, t, s);
+    if (s == Side::below) below = x;
+    if (s == Side::above) above = x;
+    return s;
+  };
+  const std::uint64_t guessed = order_bits(guide_.root(b.lo, b.hi, b.sign_hi));
+  const std::uint64_t guess = std::min(std::max(guessed, below + 1), above - 1);
+  const Side first = probe(guess);
+  if (first == Side::at) return true;
+  // The first distance: the band around r where enclosures as wide as the guide's contain 0.
+  const double t = double_of(guess);
+  const double spacing = std::fabs(double_of(guess + 1) - t);
+  const double band = guide_.width(t) / std::fabs(guide_.slope(t)) / spacing;
+  const std::uint64_t step0 =
+      band >= 1 && band < 0x1p60 ? static_cast<std::uint64_t>(band) + 1 : std::uint64_t{1};
+  auto grown = [](std::uint64_t step) { return step < (std::uint64_t{1} << 62) ? 2 * step : step; };
+  constexpr int kWalkProbes = 6;
+  if (first != Side::above) {  // r may lie above the guess
+    std::uint64_t from = guess, step = step0;
+    for (int n = 0; n < kWalkProbes && from + 1 < above; ++n, step = grown(step)) {
+      const std::uint64_t x = step < above - from ? from + step : from + (above - from) / 2;
+      const Side s = probe(x);
+      if (s == Side::at) return true;
+      if (s == Side::above) break;
+      from = x;
+    }
+  }
+  if (first != Side::below) {  // r may lie below the guess
+    std::uint64_t from = guess, step = step0;
+    for (int n = 0; n < kWalkProbes && below + 1 < from; ++n, step = grown(step)) {
+      const std::uint64_t x = step < from - below ? from - step : from - (from - below) / 2;
+      const Side s = probe(x);
+      if (s == Side::at) return true;
+      if (s == Side::below) break;
+      from = x;
+    }
+  }
+  while (above - below >= 2) {
+    const Side s = probe(below + (above - below) / 2);
+    if (s == Side::at) return true;
+    if (s == Side::unknown) return false;
+  }
+  return true;
+}
+
+/// Bisection in bit order to the tightest pair (or, unless to_tightest, to the reported TOI's
+/// width when toi_width > 0), each sign from the double or extended intervals when certain,
+/// else exact.
+void RootSearch::narrow_finely(Bracket& b, bool to_tightest) {
+  auto done = [&] { return to_tightest ? tightest(b) : toi_final(b); };
+#if EXACTCCD_EXTENDED_INTERVAL
+  // First the double nearest the extended guide's root and its neighbour towards r: with the
+  // guide as accurate as the extended enclosures, usually the tightest pair at once.
+  if (!done()) {
+    const double guess = extended_.root_guess(b.lo, b.hi, b.sign_hi);
+    const Side s = fine_side_of(guess, b.sign_hi);
+    classify(b, guess, s);
+    if (!done() && s != Side::at) {
+      const std::uint64_t x = order_bits(guess);
+      const double next = double_of(s == Side::below ? x + 1 : x - 1);
+      if (next > b.lo && next < b.hi) classify(b, next, fine_side_of(next, b.sign_hi));
+    }
+  }
+#endif
+  double mid;
+  while (!done() && predicates::middle_double(b.lo, b.hi, &mid))
+    classify(b, mid, fine_side_of(mid, b.sign_hi));
+}
+
+/// Decides whether the only root r of the bracket is a contact, and narrows the bracket to the
+/// reported TOI when it is.
+RootSearch::RootVerdict RootSearch::decide_root(Bracket& b) {
+  const bool at_tightest = narrow_by_intervals(b);
+  Inclusion inclusion = inclusion_over(Interval(b.lo, b.hi));
+  if (inclusion == Inclusion::unknown && !at_tightest) {
+    exact_used_ = false;
+    narrow_finely(b, true);
+    verdict_exact_ = verdict_exact_ || exact_used_;
+    inclusion = inclusion_over(Interval(b.lo, b.hi));
+  }
+  if (inclusion == Inclusion::excluded) return RootVerdict::no_contact;
+  if (inclusion == Inclusion::unknown) return RootVerdict::undecided;
+  if (!toi_final(b)) {
+    exact_used_ = false;
+    narrow_finely(b, false);
+    toi_exact_ = exact_used_;
+  }
+  return RootVerdict::contact;
+}
+
+/// The strict sign every coefficient certainly has, or 0.
+int sign_of_all(const Bernstein<Interval, 5>& b) {
+  const int s = certain_strict_sign(b[0]);
+  for (int i = 1; i <= 5 && s != 0; ++i)
+    if (!certainly_has_sign(b[i], s)) return 0;
+  return s;
+}
+
+/// The derivative's Bernstein coefficients 5 (b[i+1] - b[i]) all of one certain strict sign.
+bool certainly_monotone(const Bernstein<Interval, 5>& b) {
+  const int d = certain_strict_sign(b[1] - b[0]);
+  if (d == 0) return false;
+  for (int i = 1; i < 5; ++i)
+    if (!certainly_has_sign(b[i + 1] - b[i], d)) return false;
+  return true;
+}
+
+std::optional<CcdResult> RootSearch::run() {
+  // g may vanish identically (coplanar throughout): every root then, for the exact path.
+  bool nonzero = false;
+  for (const Interval& c : g_.c) nonzero = nonzero || certain_strict_sign(c) != 0;
+  if (!nonzero) return std::nullopt;
+
+  // The signs of g at 0 and t_max, resolved when a node first needs them (2: not yet).
+  int sign_start = 2, sign_end = 2;
+  Node stack[kMaxDepth + 2];
+  int top = 0;
+  stack[top++] = Node{bernstein_of(g_, Interval(t_max_)), 0.0, 1.0, 0};
+  while (top > 0) {
+    const Node node = stack[--top];
+    if (sign_of_all(node.b) != 0) continue;  // no coplanar instant in the node
+    const Interval T = Interval(t_max_) * Interval(node.u0, node.u1);
+    int s_lo = certain_strict_sign(node.b[0]), s_hi = certain_strict_sign(node.b[5]);
+    if (node.u0 == 0.0) {
+      if (sign_start == 2) {
+        sign_start = resolved_sign_at(0.0);
+        if (sign_start == 0) {  // coplanar at s = 0: a contact there is the first one
+          const Inclusion at_start = inclusion_over(Interval(0.0));
+          if (at_start == Inclusion::unknown) return std::nullopt;
+          if (at_start == Inclusion::included) return contact(Bracket{0.0, 0.0, 1});
+        }
+      }
+      s_lo = sign_start;
+    }
+    if (node.u1 == 1.0) {
+      if (sign_end == 2) sign_end = resolved_sign_at(t_max_);
+      s_hi = sign_end;
+    }
+    const bool monotone = certainly_monotone(node.b);
+    if (monotone && node.u0 == 0.0 && s_lo == 0) continue;  // its only root: s = 0, no contact
+    if (monotone && node.u1 == 1.0 && s_hi == 0) {          // its only root: s = t_max
+      const Inclusion at_end = inclusion_over(Interval(t_max_));
+      if (at_end == Inclusion::unknown) return std::nullopt;
+      if (at_end == Inclusion::included) return contact(Bracket{t_max_, t_max_, 1});
+      continue;
+    }
+    if (monotone && s_lo != 0 && s_hi == -s_lo) {
+      // Exactly one root, simple, in the node; re-certified on the doubles around it.
+      const double lo = T.inf(), hi = T.sup();
+      const int c_lo = node.u0 == 0.0 ? s_lo : certain_strict_sign(predicates::evaluate(g_, Interval(lo)));
+      const int c_hi = node.u1 == 1.0 ? s_hi : certain_strict_sign(predicates::evaluate(g_, Interval(hi)));
+      const int d = certain_strict_sign(predicates::evaluate(predicates::derivative(g_), T));
+      if (c_lo != 0 && c_hi == -c_lo && d != 0) {
+        Bracket b{lo, hi, c_hi};
+        switch (decide_root(b)) {
+          case RootVerdict::contact: return contact(b);
+          case RootVerdict::no_contact: continue;
+          case RootVerdict::undecided: return std::nullopt;
+        }
+      }
+    }
+    if (discarded(T)) continue;  // disjoint boxes, or no contact at any s of the node
+    if (node.depth == kMaxDepth) return std::nullopt;
+    Node left, right;
+    de_casteljau_halves(node.b, left.b, right.b);
+    const double mid = (node.u0 + node.u1) / 2;  // dyadic: exact
+    left.u0 = node.u0, left.u1 = mid, left.depth = node.depth + 1;
+    right.u0 = mid, right.u1 = node.u1, right.depth = node.depth + 1;
+    stack[top++] = right;
+    stack[top++] = left;
+  }
+  CcdResult none;
+  none.decided_by = verdict_exact_ ? Stage::exact_at_double : Stage::filter;
+  return none;
+}
+
 }  // namespace
 
-std::optional<CcdResult> rigid_no_contact_filter(const DoubleRigidQuery& q,
-                                                 const CcdOptions& options) {
+std::optional<CcdResult> rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
+                                          RigidExactSigns& exact) {
   const RoundingGuard upward;
+  const int k = normalising_exponent(query);
+  const DoubleRigidQuery q = k == 0 ? query : scaled(query, k);
   const IntervalPaths paths = interval_paths(q);
-  const int n0 = paths.first_side_count;
-  // Points on the common denominator W = w_0 w_1 > 0 (rigid_motion.hpp): the coplanarity
-  // determinant has the sign of the true one at every s.
-  std::array<predicates::RigidPoint<Interval>, 4> y;
-  for (int i = 0; i < 4; ++i)
-    y[i] = predicates::on_common_denominator(paths.numerator[i],
-                                             paths.denominator[i < n0 ? 1 : 0]);
-  const auto f = q.type == QueryType::vertex_face
-                     ? predicates::coplanarity_determinant(y[0], y[1], y[2], y[3])
-                     : predicates::coplanarity_determinant(y[3], y[0], y[1], y[2]);
-  bool only_culled = true;
-  // Piece ends k t_max / kPieces rounded outwards (upward rounding: -((-x)) rounds down).
-  for (int k = 0; k < kPieces; ++k) {
-    const double lo = k == 0 ? 0.0 : -((-options.t_max * k) / kPieces);
-    const double hi = k + 1 == kPieces ? options.t_max : (options.t_max * (k + 1)) / kPieces;
-    const Interval piece(lo, hi);
-    std::array<Vec3<Interval>, 4> box;
-    for (int i = 0; i < 4; ++i)
-      box[i] = box_over(paths.numerator[i], paths.denominator[i < n0 ? 0 : 1], piece);
-    if (boxes_apart(&box[0], n0, &box[n0], 4 - n0)) continue;
-    only_culled = false;
-    const Interval value = predicates::evaluate(f, piece);
-    if (certified_sign(value) == CertifiedSign::positive ||
-        certified_sign(value) == CertifiedSign::negative)
-      continue;
-    return std::nullopt;
+  if (boxes_apart(positions_over(paths, Interval(0.0, options.t_max)), paths.first_side_count)) {
+    CcdResult r;
+    r.decided_by = Stage::culling;
+    return r;
   }
-  CcdResult r;
-  r.decided_by = only_culled ? Stage::culling : Stage::filter;
-  return r;
+  const Quintic g = coplanarity_over<Interval>(q);
+  return RootSearch(g, q, paths, options, exact).run();
 }
 
 }  // namespace exactccd::filters

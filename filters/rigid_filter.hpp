@@ -1,6 +1,9 @@
-// Certified filters of rigid (and per-vertex linear) queries: on pieces of [0, t_max], interval
-// boxes of each primitive's swept arc (culling) and an interval enclosure of the coplanarity
-// polynomial that excludes pieces without a root. Each decides "no contact" or nothing.
+// The certified floating-point path of rigid (and per-vertex linear) queries: the reduced
+// coplanarity polynomial g (degree <= 5, core/predicates/rigid_coplanarity.hpp) in interval
+// arithmetic, its roots on [0, t_max] isolated earliest first by Bernstein subdivision, the
+// inclusion tests on interval boxes of the positions over each root's bracket, and the bracket
+// narrowed to the TOI by certified signs at doubles. Exact signs of g at doubles are consulted
+// where the intervals cannot tell; anything else undecided is left to the exact path.
 // PROOF: proofs/rigid_ccd.md#filters
 #pragma once
 
@@ -26,10 +29,24 @@ struct DoubleRigidQuery {
   std::array<DoubleSide, 2> side;
 };
 
-/// A result with Stage::culling or Stage::filter when the filters prove that the primitives
-/// never meet on [0, options.t_max]; nothing otherwise (never a contact: contacts go to the
-/// exact path). Sets and restores its own rounding mode; allocates nothing.
-std::optional<CcdResult> rigid_no_contact_filter(const DoubleRigidQuery& query,
-                                                 const CcdOptions& options);
+/// Exact signs of the query's reduced coplanarity polynomial g (or of any positive multiple of
+/// it) at doubles, consulted only where interval signs are uncertain. Must not depend on the
+/// rounding mode.
+class RigidExactSigns {
+ public:
+  /// The exact sign (-1, 0, +1) of g at the double s in [0, t_max].
+  virtual int coplanarity_sign_at(double s) = 0;
+
+ protected:
+  ~RigidExactSigns() = default;
+};
+
+/// The verdict and TOI of the query when the filters decide it (Stage::culling, filter,
+/// filter_exact_toi or exact_at_double), equal to the exact path's for toi_width = 0 (the
+/// tightest pair of doubles around the first contact); nothing when they cannot (then the
+/// exact path decides). Sets and restores its own rounding mode; allocates nothing itself
+/// (`exact` may).
+std::optional<CcdResult> rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
+                                          RigidExactSigns& exact);
 
 }  // namespace exactccd::filters

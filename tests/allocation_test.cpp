@@ -1,4 +1,5 @@
-// The culling and filter stages of the default path make no heap allocation: this program
+// The culling and filter stages of the default path make no heap allocation (rigid queries
+// included): this program
 // replaces every global operator new / delete with counting versions and routes GMP's memory
 // functions through counters as well, then checks that every query decided by Stage::culling or
 // Stage::filter allocated nothing. The exact stages at double times (filter_exact_toi,
@@ -19,11 +20,13 @@
 #include <vector>
 
 #include "corpus/random_queries.hpp"
+#include "corpus/rigid_queries.hpp"
 #include "exact/exact_ccd.hpp"
 #include "exact/integer_query.hpp"
 #include "exact/rational.hpp"
 #include "exact/small_polynomial.hpp"
 #include "exactccd/query_file.hpp"
+#include "exactccd/rigid.hpp"
 #include "tests/sample_double_queries.hpp"
 #include "tests/test_scale.hpp"
 
@@ -363,6 +366,85 @@ TEST(Allocation, ExactStageAtBracketsDoesNotAllocateWithoutGmpSteps) {
   for (const std::string& o : offenders) ADD_FAILURE() << o;
   EXPECT_GT(fixed, scaled_count(5000));
   EXPECT_GT(gmp_allocating, 0u) << "GMP steps must be seen allocating, or the counter is blind";
+}
+
+/// Rigid queries (exactccd/rigid.hpp): those decided by culling, the interval filters (double
+/// and extended intervals) and exact signs at doubles (stack dyadics) allocate nothing; the
+/// exact path does (GMP rationals). The contact time of a pure rotation is computed with MPFR,
+/// which allocates: those queries are counted apart, and must be seen allocating.
+/// PROOF: proofs/rigid_ccd.md#filter-tests
+TEST(Allocation, RigidFilterStagesAllocateNothing) {
+  const std::uint64_t seed = seed_from_environment(kDefaultSeed);
+  const std::size_t n = scaled_count(120, scale_from_environment());
+  std::uint64_t queries[kStageCount] = {}, allocating[kStageCount] = {}, rotation_times = 0,
+                rotation_times_allocating = 0;
+  std::vector<std::string> offenders;
+  auto turns = [](const SideMotion& m) {
+    return m.kind == PathKind::rigid && !m.rigid.cayley.isZero(0);
+  };
+  auto record = [&](const RigidCcdResult& r, bool rotates, std::uint64_t count,
+                    const std::string& what) {
+    const int s = static_cast<int>(r.ccd.decided_by);
+    if (r.ccd.collides && r.has_time && rotates) {
+      ++rotation_times;  // the time of a rotation: MPFR
+      rotation_times_allocating += count > 0;
+      return;
+    }
+    ++queries[s];
+    allocating[s] += count > 0;
+    if (count > 0 && r.ccd.decided_by != Stage::exact && offenders.size() < 5)
+      offenders.push_back(std::to_string(count) + " allocation(s), " + what);
+  };
+  int group = 0;
+  for (rigid_queries::OtherMotion other :
+       {rigid_queries::OtherMotion::rigid, rigid_queries::OtherMotion::linear,
+        rigid_queries::OtherMotion::rest})
+    for (bool pure : {false, true}) {
+      rigid_queries::RigidQueryOptions o;
+      o.other = other;
+      o.pure_rotation = pure;
+      ++group;
+      const auto vf = rigid_queries::random_rigid_vertex_face(seed + group, n, o);
+      const auto ee = rigid_queries::random_rigid_edge_edge(seed + group, n, o);
+      for (std::size_t i = 0; i < n; ++i) {
+        RigidVertexFaceQuery far = vf[i];  // moved away: culled
+        far.p += Eigen::Vector3d(0, 0, 100);
+        if (far.vertex.kind == PathKind::linear)
+          far.vertex.linear_end[0] += Eigen::Vector3d(0, 0, 100);
+        else
+          far.vertex.rigid.pivot += Eigen::Vector3d(0, 0, 100);
+        const RigidVertexFaceQuery* both[2] = {&vf[i], &far};
+        for (const RigidVertexFaceQuery* q : both) {
+          const std::uint64_t before = g_allocations;
+          const RigidCcdResult r = vertex_face_ccd(*q);
+          const std::uint64_t count = g_allocations - before;
+          record(r, turns(q->vertex) || turns(q->face), count,
+                 "vertex-face group " + std::to_string(group) + " " + std::to_string(i));
+        }
+        const std::uint64_t before = g_allocations;
+        const RigidCcdResult r = edge_edge_ccd(ee[i]);
+        const std::uint64_t count = g_allocations - before;
+        record(r, turns(ee[i].edge_a) || turns(ee[i].edge_b), count,
+               "edge-edge group " + std::to_string(group) + " " + std::to_string(i));
+      }
+    }
+  std::printf("rigid queries (%llu with the time of a rotation, MPFR, not counted; %llu of them "
+              "allocating):\n",
+              static_cast<unsigned long long>(rotation_times),
+              static_cast<unsigned long long>(rotation_times_allocating));
+  for (Stage s : default_path_stages())
+    std::printf("  %-17s %7llu queries, %7llu allocating\n", to_string(s),
+                static_cast<unsigned long long>(queries[static_cast<int>(s)]),
+                static_cast<unsigned long long>(allocating[static_cast<int>(s)]));
+  for (const std::string& o : offenders) ADD_FAILURE() << o;
+  for (Stage s : {Stage::culling, Stage::filter, Stage::filter_exact_toi, Stage::exact_at_double})
+    EXPECT_EQ(allocating[static_cast<int>(s)], 0u) << to_string(s);
+  // The stages under test are reached, and MPFR's allocations are seen (the counter is not
+  // blind to the library's).
+  EXPECT_GT(queries[static_cast<int>(Stage::culling)], n);
+  EXPECT_GT(queries[static_cast<int>(Stage::filter)], n);
+  EXPECT_GT(queries[static_cast<int>(Stage::filter_exact_toi)], n / 10);
+  EXPECT_GT(rotation_times_allocating, 0u);
 }
 
 }  // namespace

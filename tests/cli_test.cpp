@@ -553,6 +553,54 @@ TEST_F(CliTest, BenchRejectsBadCommandLine) {
   expect_bad_input(run({"bench", missing.string()}), {missing.string()});
 }
 
+TEST_F(CliTest, BenchRigidTimesBothModesWithoutDisagreement) {
+  const RunResult r = run({"bench", "--rigid", "--rigid-count", "60", "--seed", "3",
+                           "--repetitions", "1", "--json"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = parse_json(r);
+  ASSERT_TRUE(j.is_object()) << r.out;
+  EXPECT_EQ(j.value("queries", 0u), 60u);
+  EXPECT_EQ(j.value("vertex_face", 0u), 30u);
+  EXPECT_EQ(j.value("edge_edge", 0u), 30u);
+  EXPECT_EQ(j.value("seed", 0u), 3u);
+  EXPECT_EQ(j.value("disagreements", 1u), 0u);
+  EXPECT_TRUE(j.at("mean_ratio_default_over_exact").is_number());
+  const nlohmann::json& modes = j.at("modes");
+  ASSERT_EQ(modes.size(), 2u) << r.out;
+  EXPECT_EQ(modes[0].value("mode", ""), "default");
+  EXPECT_EQ(modes[1].value("mode", ""), "exact");
+  for (const nlohmann::json& m : modes) {
+    EXPECT_GT(m.value("mean_ns", 0.0), 0.0);
+    EXPECT_TRUE(m.at("median_ns").is_number());
+    double shares = 0;
+    for (const auto& share : m.at("stage_share").items()) shares += share.value().get<double>();
+    EXPECT_NEAR(shares, 1.0, 1e-12);
+  }
+  // Both modes find the same contacts (some, not all), and the default mode decides most of
+  // them in floating point.
+  EXPECT_EQ(modes[0].value("contacts", 0u), modes[1].value("contacts", 1u));
+  EXPECT_GT(modes[0].value("contacts", 0u), 0u);
+  EXPECT_LT(modes[0].value("contacts", 60u), 60u);
+  EXPECT_EQ(modes[1].at("stage_share").value("exact", 0.0), 1.0);
+  EXPECT_GT(modes[0].at("stage_share").value("filter", 0.0), 0.5);
+
+  const RunResult text = run({"bench", "--rigid", "--rigid-count", "12", "--repetitions", "1",
+                              "--modes", "default"});
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("12 queries (6 vertex-face, 6 edge-edge"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("disagreements between modes (verdict, toi_lo, toi_hi): 0"),
+            std::string::npos)
+      << text.out;
+}
+
+TEST_F(CliTest, BenchRigidRejectsBadCommandLine) {
+  expect_bad_input(run({"bench", "--rigid", kSampleFile.string()}), {"--rigid", "PATH"});
+  expect_bad_input(run({"bench", "--rigid", "--modes", "float_only"}), {"float_only"});
+  expect_bad_input(run({"bench", "--rigid-count", "10"}), {"--rigid-count", "--rigid"});
+  expect_bad_input(run({"bench", "--rigid", "--rigid-count", "0"}), {"--rigid-count"});
+  expect_bad_input(run({"bench", "--rigid", "--resolution", "4"}), {"--resolution"});
+}
+
 // ---- grade: results ------------------------------------------------------------------------
 
 TEST_F(CliTest, GradeAnswersFromTruthColumnAreAllCorrect) {

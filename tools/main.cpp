@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bench_command.hpp"
+#include "rigid_bench_command.hpp"
 #include "check_command.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/version.hpp"
@@ -194,7 +195,8 @@ int main(int argc, char** argv) {
   // One comma-separated argument each (as the study's --widths), so that a PATH after them stays
   // a PATH.
   std::vector<std::string> bench_modes = mode_names();
-  bench->add_option("--modes", bench_modes, "Comma-separated modes: float_only,default,exact")
+  CLI::Option* bench_modes_option =
+      bench->add_option("--modes", bench_modes, "Comma-separated modes: float_only,default,exact")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->check(CLI::IsMember(mode_names()))
@@ -227,6 +229,17 @@ int main(int argc, char** argv) {
                   "Read --min-separation as factors of each data set's size (the diagonal of "
                   "the box of all its coordinates)");
   bench->add_option("PATH", bench_options.paths, "CSV files or folders, one data set each");
+  RigidBenchOptions rigid_bench_options;
+  bool bench_rigid = false;
+  bench->add_flag("--rigid", bench_rigid,
+                  "Time the rigid-body modes (default, exact) on seeded random rigid pairs near "
+                  "contact instead (--rigid-count, --seed, --modes, --repetitions, --json); exit "
+                  "status 1 when the modes' answers differ");
+  CLI::Option* bench_rigid_count =
+      bench->add_option("--rigid-count", rigid_bench_options.count, "Rigid pairs (with --rigid)")
+          ->check(numeric_text(true))
+          ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
+          ->capture_default_str();
 
   // `exactccd study` runs the study program of the benchmarks (bench/study): see forward_to_study.
   app.add_subcommand(
@@ -327,6 +340,22 @@ int main(int argc, char** argv) {
       simulate_options.exact_truth = simulate_truth == "exact";
       return run_simulate(simulate_options);
     }
+    if (bench->parsed() && bench_rigid) {
+      for (CLI::Option* option : {bench_resolution, bench_steps})
+        if (option->count() > 0) throw UsageError(option->get_name() + " needs --simulation");
+      if (bench_options.simulation || !bench_options.paths.empty())
+        throw UsageError("--rigid runs its own queries (no PATH, no --simulation)");
+      rigid_bench_options.seed = bench_options.simulation_config.seed;
+      rigid_bench_options.repetitions = bench_options.repetitions;
+      rigid_bench_options.json = bench_options.json;
+      if (bench_modes_option->count() > 0) {  // else default, exact
+        rigid_bench_options.modes.clear();
+        for (const std::string& name : bench_modes)
+          rigid_bench_options.modes.push_back(*parse_mode_name(name));
+      }
+      return run_rigid_bench(rigid_bench_options);
+    }
+    if (bench_rigid_count->count() > 0) throw UsageError("--rigid-count needs --rigid");
     if (bench->parsed()) {
       for (CLI::Option* option : {bench_resolution, bench_steps, bench_seed})
         if (option->count() > 0 && !bench_options.simulation)

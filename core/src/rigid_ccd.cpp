@@ -7,12 +7,17 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "core/predicates/fp_environment.hpp"
 #include "core/src/ccd_options_check.hpp"
 #include "exact/rigid_ccd.hpp"
+#include "filters/interval.hpp"
+#include "core/src/rigid_exact_signs.hpp"
 #include "filters/rigid_filter.hpp"
 
 namespace exactccd {
@@ -26,9 +31,11 @@ class RoundToNearest : predicates::FpEnvironmentGuard {
   RoundToNearest() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
 };
 
-Vec3<double> checked(const Eigen::Vector3d& x, const char* name) {
+/// x as doubles; throws naming "<side>.<field>" (the message is built only then).
+Vec3<double> checked(const Eigen::Vector3d& x, const char* side, const char* field = nullptr) {
   if (!x.allFinite())
-    throw std::invalid_argument(std::string("exactccd: non-finite coordinate in ") + name);
+    throw std::invalid_argument(std::string("exactccd: non-finite coordinate in ") + side +
+                                (field ? std::string(".") + field : std::string()));
   return {x.x(), x.y(), x.z()};
 }
 
@@ -36,79 +43,72 @@ Vec3<exact::Rational> rational(const Vec3<double>& x) {
   return {exact::Rational(x.x), exact::Rational(x.y), exact::Rational(x.z)};
 }
 
-/// Both forms of one query: doubles for the filters, rationals (the same values) for the exact
-/// path; built once, after every input was checked to be finite.
-struct CheckedQuery {
-  filters::DoubleRigidQuery doubles;
-  exact::RationalRigidQuery rationals;
-};
-
-void add_side(const SideMotion& side, int vertices, const char* name, CheckedQuery* q,
-              int index) {
-  filters::DoubleSide& d = q->doubles.side[index];
-  exact::RationalSide& r = q->rationals.side[index];
-  d.rigid = r.rigid = side.kind == PathKind::rigid;
-  const std::string n(name);
-  if (d.rigid) {
-    d.motion = {checked(side.rigid.pivot, (n + ".rigid.pivot").c_str()),
-                checked(side.rigid.translation, (n + ".rigid.translation").c_str()),
-                checked(side.rigid.cayley, (n + ".rigid.cayley").c_str())};
-    r.motion = {rational(d.motion.pivot), rational(d.motion.translation),
-                rational(d.motion.cayley)};
+void add_side(const SideMotion& side, int vertices, const char* name,
+              filters::DoubleSide* out) {
+  out->rigid = side.kind == PathKind::rigid;
+  if (out->rigid) {
+    out->motion = {checked(side.rigid.pivot, name, "rigid.pivot"),
+                   checked(side.rigid.translation, name, "rigid.translation"),
+                   checked(side.rigid.cayley, name, "rigid.cayley")};
   } else {
     if (side.kind != PathKind::linear)
-      throw std::invalid_argument("exactccd: unknown PathKind in " + n);
-    for (int i = 0; i < vertices; ++i) {
-      d.end[i] = checked(side.linear_end[i], (n + ".linear_end").c_str());
-      r.end[i] = rational(d.end[i]);
-    }
+      throw std::invalid_argument(std::string("exactccd: unknown PathKind in ") + name);
+    for (int i = 0; i < vertices; ++i) out->end[i] = checked(side.linear_end[i], name, "linear_end");
   }
 }
 
-void set_start(CheckedQuery* q, int i, const Eigen::Vector3d& x, const char* name) {
-  q->doubles.start[i] = checked(x, name);
-  q->rationals.start[i] = rational(q->doubles.start[i]);
-}
-
-CheckedQuery checked_query(const RigidVertexFaceQuery& query) {
-  CheckedQuery q;
-  q.doubles.type = q.rationals.type = QueryType::vertex_face;
-  set_start(&q, 0, query.p, "p");
-  set_start(&q, 1, query.a, "a");
-  set_start(&q, 2, query.b, "b");
-  set_start(&q, 3, query.c, "c");
-  add_side(query.vertex, 1, "vertex", &q, 0);
-  add_side(query.face, 3, "face", &q, 1);
+/// The query in doubles, every input checked to be finite (no heap allocation unless it throws).
+filters::DoubleRigidQuery checked_query(const RigidVertexFaceQuery& query) {
+  filters::DoubleRigidQuery q;
+  q.type = QueryType::vertex_face;
+  q.start = {checked(query.p, "p"), checked(query.a, "a"), checked(query.b, "b"),
+             checked(query.c, "c")};
+  add_side(query.vertex, 1, "vertex", &q.side[0]);
+  add_side(query.face, 3, "face", &q.side[1]);
   return q;
 }
 
-CheckedQuery checked_query(const RigidEdgeEdgeQuery& query) {
-  CheckedQuery q;
-  q.doubles.type = q.rationals.type = QueryType::edge_edge;
-  set_start(&q, 0, query.ea0, "ea0");
-  set_start(&q, 1, query.ea1, "ea1");
-  set_start(&q, 2, query.eb0, "eb0");
-  set_start(&q, 3, query.eb1, "eb1");
-  add_side(query.edge_a, 2, "edge_a", &q, 0);
-  add_side(query.edge_b, 2, "edge_b", &q, 1);
+filters::DoubleRigidQuery checked_query(const RigidEdgeEdgeQuery& query) {
+  filters::DoubleRigidQuery q;
+  q.type = QueryType::edge_edge;
+  q.start = {checked(query.ea0, "ea0"), checked(query.ea1, "ea1"), checked(query.eb0, "eb0"),
+             checked(query.eb1, "eb1")};
+  add_side(query.edge_a, 2, "edge_a", &q.side[0]);
+  add_side(query.edge_b, 2, "edge_b", &q.side[1]);
   return q;
 }
 
-/// |q|^2 of a side when it turns about a fixed axis or stands still (0), -1 when it moves
-/// otherwise (a translating pivot or a moving linear vertex).
-exact::Rational rotation_rate_squared(const exact::RationalRigidQuery& q, int index) {
-  const exact::RationalSide& side = q.side[index];
+bool is_zero(const Vec3<double>& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+/// How a side moves, for the time of pure rotations: at rest, turning about a fixed axis
+/// (pivot fixed, q != 0), or otherwise (a translating pivot or a moving linear vertex).
+enum class SideTurn : std::uint8_t { rest, turning, moving };
+
+SideTurn side_turn(const filters::DoubleRigidQuery& q, int index) {
+  const filters::DoubleSide& side = q.side[index];
   const int begin = index == 0 ? 0 : (q.type == QueryType::vertex_face ? 1 : 2);
   const int end = index == 0 ? begin + (q.type == QueryType::vertex_face ? 1 : 2) : 4;
   if (!side.rigid) {
     for (int i = begin; i < end; ++i)
       for (int k = 0; k < 3; ++k)
-        if (side.end[i - begin][k] != q.start[i][k]) return -1;
-    return 0;
+        if (side.end[i - begin][k] != q.start[i][k]) return SideTurn::moving;
+    return SideTurn::rest;
   }
-  for (int k = 0; k < 3; ++k)
-    if (sgn(side.motion.translation[k]) != 0) return -1;
-  return predicates::squared_norm(side.motion.cayley);
+  if (!is_zero(side.motion.translation)) return SideTurn::moving;
+  return is_zero(side.motion.cayley) ? SideTurn::rest : SideTurn::turning;
+}
+
+/// |a|^2 == |b|^2 exactly: told apart by interval enclosures when they differ by more than
+/// their rounding, else compared over the rationals.
+bool equal_squared_norms(const Vec3<double>& a, const Vec3<double>& b) {
+  {
+    const filters::RoundingGuard upward;
+    using filters::Interval;
+    const Interval na = predicates::squared_norm(Vec3<Interval>{a.x, a.y, a.z});
+    const Interval nb = predicates::squared_norm(Vec3<Interval>{b.x, b.y, b.z});
+    if (na.sup() < nb.inf() || nb.sup() < na.inf()) return false;
+  }
+  return predicates::squared_norm(rational(a)) == predicates::squared_norm(rational(b));
 }
 
 /// RAII for one MPFR number at 64 bits.
@@ -120,14 +120,22 @@ struct Mpfr {
   Mpfr& operator=(const Mpfr&) = delete;
 };
 
-/// A certified enclosure of t(s) = atan(s r) / atan(r) over s in [s_lo, s_hi], r = sqrt(rr) > 0:
+/// A certified enclosure of t(s) = atan(s r) / atan(r) over s in [s_lo, s_hi], r = |q| > 0:
 /// every operation rounded outwards by MPFR. PROOF: proofs/rigid_ccd.md#time-of-rotation
-std::pair<double, double> rotation_time(const exact::Rational& rr, double s_lo, double s_hi) {
+std::pair<double, double> rotation_time(const Vec3<double>& q, double s_lo, double s_hi) {
   Mpfr r_lo, r_hi, num, den;
-  mpfr_set_q(r_lo.x, rr.get_mpq_t(), MPFR_RNDD);
-  mpfr_sqrt(r_lo.x, r_lo.x, MPFR_RNDD);
-  mpfr_set_q(r_hi.x, rr.get_mpq_t(), MPFR_RNDU);
-  mpfr_sqrt(r_hi.x, r_hi.x, MPFR_RNDU);
+  // |q|^2 rounded down and up (each square and sum), then its square root likewise.
+  for (const mpfr_rnd_t rounding : {MPFR_RNDD, MPFR_RNDU}) {
+    mpfr_t& r = rounding == MPFR_RNDD ? r_lo.x : r_hi.x;
+    mpfr_set_d(r, q.x, rounding);
+    mpfr_sqr(r, r, rounding);
+    for (const double c : {q.y, q.z}) {
+      mpfr_set_d(num.x, c, rounding);
+      mpfr_sqr(num.x, num.x, rounding);
+      mpfr_add(r, r, num.x, rounding);
+    }
+    mpfr_sqrt(r, r, rounding);
+  }
   // Lower end: the smaller numerator over the larger denominator (both >= 0).
   mpfr_mul_d(num.x, r_lo.x, s_lo, MPFR_RNDD);
   mpfr_atan(num.x, num.x, MPFR_RNDD);
@@ -142,25 +150,27 @@ std::pair<double, double> rotation_time(const exact::Rational& rr, double s_lo, 
   return {std::max(lo, 0.0), hi};
 }
 
-RigidCcdResult with_time(const CcdResult& ccd, const exact::RationalRigidQuery& q) {
+RigidCcdResult with_time(const CcdResult& ccd, const filters::DoubleRigidQuery& q) {
   RigidCcdResult r;
   r.ccd = ccd;
-  const exact::Rational r0 = rotation_rate_squared(q, 0), r1 = rotation_rate_squared(q, 1);
-  const bool no_rotation = (q.side[0].rigid ? sgn(predicates::squared_norm(q.side[0].motion.cayley)) == 0
-                                             : true) &&
-                           (q.side[1].rigid ? sgn(predicates::squared_norm(q.side[1].motion.cayley)) == 0
-                                             : true);
-  if (no_rotation) {
+  const SideTurn turn[2] = {side_turn(q, 0), side_turn(q, 1)};
+  const bool rotates[2] = {q.side[0].rigid && !is_zero(q.side[0].motion.cayley),
+                           q.side[1].rigid && !is_zero(q.side[1].motion.cayley)};
+  if (!rotates[0] && !rotates[1]) {
     r.has_time = true;
     r.time_lo = ccd.toi_lo;
     r.time_hi = ccd.toi_hi;
     return r;
   }
-  if (sgn(r0) < 0 || sgn(r1) < 0) return r;
-  if (sgn(r0) > 0 && sgn(r1) > 0 && r0 != r1) return r;
+  if (turn[0] == SideTurn::moving || turn[1] == SideTurn::moving) return r;
+  if (turn[0] == SideTurn::turning && turn[1] == SideTurn::turning &&
+      !equal_squared_norms(q.side[0].motion.cayley, q.side[1].motion.cayley))
+    return r;
   r.has_time = true;
   if (!ccd.collides) return r;  // both stay +infinity
-  std::tie(r.time_lo, r.time_hi) = rotation_time(sgn(r0) > 0 ? r0 : r1, ccd.toi_lo, ccd.toi_hi);
+  const int turning = turn[0] == SideTurn::turning ? 0 : 1;
+  std::tie(r.time_lo, r.time_hi) =
+      rotation_time(q.side[turning].motion.cayley, ccd.toi_lo, ccd.toi_hi);
   return r;
 }
 
@@ -174,11 +184,13 @@ RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
   if (options.mode == Mode::float_only)
     throw std::invalid_argument(
         "exactccd: Mode::float_only has no rigid-motion test (use Mode::filtered or exact)");
-  const CheckedQuery q = checked_query(query);
-  if (options.mode == Mode::filtered)
-    if (std::optional<CcdResult> r = filters::rigid_no_contact_filter(q.doubles, options))
-      return with_time(*r, q.rationals);
-  return with_time(exact::rigid_ccd_exact(q.rationals, options), q.rationals);
+  const filters::DoubleRigidQuery q = checked_query(query);
+  if (options.mode == Mode::filtered) {
+    RigidExactSignsAtDoubles exact(q);
+    if (std::optional<CcdResult> r = filters::rigid_ccd_filter(q, options, exact))
+      return with_time(*r, q);
+  }
+  return with_time(exact::rigid_ccd_exact(rational_query(q), options), q);
 }
 
 }  // namespace

@@ -63,7 +63,11 @@ struct SideMotion {
   /// A side moved rigidly by `motion`.
   /// \param motion the body's motion.
   /// \return the side motion.
-  static SideMotion of(const RigidMotion& motion) { return SideMotion{PathKind::rigid, motion, {}}; }
+  static SideMotion of(const RigidMotion& motion) {
+    SideMotion side;  // linear_end zero (an explicit {} would leave the Eigen vectors unset)
+    side.rigid = motion;
+    return side;
+  }
 };
 
 /// Vertex p against the closed triangle (a, b, c), positions at s = 0, each side with its motion.

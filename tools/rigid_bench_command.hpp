@@ -1,0 +1,30 @@
+// `exactccd bench --rigid`: time per query of the rigid-body modes (default, exact) on seeded
+// random rigid pairs near contact (corpus/rigid_queries.hpp), with every mode's answers checked
+// against each other bit for bit.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "exactccd/types.hpp"
+
+namespace exactccd::cli {
+
+struct RigidBenchOptions {
+  /// Queries in all: half vertex-face, half edge-edge; of each, a third each with the second
+  /// body turning, moving linearly (a deformable mesh) and at rest.
+  std::size_t count = 20000;
+  std::uint64_t seed = 1;
+  std::vector<Mode> modes = {Mode::filtered, Mode::exact};
+  /// Batch passes per mode but exact; mean_ns is their median. Exact (milliseconds per query)
+  /// is timed by its single calls only.
+  int repetitions = 5;
+  bool json = false;
+};
+
+/// Runs the benchmark. Exit status 1 when two modes give different answers to a query (verdict,
+/// toi_lo or toi_hi), else 0. Throws UsageError for an empty query set or Mode::float_only.
+int run_rigid_bench(const RigidBenchOptions& options);
+
+}  // namespace exactccd::cli
