@@ -385,6 +385,8 @@ TEST(SceneRigid, ResultsDoNotDependOnThreadCount) {
 
 TEST(SceneRigid, SteppingRefitsTheArcBoxes) {
   // One scene, new motions each step: the same as a fresh scene each time (refit, not stale).
+  // Every other step a body starts from the pose the previous step ended in (end_positions,
+  // through the overload with positions).
   Rng rng(test_seed() + 5);
   Bodies bodies = random_bodies(rng, TurnStyle{60, false, 0.3});
   Scene scene = make_scene(bodies);
@@ -394,7 +396,12 @@ TEST(SceneRigid, SteppingRefitsTheArcBoxes) {
     for (MeshId b : {0u, 1u}) {
       bodies[b].motion = random_turn(rng, centre_of(bodies[b].start),
                                      TurnStyle{step % 2 ? 160.0 : 20.0, step % 3 == 0, 0.6});
-      scene.set_rigid_motion(b, bodies[b].motion);
+      if (step % 2) {
+        bodies[b].start = scene.end_positions(b);
+        scene.set_rigid_motion(b, bodies[b].start, bodies[b].motion);
+      } else {
+        scene.set_rigid_motion(b, bodies[b].motion);
+      }
     }
     const RigidReference ref = brute_force(bodies, CcdOptions{}, true);
     EXPECT_TRUE(same_full_contacts(scene.find_contacts().contacts, ref.contacts));
@@ -590,6 +597,20 @@ TEST(SceneRigid, BadInputThrows) {
       EXPECT_THROW(scene.set_rigid_motion(body, m), std::invalid_argument);
     }
   EXPECT_EQ(scene.rigid_motion(body).cayley, ok.cayley);  // a refused motion changes nothing
+  // The overload with new start positions.
+  Positions moved = box.start.array() + 0.5;
+  EXPECT_NO_THROW(scene.set_rigid_motion(body, moved, ok));
+  EXPECT_EQ(scene.start_positions(body), moved);
+  EXPECT_THROW(scene.set_rigid_motion(body, Positions(box.start.topRows(7)), ok),
+               std::invalid_argument);
+  Positions non_finite = box.start;
+  non_finite(4, 2) = HUGE_VAL;
+  EXPECT_THROW(scene.set_rigid_motion(body, non_finite, ok), std::invalid_argument);
+  EXPECT_THROW(scene.set_rigid_motion(moving, box.start, ok), std::invalid_argument);
+  RigidMotion nan_motion = ok;
+  nan_motion.pivot.x() = std::nan("");
+  EXPECT_THROW(scene.set_rigid_motion(body, box.start, nan_motion), std::invalid_argument);
+  EXPECT_EQ(scene.start_positions(body), moved);  // refused calls change nothing
   Positions bad_positions = box.start;
   bad_positions(2, 1) = std::nan("");
   EXPECT_THROW(scene.add_rigid_body(bad_positions, box.triangles), std::invalid_argument);

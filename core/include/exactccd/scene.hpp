@@ -222,6 +222,16 @@ class EXACTCCD_API Scene {
   /// \throws std::invalid_argument for an unknown id, a mesh that is not a rigid body, or a
   ///         non-finite field.
   void set_rigid_motion(MeshId body, const RigidMotion& motion);
+  /// The step's motion of a rigid body from new positions: its vertices are at `start` at
+  /// s = 0 (e.g. the pose the previous step ended in, rounded to doubles) and move with
+  /// `motion`. Later calls of the other overload keep these positions.
+  /// \param body a rigid body of this scene.
+  /// \param start the vertices at s = 0, one finite row per vertex (a rigid body stays rigid
+  ///        only when `start` is congruent to its earlier positions; that is not checked).
+  /// \param motion finite pivot, translation and Cayley vector.
+  /// \throws std::invalid_argument as the other overload, or for a wrong row count or
+  ///         non-finite positions.
+  void set_rigid_motion(MeshId body, const Positions& start, const RigidMotion& motion);
   /// The step's motion of a moving mesh: every vertex from start.row(i) to end.row(i). Throws
   /// std::invalid_argument for a static mesh or a rigid body, a wrong row count or non-finite
   /// coordinates.

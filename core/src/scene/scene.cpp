@@ -668,9 +668,12 @@ MeshId Scene::add_rigid_body(const Positions& positions, const Triangles& triang
   return id;
 }
 
-void Scene::set_rigid_motion(MeshId id, const RigidMotion& motion) {
-  impl_->mesh(id);
-  Mesh& m = impl_->meshes[id];
+namespace {
+
+/// The body's mesh for set_rigid_motion, after checking the id, the kind and the motion.
+Mesh& rigid_body_for_motion(std::vector<Mesh>& meshes, MeshId id, const RigidMotion& motion) {
+  if (id >= meshes.size()) throw std::invalid_argument("exactccd: no mesh " + std::to_string(id));
+  Mesh& m = meshes[id];
   if (!m.is_rigid)
     throw std::invalid_argument("exactccd: set_rigid_motion on mesh " + std::to_string(id) +
                                 ", which is not a rigid body (add it with add_rigid_body)");
@@ -678,11 +681,31 @@ void Scene::set_rigid_motion(MeshId id, const RigidMotion& motion) {
       !motion.cayley.allFinite())
     throw std::invalid_argument("exactccd: non-finite pivot, translation or cayley in the rigid "
                                 "motion of mesh " + std::to_string(id));
-  const FpGuard fp;  // the end positions (display only) the same whatever the caller's FP state
+  return m;
+}
+
+/// Sets the motion; the end positions (display only) the same whatever the caller's FP state.
+void apply_rigid_motion(Mesh& m, const RigidMotion& motion) {
+  const FpGuard fp;
   m.motion = motion;
   for (Eigen::Index v = 0; v < m.start.rows(); ++v)
     m.end.row(v) = position_at(motion, row(m.start, static_cast<std::int32_t>(v)), 1.0).transpose();
   for (Hierarchies& h : m.spans) h.stale = true;
+}
+
+}  // namespace
+
+void Scene::set_rigid_motion(MeshId id, const RigidMotion& motion) {
+  apply_rigid_motion(rigid_body_for_motion(impl_->meshes, id, motion), motion);
+}
+
+void Scene::set_rigid_motion(MeshId id, const Positions& start, const RigidMotion& motion) {
+  Mesh& m = rigid_body_for_motion(impl_->meshes, id, motion);
+  if (start.rows() != m.start.rows())
+    throw std::invalid_argument("exactccd: set_rigid_motion needs one row per vertex of the body");
+  check_positions(start, "the start positions");
+  m.start = start;
+  apply_rigid_motion(m, motion);
 }
 
 void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) {
