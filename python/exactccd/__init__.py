@@ -35,6 +35,7 @@ from ._exactccd import (
     exact_ccd,
     find_query_files,
     query_type_from_path,
+    rigid_turn,
 )
 from .query_files import (
     QueryData,
@@ -51,7 +52,7 @@ __all__ = [
     "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES", "QueryData",
     "STAGE_NAMES", "Scene", "SceneContact", "ScenePair", "SceneResult", "SceneStats",
     "edge_edge_ccd", "edge_edge_ccd_batch", "exact_ccd", "find_query_files",
-    "query_type_from_path", "read_query_file", "read_query_file_exact", "vertex_face_ccd",
+    "query_type_from_path", "read_query_file", "rigid_turn", "read_query_file_exact", "vertex_face_ccd",
     "vertex_face_ccd_batch", "write_query_file",
 ]
 

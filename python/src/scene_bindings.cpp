@@ -123,6 +123,17 @@ struct GuardedScene {
   }
 };
 
+Eigen::Vector3d vector_of(const py::handle& object, const char* what) {
+  const DoubleArray array = as_double_array(object, {3}, what);
+  return {array.data()[0], array.data()[1], array.data()[2]};
+}
+
+py::array vector_array(const Eigen::Vector3d& v) {
+  py::array_t<double> array(3);
+  std::copy(v.data(), v.data() + 3, array.mutable_data());
+  return array;
+}
+
 py::array rows_of(const std::array<Eigen::Vector3d, 8>& points) {
   Positions rows(8, 3);
   for (int r = 0; r < 8; ++r) rows.row(r) = points[r].transpose();
@@ -132,6 +143,16 @@ py::array rows_of(const std::array<Eigen::Vector3d, 8>& points) {
 }  // namespace
 
 void bind_scene(py::module_& m) {
+  m.def(
+      "rigid_turn",
+      [](const py::handle& axis, double angle) {
+        return vector_array(
+            RigidMotion::turn(Eigen::Vector3d::Zero(), vector_of(axis, "axis"), angle).cayley);
+      },
+      py::arg("axis"), py::arg("angle"),
+      "The Cayley vector of a turn by `angle` radians (|angle| < pi) about `axis` (non-zero): "
+      "tan(angle / 2) * axis / |axis|, rounded (RigidMotion::turn). ValueError otherwise.");
+
   py::class_<ScenePair>(m, "ScenePair",
                         "A vertex-face pair (vertex first_index of first_mesh, triangle "
                         "second_index of second_mesh) or an edge-edge pair (indices into "
@@ -156,10 +177,18 @@ void bind_scene(py::module_& m) {
       })
       .def("__repr__", &pair_repr);
 
-  py::class_<SceneContact>(m, "SceneContact", "A colliding pair and its certified TOI interval.")
+  py::class_<SceneContact>(m, "SceneContact",
+                           "A colliding pair and its certified TOI interval (in the step's "
+                           "parameter s; for a pair with a rigid body the motion parameter of "
+                           "its RigidMotion), and the contact time where defined.")
       .def_readonly("pair", &SceneContact::pair)
       .def_readonly("toi_lo", &SceneContact::toi_lo)
       .def_readonly("toi_hi", &SceneContact::toi_hi)
+      .def_readonly("has_time", &SceneContact::has_time,
+                    "Whether time_lo / time_hi enclose the contact time (always without a rigid "
+                    "body; for a rigid body, pure rotations of one rate or no rotation).")
+      .def_readonly("time_lo", &SceneContact::time_lo)
+      .def_readonly("time_hi", &SceneContact::time_hi)
       .def("__repr__", &contact_repr);
 
   py::class_<SceneStats>(m, "SceneStats")
@@ -220,6 +249,62 @@ void bind_scene(py::module_& m) {
             return g.run([&](Scene& s) { return s.add_static_mesh(positions, triangles); });
           },
           py::arg("vertices"), py::arg("faces"), "A static mesh. Returns its mesh id.")
+      .def(
+          "add_rigid_body",
+          [](GuardedScene& g, const py::handle& vertices, const py::handle& faces) {
+            const Positions positions = positions_of(vertices, "vertices");
+            const Triangles triangles = triangles_of(faces);
+            return g.run([&](Scene& s) { return s.add_rigid_body(positions, triangles); });
+          },
+          py::arg("vertices"), py::arg("faces"),
+          "A rigid body, at rest at `vertices` (V, 3), its pose at s = 0 in world coordinates, "
+          "until set_rigid_motion; never paired with itself. Returns its mesh id.")
+      .def(
+          "set_rigid_motion",
+          [](GuardedScene& g, MeshId body, const py::handle& pivot, const py::handle& translation,
+             const py::handle& cayley, const py::handle& start) {
+            const RigidMotion motion{vector_of(pivot, "pivot"),
+                                     vector_of(translation, "translation"),
+                                     vector_of(cayley, "cayley")};
+            if (start.is_none()) {
+              g.run([&](Scene& s) {
+                s.set_rigid_motion(checked_mesh(s, body), motion);
+                return 0;
+              });
+            } else {
+              const Positions from = positions_of(start, "start");
+              g.run([&](Scene& s) {
+                s.set_rigid_motion(checked_mesh(s, body), from, motion);
+                return 0;
+              });
+            }
+          },
+          py::arg("body"), py::kw_only(), py::arg("pivot") = std::array<double, 3>{0, 0, 0},
+          py::arg("translation") = std::array<double, 3>{0, 0, 0},
+          py::arg("cayley") = std::array<double, 3>{0, 0, 0}, py::arg("start") = py::none(),
+          "The step's rigid motion of a rigid body (exactccd::RigidMotion): the point at x0 is "
+          "at pivot + s translation + C(s cayley) (x0 - pivot) for s in [0, 1], cayley = "
+          "tan(theta / 2) * unit axis (see rigid_turn). `start` (V, 3): new positions at s = 0 "
+          "(e.g. the previous step's end pose), else the current ones. ValueError for a mesh "
+          "that is not a rigid body or non-finite input.")
+      .def(
+          "is_rigid",
+          [](GuardedScene& g, MeshId mesh) {
+            return g.run([&](Scene& s) { return s.is_rigid(checked_mesh(s, mesh)); });
+          },
+          py::arg("mesh"))
+      .def(
+          "rigid_motion",
+          [](GuardedScene& g, MeshId body) {
+            const RigidMotion m =
+                g.run([&](Scene& s) { return s.rigid_motion(checked_mesh(s, body)); });
+            py::dict d;
+            d["pivot"] = vector_array(m.pivot);
+            d["translation"] = vector_array(m.translation);
+            d["cayley"] = vector_array(m.cayley);
+            return d;
+          },
+          py::arg("body"), "A rigid body's motion as a dict of pivot, translation, cayley.")
       .def(
           "set_motion",
           [](GuardedScene& g, MeshId mesh, const py::handle& start, const py::handle& end) {
