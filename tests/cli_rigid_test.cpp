@@ -161,17 +161,48 @@ TEST_F(CliRigid, StepsStartFromTheRoundedEndPose) {
   EXPECT_NEAR(c["time_lo"].get<double>(), expected, 1e-12);
   EXPECT_EQ(c["first"]["vertex"], 2);
 
-  // The library with the same steps: step 2 from the exact end pose of step 1, rounded (here
-  // computed in long double and compared loosely: the CLI's is exact then rounded).
+  // The library with the same steps: step 2 starts from the exact end pose of step 1, each
+  // coordinate rounded to the nearest double (computed here independently: the exact position
+  // from the matrix form, rounded by comparing the two doubles around it).
   Positions x;
   Triangles t;
   cube(x, t);
   const RigidMotion turn = RigidMotion::turn(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 1),
                                              -30 * (M_PI / 180));
+  Positions start2(x.rows(), 3);
+  mpq_class largest(0);
+  const mpq_class qz(turn.cayley.z()), qq = qz * qz;
   for (Eigen::Index v = 0; v < x.rows(); ++v) {
-    const Eigen::Vector3d end = exactccd::position_at(turn, x.row(v).transpose(), 1.0);
-    EXPECT_NEAR(end.x(), x(v, 0) * std::cos(M_PI / 6) + x(v, 1) * std::sin(M_PI / 6), 1e-14);
+    // A turn about the z axis through the origin: C(q) = ((1 - q.q) I + 2 q q^T + 2 [q]x) /
+    // (1 + q.q) with q = (0, 0, qz).
+    const mpq_class px(x(v, 0)), py(x(v, 1));
+    const mpq_class exact[3] = {((1 - qq) * px - 2 * qz * py) / (1 + qq),
+                                (2 * qz * px + (1 - qq) * py) / (1 + qq), mpq_class(x(v, 2))};
+    for (int k = 0; k < 3; ++k) {
+      const double down = exact[k].get_d();  // truncated towards zero
+      const double up = std::nextafter(down, sgn(exact[k]) < 0 ? -HUGE_VAL : HUGE_VAL);
+      const mpq_class e_down = abs(exact[k] - down), e_up = abs(exact[k] - up);
+      start2(v, k) = e_up < e_down ? up : down;  // no ties here (checked below)
+      EXPECT_NE(e_up, e_down);
+      largest = std::max(largest, std::min(e_up, e_down));
+    }
   }
+  const double rounding = j["steps"][1]["start_rounding"];
+  EXPECT_LE(largest, mpq_class(rounding));
+  EXPECT_LE(mpq_class(rounding), largest * (1 + mpq_class(1, 1 << 20)));  // tight
+  Scene scene;
+  const MeshId body = scene.add_rigid_body(x, t);
+  Triangles t_wall;
+  Positions x_wall;
+  wall(7, x_wall, t_wall);
+  scene.add_static_mesh(x_wall, t_wall);
+  scene.set_rigid_motion(body, start2, turn);
+  const exactccd::EarliestContact e = scene.earliest_contact();
+  ASSERT_TRUE(e.collides);
+  EXPECT_EQ(e.contact.toi_lo, c["s_lo"].get<double>());
+  EXPECT_EQ(e.contact.toi_hi, c["s_hi"].get<double>());
+  EXPECT_EQ(e.contact.time_lo, c["time_lo"].get<double>());
+  EXPECT_EQ(e.contact.time_hi, c["time_hi"].get<double>());
 }
 
 TEST_F(CliRigid, DeformableBodyAgainstARigidOneAtRest) {
