@@ -3,7 +3,7 @@
 // exactly; `simulate` writes simulation-like queries; `generate` the degenerate families (or
 // the minimum-separation families);
 // `bench` times the modes; `study` measures the uncertified methods' errors against the exact
-// truth.
+// truth; `rigid` runs a rigid-body scene file.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -23,6 +23,7 @@
 #include "exactccd/version.hpp"
 #include "generate_command.hpp"
 #include "grade_command.hpp"
+#include "rigid_command.hpp"
 #include "oracle/command_line.hpp"
 #include "oracle/common.hpp"
 #include "oracle/names.hpp"
@@ -306,6 +307,23 @@ int main(int argc, char** argv) {
                        "TOI of minimum-separation CCD, delta in the manifest")
           ->check(numeric_text(false));
 
+  RigidOptions rigid_options;
+  CLI::App* rigid = app.add_subcommand(
+      "rigid",
+      "Run a rigid-body scene file (JSON, docs/rigid_scene_format.md: bodies as OBJ files or "
+      "inline arrays, rigid, static or deformable; rigid motions as Cayley vectors or turns, one "
+      "or a list of steps) and print the first contact of each step (Scene::earliest_contact): "
+      "its bodies and features (vertex-face: vertex, triangle; edge-edge: edges), the enclosure "
+      "of the motion parameter s and, for pure rotations of one rate, of the time; or "
+      "collision-free. Each step starts from the previous step's exact end pose rounded to "
+      "doubles.");
+  rigid->footer(kRigidExitStatusHelp);
+  rigid->add_option("SCENE", rigid_options.scene_path, "The JSON scene file")->required();
+  rigid->add_flag("--json", rigid_options.json,
+                  "Print one JSON object (scene, mode, t_max, toi_width, bodies, steps[{step, "
+                  "start_rounding, collides, contact{type, s_lo, s_hi, time_lo, time_hi, first, "
+                  "second}}], first_contact_step)");
+
   // CLI11 would only say that a subcommand is required.
   if (argc >= 2 && argv[1][0] != '-') {
     std::string names;
@@ -366,6 +384,7 @@ int main(int argc, char** argv) {
         bench_options.modes.push_back(*parse_mode_name(name));
       return run_bench(bench_options);
     }
+    if (rigid->parsed()) return run_rigid(rigid_options);
     if (generate->parsed()) {
       if (generate_min_separation_option->count() > 0)
         generate_options.min_separation = generate_min_separation;

@@ -37,6 +37,9 @@ CcdOptions make_options(double t_max, double toi_width, const std::string& mode,
 DoubleArray as_double_array(const py::handle& object, const std::vector<py::ssize_t>& shape,
                             const char* what);
 
+/// A 3-vector from any array-like of 3 numbers, or ValueError naming `what`.
+Eigen::Vector3d vector_of(const py::handle& object, const char* what);
+
 /// The 8 points of an (8, 3) array.
 QueryPoints points_of(const double* data);
 

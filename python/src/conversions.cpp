@@ -67,6 +67,11 @@ DoubleArray as_double_array(const py::handle& object, const std::vector<py::ssiz
   return array;
 }
 
+Eigen::Vector3d vector_of(const py::handle& object, const char* what) {
+  const DoubleArray array = as_double_array(object, {3}, what);
+  return {array.data()[0], array.data()[1], array.data()[2]};
+}
+
 QueryPoints points_of(const double* data) {
   QueryPoints points;
   for (std::size_t row = 0; row < 8; ++row)

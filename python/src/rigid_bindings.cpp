@@ -11,11 +11,6 @@ namespace exactccd::python {
 
 namespace {
 
-Eigen::Vector3d vector3(const py::handle& object, const char* what) {
-  const DoubleArray array = as_double_array(object, {3}, what);
-  return {array.data()[0], array.data()[1], array.data()[2]};
-}
-
 /// A side's motion: a RigidMotion, or an (n, 3) array of end positions (straight lines).
 SideMotion side_motion(const py::handle& motion, int vertices, const char* what) {
   if (py::isinstance<RigidMotion>(motion)) return SideMotion::of(motion.cast<RigidMotion>());
@@ -47,9 +42,9 @@ void bind_rigid(py::module_& m) {
       .def(py::init([](const py::handle& pivot, const py::handle& translation,
                        const py::handle& cayley) {
              RigidMotion r;
-             r.pivot = vector3(pivot, "pivot");
-             r.translation = vector3(translation, "translation");
-             r.cayley = vector3(cayley, "cayley");
+             r.pivot = vector_of(pivot, "pivot");
+             r.translation = vector_of(translation, "translation");
+             r.cayley = vector_of(cayley, "cayley");
              return r;
            }),
            py::arg("pivot") = py::make_tuple(0.0, 0.0, 0.0),
@@ -64,7 +59,7 @@ void bind_rigid(py::module_& m) {
       .def_readonly("cayley", &RigidMotion::cayley)
       .def("position_at",
            [](const RigidMotion& r, const py::handle& x0, double s) {
-             return position_at(r, vector3(x0, "x0"), s);
+             return position_at(r, vector_of(x0, "x0"), s);
            },
            py::arg("x0"), py::arg("s"), "x(s) in double arithmetic (not certified).");
 

@@ -156,10 +156,18 @@ void bind_scene(py::module_& m) {
       })
       .def("__repr__", &pair_repr);
 
-  py::class_<SceneContact>(m, "SceneContact", "A colliding pair and its certified TOI interval.")
+  py::class_<SceneContact>(m, "SceneContact",
+                           "A colliding pair and its certified TOI interval (in the step's "
+                           "parameter s; for a pair with a rigid body the motion parameter of "
+                           "its RigidMotion), and the contact time where defined.")
       .def_readonly("pair", &SceneContact::pair)
       .def_readonly("toi_lo", &SceneContact::toi_lo)
       .def_readonly("toi_hi", &SceneContact::toi_hi)
+      .def_readonly("has_time", &SceneContact::has_time,
+                    "Whether time_lo / time_hi enclose the contact time (always without a rigid "
+                    "body; for a rigid body, pure rotations of one rate or no rotation).")
+      .def_readonly("time_lo", &SceneContact::time_lo)
+      .def_readonly("time_hi", &SceneContact::time_hi)
       .def("__repr__", &contact_repr);
 
   py::class_<SceneStats>(m, "SceneStats")
@@ -220,6 +228,68 @@ void bind_scene(py::module_& m) {
             return g.run([&](Scene& s) { return s.add_static_mesh(positions, triangles); });
           },
           py::arg("vertices"), py::arg("faces"), "A static mesh. Returns its mesh id.")
+      .def(
+          "add_rigid_body",
+          [](GuardedScene& g, const py::handle& vertices, const py::handle& faces) {
+            const Positions positions = positions_of(vertices, "vertices");
+            const Triangles triangles = triangles_of(faces);
+            return g.run([&](Scene& s) { return s.add_rigid_body(positions, triangles); });
+          },
+          py::arg("vertices"), py::arg("faces"),
+          "A rigid body, at rest at `vertices` (V, 3), its pose at s = 0 in world coordinates, "
+          "until set_rigid_motion; never paired with itself. Returns its mesh id.")
+      .def(
+          "set_rigid_motion",
+          [](GuardedScene& g, MeshId body, const py::handle& motion, const py::handle& pivot,
+             const py::handle& translation, const py::handle& cayley, const py::handle& start) {
+            RigidMotion m;
+            if (!motion.is_none()) {
+              if (!pivot.is_none() || !translation.is_none() || !cayley.is_none())
+                throw py::value_error(
+                    "set_rigid_motion: give a RigidMotion or pivot / translation / cayley, "
+                    "not both");
+              if (!py::isinstance<RigidMotion>(motion))
+                throw py::type_error("set_rigid_motion: motion must be an exactccd.RigidMotion");
+              m = motion.cast<RigidMotion>();
+            } else {
+              if (!pivot.is_none()) m.pivot = vector_of(pivot, "pivot");
+              if (!translation.is_none()) m.translation = vector_of(translation, "translation");
+              if (!cayley.is_none()) m.cayley = vector_of(cayley, "cayley");
+            }
+            if (start.is_none()) {
+              g.run([&](Scene& s) {
+                s.set_rigid_motion(checked_mesh(s, body), m);
+                return 0;
+              });
+            } else {
+              const Positions from = positions_of(start, "start");
+              g.run([&](Scene& s) {
+                s.set_rigid_motion(checked_mesh(s, body), from, m);
+                return 0;
+              });
+            }
+          },
+          py::arg("body"), py::arg("motion") = py::none(), py::kw_only(),
+          py::arg("pivot") = py::none(), py::arg("translation") = py::none(),
+          py::arg("cayley") = py::none(), py::arg("start") = py::none(),
+          "The step's rigid motion of a rigid body: an exactccd.RigidMotion, or its fields as "
+          "keywords (zero when left out). The point at x0 is at pivot + s translation + "
+          "C(s cayley) (x0 - pivot) for s in [0, 1], cayley = tan(theta / 2) * unit axis (see "
+          "RigidMotion.turn). `start` (V, 3): new positions at s = 0 (e.g. the previous step's "
+          "end pose), else the current ones. ValueError for a mesh that is not a rigid body or "
+          "non-finite input.")
+      .def(
+          "is_rigid",
+          [](GuardedScene& g, MeshId mesh) {
+            return g.run([&](Scene& s) { return s.is_rigid(checked_mesh(s, mesh)); });
+          },
+          py::arg("mesh"))
+      .def(
+          "rigid_motion",
+          [](GuardedScene& g, MeshId body) {
+            return g.run([&](Scene& s) { return s.rigid_motion(checked_mesh(s, body)); });
+          },
+          py::arg("body"), "A rigid body's motion (an exactccd.RigidMotion).")
       .def(
           "set_motion",
           [](GuardedScene& g, MeshId mesh, const py::handle& start, const py::handle& end) {

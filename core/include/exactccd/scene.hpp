@@ -19,6 +19,17 @@
 /// (SceneOptions::min_separation) every box's upper corner is raised by delta, rounded upwards,
 /// so culling never drops a pair that comes within delta either. PROOF: proofs/scene.md
 ///
+/// Rigid bodies (\ref rigid "rigid-body CCD"): `add_rigid_body` adds a mesh that moves as one
+/// rigid body with the RigidMotion of `set_rigid_motion` (pivot, translation, Cayley vector) over
+/// the step's parameter s in [0, 1]; the other meshes move as before, each vertex on a straight
+/// line in s (static meshes stand still). Every pair involving a rigid body (rigid-rigid,
+/// rigid-deformable, rigid-static; never two primitives of one rigid body, which cannot
+/// collide with itself) is decided by the rigid vertex_face_ccd / edge_edge_ccd of rigid.hpp,
+/// so its TOI is in s; pairs without a rigid body take exactly today's path. Their swept boxes
+/// are certified interval enclosures of the vertices' arcs over pieces of [0, 1]. Rigid bodies
+/// need SceneOptions::min_separation = 0 and a mode other than Mode::float_only.
+/// PROOF: proofs/scene.md (section 9, rigid bodies)
+///
 /// Threads: the narrow phase runs in parallel (TBB); the results do not depend on the number of
 /// threads. One Scene must not be used from two threads at once; distinct Scenes are independent.
 #pragma once
@@ -29,11 +40,13 @@
 #include <vector>
 
 #include "exactccd/export.hpp"
+#include "exactccd/rigid.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd {
 
-/// A mesh's number in its Scene: 0, 1, ... in the order of add_mesh / add_static_mesh.
+/// A mesh's number in its Scene: 0, 1, ... in the order of add_mesh / add_static_mesh /
+/// add_rigid_body.
 using MeshId = std::uint32_t;
 
 /// Vertex positions, one row (x, y, z) per vertex.
@@ -62,7 +75,8 @@ EXACTCCD_API const char* to_string(BroadPhase broad_phase) noexcept;
 /// Options of Scene::find_contacts and Scene::earliest_contact.
 struct SceneOptions {
   /// Options of each pair's test (t_max, toi_width, mode), as in vertex_face_ccd; invalid ones
-  /// throw std::invalid_argument. ccd.min_separation must be 0 or equal to min_separation (the
+  /// throw std::invalid_argument. With a rigid body in the scene, t_max bounds the motion
+  /// parameter s and Mode::float_only throws (rigid motion has no float_only test). ccd.min_separation must be 0 or equal to min_separation (the
   /// scene sets it to min_separation for every pair; a delta the broad phase did not inflate its
   /// boxes by would drop pairs), else std::invalid_argument.
   CcdOptions ccd;
@@ -71,6 +85,7 @@ struct SceneOptions {
   /// such time as its TOI, exactly as vertex_face_ccd / edge_edge_ccd decide it with
   /// CcdOptions::min_separation = delta; the broad phase keeps every such pair. 0 (the default)
   /// is contact itself, the same answers as without this field. Must be finite and >= 0.
+  /// Must be 0 when the scene holds a rigid body (rigid min-separation is not supported).
   double min_separation = 0.0;
   /// The broad phase (swept_bvh, the default, never drops a colliding pair).
   BroadPhase broad_phase = BroadPhase::swept_bvh;
@@ -109,10 +124,21 @@ struct ScenePair {
 
 /// A colliding pair and its certified TOI interval, exactly as the pair's CCD test returns it.
 /// Default-constructed (no contact): +infinity TOIs (\ref no_contact_toi).
+///
+/// The TOI is in the step's parameter s, along which every deformable vertex moves on its
+/// straight line and every rigid body with its RigidMotion: for a pair without a rigid body that
+/// is the time t of the step, for a pair involving a rigid body the motion parameter s of
+/// rigid.hpp. The time fields give the contact in time where it is defined.
 struct SceneContact {
   ScenePair pair;                  ///< the pair of primitives
-  double toi_lo = kNoContactToi;   ///< the pair's CcdResult::toi_lo
-  double toi_hi = kNoContactToi;   ///< the pair's CcdResult::toi_hi
+  double toi_lo = kNoContactToi;   ///< the pair's CcdResult::toi_lo (in s)
+  double toi_hi = kNoContactToi;   ///< the pair's CcdResult::toi_hi (in s)
+  /// Whether time_lo / time_hi enclose the contact time: always for a pair without a rigid body
+  /// (time = s), and RigidCcdResult::has_time for a pair involving one (pure rotations of one
+  /// common rate, or no rotation).
+  bool has_time = false;
+  double time_lo = kNoContactToi;  ///< lower end of the contact time (see has_time)
+  double time_hi = kNoContactToi;  ///< upper end of the contact time (see has_time)
 };
 
 /// Work counts of one call (for statistics and benchmarks).
@@ -181,8 +207,34 @@ class EXACTCCD_API Scene {
   /// \return the new mesh's id.
   /// \throws std::invalid_argument as add_mesh.
   MeshId add_static_mesh(const Positions& positions, const Triangles& triangles);
+  /// A rigid body: a mesh that moves as one rigid body, at rest at `positions` (its pose at
+  /// s = 0, world coordinates) until set_rigid_motion. Never paired with itself. Throws
+  /// std::invalid_argument as add_mesh.
+  /// \param positions the vertices at s = 0, finite.
+  /// \param triangles indices into `positions`, three distinct per row.
+  /// \return the new mesh's id.
+  /// \throws std::invalid_argument as add_mesh.
+  MeshId add_rigid_body(const Positions& positions, const Triangles& triangles);
+  /// The step's motion of a rigid body: vertex i is at position_at(motion, x_i, s) for s in
+  /// [0, 1], x_i its position given to add_rigid_body (exactly, as rigid.hpp's queries).
+  /// \param body a rigid body of this scene.
+  /// \param motion finite pivot, translation and Cayley vector (every double used exactly).
+  /// \throws std::invalid_argument for an unknown id, a mesh that is not a rigid body, or a
+  ///         non-finite field.
+  void set_rigid_motion(MeshId body, const RigidMotion& motion);
+  /// The step's motion of a rigid body from new positions: its vertices are at `start` at
+  /// s = 0 (e.g. the pose the previous step ended in, rounded to doubles) and move with
+  /// `motion`. Later calls of the other overload keep these positions.
+  /// \param body a rigid body of this scene.
+  /// \param start the vertices at s = 0, one finite row per vertex (a rigid body stays rigid
+  ///        only when `start` is congruent to its earlier positions; that is not checked).
+  /// \param motion finite pivot, translation and Cayley vector.
+  /// \throws std::invalid_argument as the other overload, or for a wrong row count or
+  ///         non-finite positions.
+  void set_rigid_motion(MeshId body, const Positions& start, const RigidMotion& motion);
   /// The step's motion of a moving mesh: every vertex from start.row(i) to end.row(i). Throws
-  /// std::invalid_argument for a static mesh, a wrong row count or non-finite coordinates.
+  /// std::invalid_argument for a static mesh or a rigid body, a wrong row count or non-finite
+  /// coordinates.
   /// \param mesh a moving mesh of this scene.
   /// \param start positions at the start of the step, one row per vertex.
   /// \param end positions at the end of the step, one row per vertex.
@@ -195,6 +247,15 @@ class EXACTCCD_API Scene {
   /// \param mesh a mesh of this scene.
   /// \return true for a static mesh.
   bool is_static(MeshId mesh) const;
+  /// Whether `mesh` was added by add_rigid_body. Precondition: mesh < mesh_count().
+  /// \param mesh a mesh of this scene.
+  /// \return true for a rigid body.
+  bool is_rigid(MeshId mesh) const;
+  /// A rigid body's motion (the zero motion until set_rigid_motion). Throws
+  /// std::invalid_argument for a mesh that is not a rigid body.
+  /// \param body a rigid body of this scene.
+  /// \return its motion.
+  const RigidMotion& rigid_motion(MeshId body) const;
   /// The mesh's triangles. Precondition: mesh < mesh_count().
   /// \param mesh a mesh of this scene.
   /// \return the triangles as given.
@@ -203,12 +264,13 @@ class EXACTCCD_API Scene {
   /// \param mesh a mesh of this scene.
   /// \return the distinct triangle sides, sorted.
   const Edges& edges(MeshId mesh) const;
-  /// The positions at the start of the step. Precondition: mesh < mesh_count().
+  /// The positions at the start of the step (s = 0). Precondition: mesh < mesh_count().
   /// \param mesh a mesh of this scene.
   /// \return one row per vertex.
   const Positions& start_positions(MeshId mesh) const;
-  /// The positions at the end of the step; equal to start_positions for a static mesh.
-  /// Precondition: mesh < mesh_count().
+  /// The positions at the end of the step; equal to start_positions for a static mesh. For a
+  /// rigid body, position_at(motion, x, 1) rounded to doubles: for display only (the scene
+  /// decides with the exact motion). Precondition: mesh < mesh_count().
   /// \param mesh a mesh of this scene.
   /// \return one row per vertex.
   const Positions& end_positions(MeshId mesh) const;
@@ -225,15 +287,29 @@ class EXACTCCD_API Scene {
   EarliestContact earliest_contact(const SceneOptions& options = {});
 
   /// The pair's query, rows as in the benchmark (start positions, then end positions).
-  /// Precondition: a vertex-face pair of this scene.
+  /// Precondition: a vertex-face pair of this scene without a rigid body (std::invalid_argument
+  /// otherwise: its motion is not linear; see rigid_vertex_face_query).
   /// \param pair a vertex-face pair (e.g. from SceneResult::contacts).
   /// \return the query its test decides.
   VertexFaceQuery vertex_face_query(const ScenePair& pair) const;
   /// The pair's query, rows as in the benchmark (start positions, then end positions).
-  /// Precondition: an edge-edge pair of this scene.
+  /// Precondition: an edge-edge pair of this scene without a rigid body (std::invalid_argument
+  /// otherwise; see rigid_edge_edge_query).
   /// \param pair an edge-edge pair (e.g. from SceneResult::contacts).
   /// \return the query its test decides.
   EdgeEdgeQuery edge_edge_query(const ScenePair& pair) const;
+  /// Any vertex-face pair of this scene as a rigid query: a rigid body's side with its
+  /// RigidMotion, a deformable or static mesh's side linear (PathKind::linear, end positions as
+  /// set_motion gave them). For a pair involving a rigid body, the query its test decides; for
+  /// the others it gives the same answer as vertex_face_query's. Throws std::invalid_argument
+  /// for an edge-edge pair or an index out of range.
+  /// \param pair a vertex-face pair of this scene.
+  /// \return the query.
+  RigidVertexFaceQuery rigid_vertex_face_query(const ScenePair& pair) const;
+  /// Any edge-edge pair of this scene as a rigid query (as rigid_vertex_face_query).
+  /// \param pair an edge-edge pair of this scene.
+  /// \return the query.
+  RigidEdgeEdgeQuery rigid_edge_edge_query(const ScenePair& pair) const;
 
  private:
   struct Impl;

@@ -18,6 +18,7 @@
 
 #include "core/src/ccd_options_check.hpp"
 #include "core/src/scene/bvh.hpp"
+#include "core/src/scene/rigid_boxes.hpp"
 #include "core/src/scene/time_window.hpp"
 #include "exactccd/ccd.hpp"
 
@@ -62,6 +63,8 @@ struct Hierarchies {
 
 struct Mesh {
   bool is_static = false;
+  bool is_rigid = false;  ///< a rigid body: moves with `motion`; `end` is for display only
+  RigidMotion motion;     ///< a rigid body's motion (zero until set_rigid_motion)
   Positions start, end;
   Triangles triangles;
   Edges edges;
@@ -104,6 +107,18 @@ void check_triangles(const Triangles& triangles, Eigen::Index vertex_count) {
   }
   if (vertex_count > std::numeric_limits<std::int32_t>::max())
     throw std::invalid_argument("exactccd: too many vertices in one mesh");
+}
+
+/// The limits of rigid motion (rigid.hpp) for a scene holding a rigid body.
+void check_rigid_options(const SceneOptions& o) {
+  if (o.min_separation != 0.0)
+    throw std::invalid_argument(
+        "exactccd: SceneOptions::min_separation must be 0 in a scene with a rigid body "
+        "(minimum separation is not supported for rigid motion)");
+  if (o.ccd.mode == Mode::float_only)
+    throw std::invalid_argument(
+        "exactccd: Mode::float_only has no rigid-motion test; a scene with a rigid body needs "
+        "Mode::filtered or Mode::exact");
 }
 
 void check_options(const SceneOptions& o) {
@@ -165,6 +180,50 @@ std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* i
   return boxes;
 }
 
+/// Certified boxes of a rigid body's vertices over the span (swept: s in [0, 1]; start: s = 0;
+/// end: s = 1): unions of interval enclosures of each vertex's arc over pieces of the span
+/// (rigid_boxes.hpp, proofs/scene.md#rigid-boxes).
+std::vector<Box> rigid_vertex_boxes(const Mesh& m, Span span) {
+  const double s_lo = span == Span::end ? 1.0 : 0.0;
+  const double s_hi = span == Span::start ? 0.0 : 1.0;
+  const scene::Pieces ends = scene::pieces_for(m.motion, s_lo, s_hi);
+  const scene::ArcPieces pieces = [&] {
+    const filters::RoundingGuard upward;  // Interval_nt<false>
+    return scene::arc_pieces(m.motion.cayley, ends);
+  }();
+  std::vector<Box> boxes(static_cast<std::size_t>(m.start.rows()));
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, m.start.rows(), 1024),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      const filters::RoundingGuard upward;
+                      for (Eigen::Index v = r.begin(); v != r.end(); ++v) {
+                        Box box = scene::empty_box();
+                        const auto x0 = row(m.start, static_cast<std::int32_t>(v));
+                        scene::grow_by_arc(box, scene::arc_point(m.motion, x0), pieces);
+                        boxes[static_cast<std::size_t>(v)] = box;
+                      }
+                    });
+  return boxes;
+}
+
+/// Boxes of primitives of K vertices (rows of `indices`) as the merge of their vertices' boxes:
+/// each vertex lies in its box at every s of the span, so the primitive (their convex hull) lies
+/// in the merge. With delta > 0 the upper corners are raised as in primitive_boxes.
+template <int K>
+std::vector<Box> merged_boxes(const std::vector<Box>& vertex_boxes, const IndexRows<K>& indices,
+                              double delta) {
+  std::vector<Box> boxes(static_cast<std::size_t>(indices.rows()));
+  const predicates::FpEnvironmentGuard fp(delta > 0.0 ? predicates::Rounding::upward
+                                                      : predicates::Rounding::to_nearest);
+  for (Eigen::Index p = 0; p < indices.rows(); ++p) {
+    Box box = vertex_boxes[static_cast<std::size_t>(indices(p, 0))];
+    for (int k = 1; k < K; ++k)
+      box = scene::merge(box, vertex_boxes[static_cast<std::size_t>(indices(p, k))]);
+    if (delta > 0.0) scene::raise_upper_corner(box, delta);
+    boxes[static_cast<std::size_t>(p)] = box;
+  }
+  return boxes;
+}
+
 void update(Bvh& bvh, const std::vector<Box>& boxes, bool built, SceneStats& stats) {
   if (built) {
     ++stats.hierarchies_refitted;
@@ -181,6 +240,20 @@ Hierarchies& prepare(Mesh& m, Span span, double delta, SceneStats& stats) {
   // A static mesh has one set of positions: one set of hierarchies serves every span.
   Hierarchies& h = m.spans[m.is_static ? 0 : static_cast<int>(span)];
   if (h.built && !h.stale && h.raised_by == delta) return h;
+  if (m.is_rigid) {
+    std::vector<Box> vertex_boxes = rigid_vertex_boxes(m, span);
+    update(h.edges, merged_boxes<2>(vertex_boxes, m.edges, delta), h.built, stats);
+    update(h.faces, merged_boxes<3>(vertex_boxes, m.triangles, delta), h.built, stats);
+    if (delta > 0.0) {
+      const predicates::FpEnvironmentGuard upward(predicates::Rounding::upward);
+      for (Box& box : vertex_boxes) scene::raise_upper_corner(box, delta);
+    }
+    update(h.vertices, vertex_boxes, h.built, stats);
+    h.built = true;
+    h.stale = false;
+    h.raised_by = delta;
+    return h;
+  }
   update(h.vertices, primitive_boxes<1>(m, span, nullptr, m.start.rows(), delta), h.built, stats);
   update(h.edges, primitive_boxes<2>(m, span, &m.edges, m.edges.rows(), delta), h.built, stats);
   update(h.faces, primitive_boxes<3>(m, span, &m.triangles, m.triangles.rows(), delta), h.built,
@@ -202,21 +275,120 @@ bool edges_share_vertex(const Edges& e, std::uint32_t i, std::uint32_t j) {
 }
 
 /// The ordered mesh pairs a call visits: vertex-face (A, B) for A != B unless both are static,
-/// and (A, A) for a moving mesh with self-collision; edge-edge the same with A <= B.
+/// and (A, A) for a moving mesh (not a rigid body) with self-collision; edge-edge the same with
+/// A <= B.
 template <class F>
 void for_each_mesh_pair(const std::vector<Mesh>& meshes, bool self, bool ordered, F&& f) {
   for (std::size_t a = 0; a < meshes.size(); ++a)
     for (std::size_t b = ordered ? 0 : a; b < meshes.size(); ++b) {
       if (meshes[a].is_static && meshes[b].is_static) continue;
-      if (a == b && !self) continue;
+      if (a == b && (!self || meshes[a].is_rigid)) continue;
       f(static_cast<MeshId>(a), static_cast<MeshId>(b));
     }
 }
+
+/// A pair's answer: the verdict with the TOI in s, and the contact time where defined.
+struct Decision {
+  CcdResult ccd;
+  bool has_time = false;
+  double time_lo = kNoContactToi, time_hi = kNoContactToi;
+
+  SceneContact contact(const ScenePair& p) const {
+    return {p, ccd.toi_lo, ccd.toi_hi, has_time, time_lo, time_hi};
+  }
+};
 
 }  // namespace
 
 struct Scene::Impl {
   std::vector<Mesh> meshes;
+
+  bool any_rigid() const {
+    return std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return m.is_rigid; });
+  }
+
+  bool involves_rigid(const ScenePair& p) const {
+    return meshes[p.first_mesh].is_rigid || meshes[p.second_mesh].is_rigid;
+  }
+
+  /// One side of a rigid query: the body's motion, or straight lines from start to end rows
+  /// (equal for a static mesh) of the given vertices.
+  template <std::size_t N>
+  static SideMotion side_of(const Mesh& m, const std::array<std::int32_t, N>& vertices) {
+    if (m.is_rigid) return SideMotion::of(m.motion);
+    SideMotion side;
+    side.kind = PathKind::linear;
+    for (std::size_t i = 0; i < N; ++i) side.linear_end[i] = row(m.end, vertices[i]);
+    return side;
+  }
+
+  RigidVertexFaceQuery rigid_vertex_face(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& b = mesh(p.second_mesh);
+    const std::array<std::int32_t, 1> v{static_cast<std::int32_t>(p.first_index)};
+    const auto f = static_cast<Eigen::Index>(p.second_index);
+    const std::array<std::int32_t, 3> t{b.triangles(f, 0), b.triangles(f, 1), b.triangles(f, 2)};
+    return {row(a.start, v[0]), row(b.start, t[0]), row(b.start, t[1]), row(b.start, t[2]),
+            side_of(a, v),      side_of(b, t)};
+  }
+
+  RigidEdgeEdgeQuery rigid_edge_edge(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& b = mesh(p.second_mesh);
+    const auto i = static_cast<Eigen::Index>(p.first_index);
+    const auto j = static_cast<Eigen::Index>(p.second_index);
+    const std::array<std::int32_t, 2> ea{a.edges(i, 0), a.edges(i, 1)};
+    const std::array<std::int32_t, 2> eb{b.edges(j, 0), b.edges(j, 1)};
+    return {row(a.start, ea[0]), row(a.start, ea[1]), row(b.start, eb[0]), row(b.start, eb[1]),
+            side_of(a, ea),      side_of(b, eb)};
+  }
+
+  /// Grows `box` to hold the given vertices of `m` over s in [0, window] (rigid_boxes.hpp).
+  /// Needs upward rounding.
+  template <std::size_t N>
+  static void grow_over_window(Box& box, const Mesh& m, const std::array<std::int32_t, N>& vertices,
+                               double window) {
+    if (m.is_rigid) {
+      const scene::ArcPieces pieces =
+          scene::arc_pieces(m.motion.cayley, scene::pieces_for(m.motion, 0.0, window));
+      for (std::int32_t v : vertices)
+        scene::grow_by_arc(box, scene::arc_point(m.motion, row(m.start, v)), pieces);
+      return;
+    }
+    for (std::int32_t v : vertices)
+      scene::grow_by_segment(box, row(m.start, v), row(m.end, v), 0.0, window);
+  }
+
+  /// True when the two sides of a pair involving a rigid body cannot meet at any s in
+  /// [0, window]: their certified boxes over the window are apart on some axis
+  /// (proofs/scene.md#rigid-boxes). Needs upward rounding.
+  template <std::size_t NA, std::size_t NB>
+  static bool rigid_sides_disjoint(const Mesh& a, const std::array<std::int32_t, NA>& va,
+                                   const Mesh& b, const std::array<std::int32_t, NB>& vb,
+                                   double window) {
+    Box box_a = scene::empty_box(), box_b = scene::empty_box();
+    grow_over_window(box_a, a, va, window);
+    grow_over_window(box_b, b, vb, window);
+    for (int k = 0; k < 3; ++k)
+      if (box_a.hi[k] < box_b.lo[k] || box_b.hi[k] < box_a.lo[k]) return true;
+    return false;
+  }
+
+  bool rigid_disjoint_over_window(const ScenePair& p, double window) const {
+    const Mesh& a = meshes[p.first_mesh];
+    const Mesh& b = meshes[p.second_mesh];
+    if (p.type == QueryType::vertex_face) {
+      const auto f = static_cast<Eigen::Index>(p.second_index);
+      return rigid_sides_disjoint(
+          a, std::array<std::int32_t, 1>{static_cast<std::int32_t>(p.first_index)}, b,
+          std::array<std::int32_t, 3>{b.triangles(f, 0), b.triangles(f, 1), b.triangles(f, 2)},
+          window);
+    }
+    const auto i = static_cast<Eigen::Index>(p.first_index);
+    const auto j = static_cast<Eigen::Index>(p.second_index);
+    return rigid_sides_disjoint(a, std::array<std::int32_t, 2>{a.edges(i, 0), a.edges(i, 1)}, b,
+                                std::array<std::int32_t, 2>{b.edges(j, 0), b.edges(j, 1)}, window);
+  }
 
   const Mesh& mesh(MeshId id) const {
     if (id >= meshes.size()) throw std::invalid_argument("exactccd: no mesh " + std::to_string(id));
@@ -324,6 +496,21 @@ struct Scene::Impl {
                                             : edge_edge_ccd(edge_edge(p), options);
   }
 
+  static Decision with_time(const RigidCcdResult& r) {
+    return {r.ccd, r.has_time, r.time_lo, r.time_hi};
+  }
+
+  /// The pair's answer over [0, options.t_max]: a pair involving a rigid body by the rigid test
+  /// of rigid.hpp, any other by `test` (time = s).
+  Decision decide(const ScenePair& p, const CcdOptions& options) const {
+    if (involves_rigid(p))
+      return with_time(p.type == QueryType::vertex_face
+                           ? vertex_face_ccd(rigid_vertex_face(p), options)
+                           : edge_edge_ccd(rigid_edge_edge(p), options));
+    const CcdResult c = test(p, options);
+    return {c, true, c.toi_lo, c.toi_hi};
+  }
+
   SceneResult find_contacts(const SceneOptions& o) {
     SceneResult result;
     std::vector<ScenePair> candidates = o.broad_phase == BroadPhase::swept_bvh
@@ -336,8 +523,8 @@ struct Scene::Impl {
                         const FpGuard fp;
                         auto& local = found.local();
                         for (std::size_t k = r.begin(); k != r.end(); ++k) {
-                          const CcdResult c = test(candidates[k], o.ccd);
-                          if (c.collides) local.push_back({candidates[k], c.toi_lo, c.toi_hi});
+                          const Decision d = decide(candidates[k], o.ccd);
+                          if (d.ccd.collides) local.push_back(d.contact(candidates[k]));
                         }
                       });
     for (const auto& part : found)
@@ -403,14 +590,25 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
       CcdOptions options = o.ccd;
       options.t_max = window;
       // One query per pair: culled over the window when the bound has shrunk, else decided.
-      const auto decide = [&](const auto& query) -> std::optional<CcdResult> {
+      const auto decide_linear = [&](const auto& query) -> std::optional<CcdResult> {
         if (window < t_max && scene::disjoint_over_window(query, window, o.min_separation))
           return std::nullopt;
         ++local.tests;
         return decide_query(query, options);
       };
-      const std::optional<CcdResult> decided =
-          p.type == QueryType::vertex_face ? decide(vertex_face(p)) : decide(edge_edge(p));
+      std::optional<CcdResult> decided;
+      if (involves_rigid(p)) {
+        // The same over the arcs: certified boxes over [0, window], then the rigid test.
+        if (!(window < t_max && rigid_disjoint_over_window(p, window))) {
+          ++local.tests;
+          decided = p.type == QueryType::vertex_face
+                        ? vertex_face_ccd(rigid_vertex_face(p), options).ccd
+                        : edge_edge_ccd(rigid_edge_edge(p), options).ccd;
+        }
+      } else {
+        decided = p.type == QueryType::vertex_face ? decide_linear(vertex_face(p))
+                                                   : decide_linear(edge_edge(p));
+      }
       if (!decided) continue;
       const CcdResult& r = *decided;
       if (!r.collides) continue;
@@ -433,11 +631,7 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
   if (found.empty()) return out;
   // Decide the survivors again over the caller's window: their intervals are then exactly
   // those find_contacts reports.
-  for (SceneContact& c : found) {
-    const CcdResult r = test(c.pair, o.ccd);
-    c.toi_lo = r.toi_lo;
-    c.toi_hi = r.toi_hi;
-  }
+  for (SceneContact& c : found) c = decide(c.pair, o.ccd).contact(c.pair);
   std::sort(found.begin(), found.end(),
             [](const SceneContact& a, const SceneContact& b) { return a.pair < b.pair; });
   out.collides = true;
@@ -468,10 +662,59 @@ MeshId Scene::add_static_mesh(const Positions& positions, const Triangles& trian
   return id;
 }
 
+MeshId Scene::add_rigid_body(const Positions& positions, const Triangles& triangles) {
+  const MeshId id = add_mesh(positions, triangles);
+  impl_->meshes[id].is_rigid = true;
+  return id;
+}
+
+namespace {
+
+/// The body's mesh for set_rigid_motion, after checking the id, the kind and the motion.
+Mesh& rigid_body_for_motion(std::vector<Mesh>& meshes, MeshId id, const RigidMotion& motion) {
+  if (id >= meshes.size()) throw std::invalid_argument("exactccd: no mesh " + std::to_string(id));
+  Mesh& m = meshes[id];
+  if (!m.is_rigid)
+    throw std::invalid_argument("exactccd: set_rigid_motion on mesh " + std::to_string(id) +
+                                ", which is not a rigid body (add it with add_rigid_body)");
+  if (!motion.pivot.allFinite() || !motion.translation.allFinite() ||
+      !motion.cayley.allFinite())
+    throw std::invalid_argument("exactccd: non-finite pivot, translation or cayley in the rigid "
+                                "motion of mesh " + std::to_string(id));
+  return m;
+}
+
+/// Sets the motion; the end positions (display only) the same whatever the caller's FP state.
+void apply_rigid_motion(Mesh& m, const RigidMotion& motion) {
+  const FpGuard fp;
+  m.motion = motion;
+  for (Eigen::Index v = 0; v < m.start.rows(); ++v)
+    m.end.row(v) = position_at(motion, row(m.start, static_cast<std::int32_t>(v)), 1.0).transpose();
+  for (Hierarchies& h : m.spans) h.stale = true;
+}
+
+}  // namespace
+
+void Scene::set_rigid_motion(MeshId id, const RigidMotion& motion) {
+  apply_rigid_motion(rigid_body_for_motion(impl_->meshes, id, motion), motion);
+}
+
+void Scene::set_rigid_motion(MeshId id, const Positions& start, const RigidMotion& motion) {
+  Mesh& m = rigid_body_for_motion(impl_->meshes, id, motion);
+  if (start.rows() != m.start.rows())
+    throw std::invalid_argument("exactccd: set_rigid_motion needs one row per vertex of the body");
+  check_positions(start, "the start positions");
+  m.start = start;
+  apply_rigid_motion(m, motion);
+}
+
 void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) {
   impl_->mesh(id);
   Mesh& m = impl_->meshes[id];
   if (m.is_static) throw std::invalid_argument("exactccd: set_motion on a static mesh");
+  if (m.is_rigid)
+    throw std::invalid_argument("exactccd: set_motion on rigid body " + std::to_string(id) +
+                                " (a rigid body moves with set_rigid_motion)");
   if (start.rows() != m.start.rows() || end.rows() != m.start.rows())
     throw std::invalid_argument("exactccd: set_motion needs one row per vertex of the mesh");
   check_positions(start, "the start positions");
@@ -483,6 +726,15 @@ void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) 
 
 std::size_t Scene::mesh_count() const { return impl_->meshes.size(); }
 bool Scene::is_static(MeshId id) const { return impl_->mesh(id).is_static; }
+bool Scene::is_rigid(MeshId id) const { return impl_->mesh(id).is_rigid; }
+
+const RigidMotion& Scene::rigid_motion(MeshId id) const {
+  const Mesh& m = impl_->mesh(id);
+  if (!m.is_rigid)
+    throw std::invalid_argument("exactccd: rigid_motion of mesh " + std::to_string(id) +
+                                ", which is not a rigid body");
+  return m.motion;
+}
 const Triangles& Scene::triangles(MeshId id) const { return impl_->mesh(id).triangles; }
 const Edges& Scene::edges(MeshId id) const { return impl_->mesh(id).edges; }
 const Positions& Scene::start_positions(MeshId id) const { return impl_->mesh(id).start; }
@@ -503,6 +755,7 @@ auto with_threads(int max_threads, F&& f) {
 SceneResult Scene::find_contacts(const SceneOptions& options) {
   const FpGuard fp;
   check_options(options);
+  if (impl_->any_rigid()) check_rigid_options(options);
   const SceneOptions o = with_pair_separation(options);
   return with_threads(o.max_threads, [&] { return impl_->find_contacts(o); });
 }
@@ -510,6 +763,7 @@ SceneResult Scene::find_contacts(const SceneOptions& options) {
 EarliestContact Scene::earliest_contact(const SceneOptions& options) {
   const FpGuard fp;
   check_options(options);
+  if (impl_->any_rigid()) check_rigid_options(options);
   if (options.broad_phase != BroadPhase::swept_bvh)
     throw std::invalid_argument("exactccd: earliest_contact needs the swept_bvh broad phase");
   const SceneOptions o = with_pair_separation(options);
@@ -523,6 +777,9 @@ VertexFaceQuery Scene::vertex_face_query(const ScenePair& pair) const {
   const Mesh& b = impl_->mesh(pair.second_mesh);
   if (pair.first_index >= a.start.rows() || pair.second_index >= b.triangles.rows())
     throw std::invalid_argument("exactccd: pair index out of range");
+  if (impl_->involves_rigid(pair))
+    throw std::invalid_argument(
+        "exactccd: vertex_face_query of a pair with a rigid body (use rigid_vertex_face_query)");
   return impl_->vertex_face(pair);
 }
 
@@ -533,7 +790,30 @@ EdgeEdgeQuery Scene::edge_edge_query(const ScenePair& pair) const {
   const Mesh& b = impl_->mesh(pair.second_mesh);
   if (pair.first_index >= a.edges.rows() || pair.second_index >= b.edges.rows())
     throw std::invalid_argument("exactccd: pair index out of range");
+  if (impl_->involves_rigid(pair))
+    throw std::invalid_argument(
+        "exactccd: edge_edge_query of a pair with a rigid body (use rigid_edge_edge_query)");
   return impl_->edge_edge(pair);
+}
+
+RigidVertexFaceQuery Scene::rigid_vertex_face_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::vertex_face)
+    throw std::invalid_argument("exactccd: rigid_vertex_face_query of an edge-edge pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (pair.first_index >= a.start.rows() || pair.second_index >= b.triangles.rows())
+    throw std::invalid_argument("exactccd: pair index out of range");
+  return impl_->rigid_vertex_face(pair);
+}
+
+RigidEdgeEdgeQuery Scene::rigid_edge_edge_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::edge_edge)
+    throw std::invalid_argument("exactccd: rigid_edge_edge_query of a vertex-face pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (pair.first_index >= a.edges.rows() || pair.second_index >= b.edges.rows())
+    throw std::invalid_argument("exactccd: pair index out of range");
+  return impl_->rigid_edge_edge(pair);
 }
 
 }  // namespace exactccd

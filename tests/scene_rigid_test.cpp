@@ -1,0 +1,766 @@
+// Rigid bodies in the Scene (Scene::add_rigid_body / set_rigid_motion): every contact the scene
+// reports equals the per-query rigid function on that pair and no colliding pair is dropped
+// (brute force over every allowed pair of primitives), never a pair within one rigid body,
+// earliest_contact equals find_contacts().earliest, a rigid body with q = 0 equals a moving mesh
+// with the translated end positions, the certified arc boxes hold exact positions at rational s,
+// bad input throws. PROOF: proofs/scene.md#rigid-bodies
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/src/scene/rigid_boxes.hpp"
+#include "exactccd/ccd.hpp"
+#include "exactccd/rigid.hpp"
+#include "exactccd/scene.hpp"
+#include "random_scenes.hpp"
+#include "scene_support.hpp"
+#include "test_scale.hpp"
+
+namespace exactccd::test {
+namespace {
+
+using Eigen::Vector3d;
+using test::make_scene;  // scene_support's, for scenes without rigid bodies
+
+// ---------------------------------------------------------------------------------------------
+// Scenes with rigid bodies, and the reference written from scene.hpp's rules
+
+enum class Kind { rigid, deformable, fixed };
+
+struct Body {
+  Kind kind = Kind::rigid;
+  Positions start, end;  ///< end: a deformable mesh's (a fixed mesh's equals start)
+  Triangles triangles;
+  RigidMotion motion;    ///< a rigid body's
+};
+using Bodies = std::vector<Body>;
+
+Body body_of(Kind kind, const MeshSpec& m) {
+  Body b;
+  b.kind = kind;
+  b.start = m.start;
+  b.end = kind == Kind::deformable ? m.end : m.start;
+  b.triangles = m.triangles;
+  return b;
+}
+
+Scene make_scene(const Bodies& bodies) {
+  Scene scene;
+  for (const Body& b : bodies) {
+    switch (b.kind) {
+      case Kind::fixed: scene.add_static_mesh(b.start, b.triangles); break;
+      case Kind::deformable: {
+        const MeshId id = scene.add_mesh(b.start, b.triangles);
+        scene.set_motion(id, b.start, b.end);
+        break;
+      }
+      case Kind::rigid: {
+        const MeshId id = scene.add_rigid_body(b.start, b.triangles);
+        scene.set_rigid_motion(id, b.motion);
+        break;
+      }
+    }
+  }
+  return scene;
+}
+
+template <std::size_t N>
+SideMotion side_of(const Body& b, const std::array<std::int32_t, N>& vertices) {
+  if (b.kind == Kind::rigid) return SideMotion::of(b.motion);
+  SideMotion s;
+  s.kind = PathKind::linear;
+  for (std::size_t i = 0; i < N; ++i) s.linear_end[i] = point(b.end, vertices[i]);
+  return s;
+}
+
+struct RigidReference {
+  std::uint64_t pairs = 0;
+  std::uint64_t rigid_rigid = 0, rigid_deformable = 0, rigid_fixed = 0, without_rigid = 0;
+  std::vector<SceneContact> contacts;  ///< in ScenePair order
+};
+
+bool allowed(const Bodies& bodies, MeshId a, MeshId b, bool self_collision) {
+  if (bodies[a].kind == Kind::fixed && bodies[b].kind == Kind::fixed) return false;
+  if (a == b) return self_collision && bodies[a].kind == Kind::deformable;
+  return true;
+}
+
+/// Every allowed pair decided one by one: a pair with a rigid body by the rigid per-query
+/// function, any other by the linear one (time = s).
+RigidReference brute_force(const Bodies& bodies, const CcdOptions& ccd, bool self_collision) {
+  RigidReference r;
+  std::vector<Edges> edges;
+  for (const Body& b : bodies) edges.push_back(derive_edges(b.triangles));
+  const auto n = static_cast<MeshId>(bodies.size());
+  const auto record = [&](const ScenePair& p, bool rigid, const CcdResult& c, bool has_time,
+                          double time_lo, double time_hi) {
+    ++r.pairs;
+    const Kind ka = bodies[p.first_mesh].kind, kb = bodies[p.second_mesh].kind;
+    if (!rigid)
+      ++r.without_rigid;
+    else if (ka == Kind::rigid && kb == Kind::rigid)
+      ++r.rigid_rigid;
+    else if (ka == Kind::fixed || kb == Kind::fixed)
+      ++r.rigid_fixed;
+    else
+      ++r.rigid_deformable;
+    if (c.collides) r.contacts.push_back({p, c.toi_lo, c.toi_hi, has_time, time_lo, time_hi});
+  };
+  for (MeshId a = 0; a < n; ++a)
+    for (std::int32_t v = 0; v < bodies[a].start.rows(); ++v)
+      for (MeshId b = 0; b < n; ++b) {
+        if (!allowed(bodies, a, b, self_collision)) continue;
+        const Triangles& t = bodies[b].triangles;
+        for (std::int32_t f = 0; f < t.rows(); ++f) {
+          if (a == b && (t(f, 0) == v || t(f, 1) == v || t(f, 2) == v)) continue;
+          const ScenePair p{QueryType::vertex_face, a, static_cast<std::uint32_t>(v), b,
+                            static_cast<std::uint32_t>(f)};
+          const std::array<std::int32_t, 1> vs{v};
+          const std::array<std::int32_t, 3> ts{t(f, 0), t(f, 1), t(f, 2)};
+          const Body &ba = bodies[a], &bb = bodies[b];
+          if (ba.kind == Kind::rigid || bb.kind == Kind::rigid) {
+            const RigidCcdResult c = vertex_face_ccd(
+                RigidVertexFaceQuery{point(ba.start, v), point(bb.start, ts[0]),
+                                     point(bb.start, ts[1]), point(bb.start, ts[2]),
+                                     side_of(ba, vs), side_of(bb, ts)},
+                ccd);
+            record(p, true, c.ccd, c.has_time, c.time_lo, c.time_hi);
+          } else {
+            const CcdResult c = vertex_face_ccd(
+                VertexFaceQuery{point(ba.start, v), point(bb.start, ts[0]), point(bb.start, ts[1]),
+                                point(bb.start, ts[2]), point(ba.end, v), point(bb.end, ts[0]),
+                                point(bb.end, ts[1]), point(bb.end, ts[2])},
+                ccd);
+            record(p, false, c, true, c.toi_lo, c.toi_hi);
+          }
+        }
+      }
+  for (MeshId a = 0; a < n; ++a)
+    for (std::int32_t i = 0; i < edges[a].rows(); ++i)
+      for (MeshId b = a; b < n; ++b) {
+        if (!allowed(bodies, a, b, self_collision)) continue;
+        const Edges &ea = edges[a], &eb = edges[b];
+        for (std::int32_t j = (a == b ? i + 1 : 0); j < eb.rows(); ++j) {
+          if (a == b && (ea(i, 0) == eb(j, 0) || ea(i, 0) == eb(j, 1) || ea(i, 1) == eb(j, 0) ||
+                         ea(i, 1) == eb(j, 1)))
+            continue;
+          const ScenePair p{QueryType::edge_edge, a, static_cast<std::uint32_t>(i), b,
+                            static_cast<std::uint32_t>(j)};
+          const std::array<std::int32_t, 2> va{ea(i, 0), ea(i, 1)}, vb{eb(j, 0), eb(j, 1)};
+          const Body &ba = bodies[a], &bb = bodies[b];
+          if (ba.kind == Kind::rigid || bb.kind == Kind::rigid) {
+            const RigidCcdResult c = edge_edge_ccd(
+                RigidEdgeEdgeQuery{point(ba.start, va[0]), point(ba.start, va[1]),
+                                   point(bb.start, vb[0]), point(bb.start, vb[1]), side_of(ba, va),
+                                   side_of(bb, vb)},
+                ccd);
+            record(p, true, c.ccd, c.has_time, c.time_lo, c.time_hi);
+          } else {
+            const CcdResult c = edge_edge_ccd(
+                EdgeEdgeQuery{point(ba.start, va[0]), point(ba.start, va[1]),
+                              point(bb.start, vb[0]), point(bb.start, vb[1]), point(ba.end, va[0]),
+                              point(ba.end, va[1]), point(bb.end, vb[0]), point(bb.end, vb[1])},
+                ccd);
+            record(p, false, c, true, c.toi_lo, c.toi_hi);
+          }
+        }
+      }
+  return r;
+}
+
+std::string describe_full(const SceneContact& c) {
+  return describe(c) + (c.has_time ? " time [" + hex(c.time_lo) + ", " + hex(c.time_hi) + "]"
+                                   : std::string(" no time"));
+}
+
+bool same_full(const SceneContact& a, const SceneContact& b) {
+  return same_contact(a, b) && a.has_time == b.has_time &&
+         (!a.has_time || (a.time_lo == b.time_lo && a.time_hi == b.time_hi));
+}
+
+::testing::AssertionResult same_full_contacts(const std::vector<SceneContact>& got,
+                                              const std::vector<SceneContact>& want) {
+  const std::size_t n = std::min(got.size(), want.size());
+  for (std::size_t k = 0; k < n; ++k)
+    if (!same_full(got[k], want[k]))
+      return ::testing::AssertionFailure() << "contact " << k << ": got " << describe_full(got[k])
+                                           << ", expected " << describe_full(want[k]);
+  if (got.size() != want.size())
+    return ::testing::AssertionFailure()
+           << got.size() << " contacts, expected " << want.size() << "; first extra: "
+           << (got.size() > n ? "got " + describe_full(got[n]) : "expected " + describe_full(want[n]));
+  return ::testing::AssertionSuccess();
+}
+
+/// The smallest toi_lo, ties by pair order; a default contact without any.
+SceneContact earliest(const std::vector<SceneContact>& contacts) {
+  SceneContact best;
+  for (const SceneContact& c : contacts)
+    if (c.toi_lo < best.toi_lo) best = c;
+  return best;
+}
+
+/// find_contacts and earliest_contact against the brute force with these options; the
+/// reference, for counting.
+RigidReference check(const Bodies& bodies, const SceneOptions& o = {}) {
+  const RigidReference ref = brute_force(bodies, o.ccd, o.self_collision);
+  Scene scene = make_scene(bodies);
+  SceneOptions with_candidates = o;
+  with_candidates.record_candidates = true;
+  const SceneResult got = scene.find_contacts(with_candidates);
+  EXPECT_TRUE(same_full_contacts(got.contacts, ref.contacts));
+  EXPECT_TRUE(same_full(got.earliest, earliest(ref.contacts))) << describe_full(got.earliest);
+  for (const ScenePair& p : got.candidates)
+    EXPECT_FALSE(p.first_mesh == p.second_mesh && bodies[p.first_mesh].kind == Kind::rigid)
+        << "a pair within rigid body " << p.first_mesh << ": " << describe(p);
+  EXPECT_EQ(got.stats.vertex_face_candidates + got.stats.edge_edge_candidates,
+            got.candidates.size());
+  const EarliestContact first = scene.earliest_contact(o);
+  EXPECT_EQ(first.collides, !ref.contacts.empty());
+  EXPECT_TRUE(same_full(first.contact, got.earliest))
+      << describe_full(first.contact) << " vs " << describe_full(got.earliest);
+  return ref;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Random bodies and turns
+
+Vector3d random_unit(Rng& rng) {
+  Vector3d v;
+  do {
+    for (int k = 0; k < 3; ++k) v[k] = uniform(rng, -1, 1);
+  } while (v.norm() < 0.1 || v.norm() > 1);
+  return v.normalized();
+}
+
+struct TurnStyle {
+  double max_degrees = 90;
+  bool pure_rotation = false;
+  double translation = 0.5;
+};
+
+RigidMotion random_turn(Rng& rng, const Vector3d& near, const TurnStyle& style) {
+  const double angle = uniform(rng, -style.max_degrees, style.max_degrees) * M_PI / 180;
+  Vector3d pivot = near;
+  for (int k = 0; k < 3; ++k) pivot[k] += uniform(rng, -0.2, 0.2);
+  Vector3d d = Vector3d::Zero();
+  if (!style.pure_rotation)
+    for (int k = 0; k < 3; ++k) d[k] = uniform(rng, -style.translation, style.translation);
+  return RigidMotion::turn(pivot, random_unit(rng), angle, d);
+}
+
+Vector3d centre_of(const Positions& x) { return x.colwise().mean().transpose(); }
+
+/// Two rigid bodies (a box and a soup) turning near each other, a static grid under them and a
+/// deformable grid moving through: every kind of pair.
+Bodies random_bodies(Rng& rng, const TurnStyle& style) {
+  Bodies bodies;
+  const Vector3d lo(uniform(rng, -0.3, 0), uniform(rng, -0.3, 0), uniform(rng, -0.1, 0.1));
+  MeshSpec box = box_mesh(lo, lo + Vector3d(uniform(rng, 0.3, 0.6), uniform(rng, 0.3, 0.6),
+                                            uniform(rng, 0.2, 0.5)));
+  bodies.push_back(body_of(Kind::rigid, box));
+  bodies.back().motion = random_turn(rng, centre_of(box.start), style);
+  MeshSpec blob = soup(rng, uniform_int(rng, 4, 7), uniform_int(rng, 3, 7),
+                       Vector3d(uniform(rng, 0.1, 0.5), uniform(rng, 0.1, 0.5), uniform(rng, 0, 0.3)),
+                       uniform(rng, 0.15, 0.35));
+  bodies.push_back(body_of(Kind::rigid, blob));
+  bodies.back().motion = random_turn(rng, centre_of(blob.start), style);
+  MeshSpec floor = grid(4, 4, Vector3d(-0.6, -0.6, uniform(rng, -0.2, -0.05)),
+                        Vector3d(1.4, 0, 0), Vector3d(0, 1.4, 0));
+  for (Eigen::Index r = 0; r < floor.start.rows(); ++r) floor.start(r, 2) += uniform(rng, -0.05, 0.05);
+  bodies.push_back(body_of(Kind::fixed, floor));
+  MeshSpec sheet = grid(3, 3, Vector3d(uniform(rng, -0.4, 0), uniform(rng, -0.4, 0), 0.6),
+                        Vector3d(0.8, 0, 0.1), Vector3d(0, 0.8, -0.1));
+  sheet.end = sheet.start;
+  const Vector3d fall(uniform(rng, -0.2, 0.2), uniform(rng, -0.2, 0.2), uniform(rng, -1.0, -0.2));
+  for (Eigen::Index r = 0; r < sheet.end.rows(); ++r)
+    for (int k = 0; k < 3; ++k) sheet.end(r, k) += fall[k] + uniform(rng, -0.05, 0.05);
+  bodies.push_back(body_of(Kind::deformable, sheet));
+  return bodies;
+}
+
+struct Counts {
+  std::uint64_t pairs = 0, contacts = 0, rigid_rigid = 0, rigid_deformable = 0, rigid_fixed = 0;
+  std::uint64_t with_time = 0;
+  void add(const RigidReference& r, const Bodies& bodies) {
+    pairs += r.pairs;
+    contacts += r.contacts.size();
+    for (const SceneContact& c : r.contacts) {
+      const Kind a = bodies[c.pair.first_mesh].kind, b = bodies[c.pair.second_mesh].kind;
+      if (a == Kind::rigid && b == Kind::rigid) ++rigid_rigid;
+      else if (a == Kind::fixed || b == Kind::fixed) rigid_fixed += a == Kind::rigid || b == Kind::rigid;
+      else if (a == Kind::rigid || b == Kind::rigid) ++rigid_deformable;
+      with_time += (a == Kind::rigid || b == Kind::rigid) && c.has_time;
+    }
+  }
+  void print(const char* what) const {
+    std::cout << "[ info     ] " << what << ": " << pairs << " pairs, " << contacts
+              << " contacts (rigid-rigid " << rigid_rigid << ", rigid-deformable "
+              << rigid_deformable << ", rigid-static " << rigid_fixed << "; rigid with a time "
+              << with_time << ")\n";
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// 1. The scene against the brute force
+
+void random_scenes_equal_brute_force(std::uint64_t seed_offset, const TurnStyle& style,
+                                     const char* name, bool expect_times) {
+  Rng rng(test_seed() + seed_offset);
+  Counts counts;
+  const int scenes = static_cast<int>(at_least(scaled_count(4), 2));
+  for (int s = 0; s < scenes; ++s) {
+    SCOPED_TRACE(std::string(name) + " scene " + std::to_string(s));
+    const Bodies bodies = random_bodies(rng, style);
+    counts.add(check(bodies), bodies);
+    if (::testing::Test::HasFailure()) break;
+  }
+  counts.print(name);
+  // Not a vacuous pass: contacts of every kind of pair with a rigid body (several at full
+  // scale; at least one in the two scenes of a reduced run).
+  const std::uint64_t floor = scale_from_environment() >= 1 ? 4 : 1;
+  EXPECT_GE(counts.rigid_rigid, floor);
+  EXPECT_GE(counts.rigid_deformable, floor);
+  EXPECT_GE(counts.rigid_fixed, floor);
+  if (expect_times) EXPECT_GE(counts.with_time, floor);
+}
+
+TEST(SceneRigid, TurnsWithTranslationEqualBruteForce) {
+  random_scenes_equal_brute_force(0, TurnStyle{90, false, 0.5}, "turns with translation", false);
+}
+
+TEST(SceneRigid, PureRotationsEqualBruteForce) {
+  // Rigid-static pairs of a pure rotation have a contact time (RigidCcdResult::has_time).
+  random_scenes_equal_brute_force(1, TurnStyle{120, true, 0}, "pure rotations", true);
+}
+
+TEST(SceneRigid, LargeAnglesEqualBruteForce) {
+  random_scenes_equal_brute_force(2, TurnStyle{175, false, 0.2}, "angles up to 175 degrees",
+                                  false);
+}
+
+TEST(SceneRigid, OptionsPassThrough) {
+  // t_max < 1, a TOI width, the exact mode, one thread: each as the per-query function.
+  Rng rng(test_seed() + 3);
+  std::uint64_t contacts = 0;
+  for (int s = 0; s < static_cast<int>(scaled_count(1)); ++s) {
+    const Bodies bodies = random_bodies(rng, TurnStyle{100, false, 0.4});
+    SceneOptions o;
+    o.ccd.t_max = 0.625;
+    SCOPED_TRACE("t_max 0.625, scene " + std::to_string(s));
+    contacts += check(bodies, o).contacts.size();
+    o.ccd.t_max = 1;
+    o.ccd.toi_width = 1e-3;
+    o.max_threads = 1;
+    SCOPED_TRACE("toi_width 1e-3");
+    check(bodies, o);
+    o.ccd.toi_width = 0;
+    o.ccd.mode = Mode::exact;
+    SCOPED_TRACE("exact mode");
+    contacts += check(bodies, o).contacts.size();
+  }
+  EXPECT_GT(contacts, 0u);
+}
+
+TEST(SceneRigid, ResultsDoNotDependOnThreadCount) {
+  Rng rng(test_seed() + 4);
+  const Bodies bodies = random_bodies(rng, TurnStyle{150, false, 0.5});
+  Scene scene = make_scene(bodies);
+  SceneOptions one;
+  one.max_threads = 1;
+  const SceneResult base = scene.find_contacts(one);
+  for (int threads : {2, 3}) {
+    SceneOptions o;
+    o.max_threads = threads;
+    EXPECT_TRUE(same_full_contacts(scene.find_contacts(o).contacts, base.contacts));
+    EXPECT_TRUE(same_full(scene.earliest_contact(o).contact, base.earliest));
+  }
+}
+
+TEST(SceneRigid, SteppingRefitsTheArcBoxes) {
+  // One scene, new motions each step: the same as a fresh scene each time (refit, not stale).
+  // Every other step a body starts from the pose the previous step ended in (end_positions,
+  // through the overload with positions).
+  Rng rng(test_seed() + 5);
+  Bodies bodies = random_bodies(rng, TurnStyle{60, false, 0.3});
+  Scene scene = make_scene(bodies);
+  std::uint64_t contacts = 0;
+  for (int step = 0; step < 4; ++step) {
+    SCOPED_TRACE("step " + std::to_string(step));
+    for (MeshId b : {0u, 1u}) {
+      bodies[b].motion = random_turn(rng, centre_of(bodies[b].start),
+                                     TurnStyle{step % 2 ? 160.0 : 20.0, step % 3 == 0, 0.6});
+      if (step % 2) {
+        bodies[b].start = scene.end_positions(b);
+        scene.set_rigid_motion(b, bodies[b].start, bodies[b].motion);
+      } else {
+        scene.set_rigid_motion(b, bodies[b].motion);
+      }
+    }
+    const RigidReference ref = brute_force(bodies, CcdOptions{}, true);
+    EXPECT_TRUE(same_full_contacts(scene.find_contacts().contacts, ref.contacts));
+    EXPECT_TRUE(same_full(scene.earliest_contact().contact, earliest(ref.contacts)));
+    contacts += ref.contacts.size();
+  }
+  EXPECT_GT(contacts, 0u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. The scene's rules for rigid bodies
+
+TEST(SceneRigid, NoPairWithinOneRigidBody) {
+  // Two triangles that cross each other (and touch along a shared edge region): as one
+  // deformable mesh with self-collision they are in contact; as one rigid body never.
+  MeshSpec m;
+  m.start.resize(6, 3);
+  m.start << 0, 0, 0, 1, 0, 0, 0, 1, 0,  //
+      0.25, 0.25, -0.5, 0.25, 0.25, 0.5, 0.5, 0.1, 0;
+  m.triangles.resize(2, 3);
+  m.triangles << 0, 1, 2, 3, 4, 5;
+  m.end = m.start;
+  Bodies deformable{body_of(Kind::deformable, m)};
+  EXPECT_FALSE(check(deformable).contacts.empty());  // the crossing is a contact
+  Bodies rigid{body_of(Kind::rigid, m)};
+  rigid[0].motion = RigidMotion::turn(Vector3d(0.1, 0.2, 0), Vector3d(0, 0, 1), 1.0);
+  Scene scene = make_scene(rigid);
+  SceneOptions o;
+  o.record_candidates = true;
+  const SceneResult r = scene.find_contacts(o);
+  EXPECT_TRUE(r.contacts.empty());
+  EXPECT_TRUE(r.candidates.empty());
+  EXPECT_FALSE(scene.earliest_contact().collides);
+  // Two copies as two rigid bodies meet (rigid-rigid pairs are tested).
+  rigid.push_back(rigid[0]);
+  EXPECT_FALSE(check(rigid).contacts.empty());
+}
+
+TEST(SceneRigid, ZeroRotationEqualsMovingMeshWithTranslatedEnds) {
+  // q = 0: every point of the body moves on the line from x0 to x0 + d. With dyadic positions
+  // and translation, x0 + d is exact, and the moving mesh with those end positions gives the
+  // same contacts and TOIs (the rigid path with q = 0 is the linear one).
+  Rng rng(test_seed() + 6);
+  std::uint64_t contacts = 0;
+  for (int s = 0; s < static_cast<int>(scaled_count(12)); ++s) {
+    SCOPED_TRACE("scene " + std::to_string(s));
+    Bodies bodies = random_bodies(rng, TurnStyle{0, false, 0.6});
+    Bodies linear = bodies;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      quantize(bodies[i].start, 6);
+      quantize(bodies[i].end, 6);
+      if (bodies[i].kind == Kind::fixed) bodies[i].end = bodies[i].start;
+    }
+    for (MeshId b : {0u, 1u}) {
+      RigidMotion& m = bodies[b].motion;
+      m.cayley.setZero();
+      for (int k = 0; k < 3; ++k) m.translation[k] = std::ldexp(std::round(std::ldexp(m.translation[k], 6)), -6);
+      m.pivot = Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    }
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      linear[i] = bodies[i];
+      if (bodies[i].kind == Kind::rigid) {
+        linear[i].kind = Kind::deformable;
+        linear[i].end = bodies[i].start.rowwise() + bodies[i].motion.translation.transpose();
+      }
+    }
+    // Same pairs: the rigid bodies' self-pairs are left out of the linear scene.
+    SceneOptions o;
+    o.self_collision = false;
+    Scene rigid_scene = make_scene(bodies), linear_scene = make_scene(linear);
+    const SceneResult r = rigid_scene.find_contacts(o), l = linear_scene.find_contacts(o);
+    EXPECT_TRUE(same_full_contacts(r.contacts, l.contacts));
+    EXPECT_TRUE(same_full(rigid_scene.earliest_contact(o).contact, l.earliest));
+    contacts += r.contacts.size();
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GE(contacts, scaled_count(20));
+}
+
+TEST(SceneRigid, PairsWithoutRigidBodiesAreUnchanged) {
+  // Adding a rigid body far away changes no answer of the other pairs (and their time is s).
+  Rng rng(test_seed() + 7);
+  std::uint64_t contacts = 0;
+  for (int s = 0; s < static_cast<int>(scaled_count(10)); ++s) {
+    const SceneSpec spec = random_scene(rng);
+    Scene plain = make_scene(spec);  // scene_support's: no rigid body
+    const SceneResult base = plain.find_contacts();
+    Bodies bodies;
+    for (const MeshSpec& m : spec) bodies.push_back(body_of(m.is_static ? Kind::fixed : Kind::deformable, m));
+    MeshSpec far = box_mesh(Vector3d(50, 50, 50), Vector3d(51, 51, 51));
+    bodies.push_back(body_of(Kind::rigid, far));
+    bodies.back().motion = RigidMotion::turn(Vector3d(50.5, 50.5, 50.5), Vector3d(1, 2, 3), 2.5);
+    Scene with_body = make_scene(bodies);
+    const SceneResult r = with_body.find_contacts();
+    EXPECT_TRUE(same_full_contacts(r.contacts, base.contacts));
+    for (const SceneContact& c : base.contacts) {
+      EXPECT_TRUE(c.has_time);
+      EXPECT_EQ(c.time_lo, c.toi_lo);
+      EXPECT_EQ(c.time_hi, c.toi_hi);
+    }
+    EXPECT_TRUE(same_full(with_body.earliest_contact().contact, base.earliest));
+    contacts += base.contacts.size();
+  }
+  EXPECT_GT(contacts, 0u);
+}
+
+TEST(SceneRigid, EarliestContactSkipsPairsThatCannotLowerTheBound) {
+  // A rigid grid turning down through a static grid: many colliding pairs; the earliest search
+  // decides far fewer pairs than there are candidates, and still finds the earliest.
+  MeshSpec plate = grid(9, 9, Vector3d(-1, -1, 0.05), Vector3d(2, 0, 0), Vector3d(0, 2, 0));
+  MeshSpec floor = grid(9, 9, Vector3d(-1.2, -1.2, 0), Vector3d(2.4, 0, 0), Vector3d(0, 2.4, 0));
+  Bodies bodies{body_of(Kind::rigid, plate), body_of(Kind::fixed, floor)};
+  // Tilt by 0.7 rad about the y axis through the edge x = -1: the far edge (x = 1) sweeps down
+  // through the floor early (near s = 0.034), the rest of the plate later.
+  bodies[0].motion = RigidMotion::turn(Vector3d(-1, 0, 0.05), Vector3d(0, 1, 0), 0.7);
+  const RigidReference ref = check(bodies);
+  Scene scene = make_scene(bodies);
+  const SceneResult all = scene.find_contacts();
+  const EarliestContact first = scene.earliest_contact();
+  const std::uint64_t candidates = all.stats.vertex_face_candidates + all.stats.edge_edge_candidates;
+  std::cout << "[ info     ] " << ref.contacts.size() << " contacts, " << candidates
+            << " candidates, earliest_contact decided " << first.stats.narrow_phase_tests << "\n";
+  EXPECT_GT(ref.contacts.size(), 20u);
+  EXPECT_LT(first.stats.narrow_phase_tests, candidates / 2);
+  EXPECT_TRUE(same_full(first.contact, all.earliest));
+}
+
+TEST(SceneRigid, StaticSchemeRunsOnRigidBodies) {
+  // The older scheme (boxes at s = 0 and at s = 1) sees a subset of the candidates; every
+  // contact it reports is one of the swept scheme's.
+  Rng rng(test_seed() + 8);
+  for (int s = 0; s < 2; ++s) {
+    Scene scene = make_scene(random_bodies(rng, TurnStyle{90, false, 0.5}));
+    SceneOptions o;
+    const SceneResult swept = scene.find_contacts(o);
+    o.broad_phase = BroadPhase::static_bvh;
+    const SceneResult instants = scene.find_contacts(o);
+    for (const SceneContact& c : instants.contacts) {
+      const auto it = std::find_if(swept.contacts.begin(), swept.contacts.end(),
+                                   [&](const SceneContact& d) { return d.pair == c.pair; });
+      ASSERT_NE(it, swept.contacts.end()) << describe(c);
+      EXPECT_TRUE(same_full(*it, c));
+    }
+  }
+}
+
+TEST(SceneRigid, QueriesOfPairs) {
+  Rng rng(test_seed() + 9);
+  const Bodies bodies = random_bodies(rng, TurnStyle{90, false, 0.5});
+  Scene scene = make_scene(bodies);
+  const SceneResult r = scene.find_contacts();
+  ASSERT_FALSE(r.contacts.empty());
+  for (const SceneContact& c : r.contacts) {
+    const bool rigid = bodies[c.pair.first_mesh].kind == Kind::rigid ||
+                       bodies[c.pair.second_mesh].kind == Kind::rigid;
+    if (c.pair.type == QueryType::vertex_face) {
+      const RigidCcdResult d = vertex_face_ccd(scene.rigid_vertex_face_query(c.pair));
+      EXPECT_EQ(d.ccd.toi_lo, c.toi_lo);
+      if (rigid) EXPECT_THROW(scene.vertex_face_query(c.pair), std::invalid_argument);
+    } else {
+      const RigidCcdResult d = edge_edge_ccd(scene.rigid_edge_edge_query(c.pair));
+      EXPECT_EQ(d.ccd.toi_lo, c.toi_lo);
+      if (rigid) EXPECT_THROW(scene.edge_edge_query(c.pair), std::invalid_argument);
+    }
+  }
+  EXPECT_TRUE(scene.is_rigid(0));
+  EXPECT_FALSE(scene.is_rigid(2));
+  EXPECT_FALSE(scene.is_static(0));
+  EXPECT_EQ(scene.rigid_motion(1).cayley, bodies[1].motion.cayley);
+  // end_positions of a rigid body: position_at(motion, x, 1), for display.
+  const Vector3d x0 = point(bodies[0].start, 3);
+  EXPECT_EQ(point(scene.end_positions(0), 3), position_at(bodies[0].motion, x0, 1.0));
+}
+
+TEST(SceneRigid, BadInputThrows) {
+  MeshSpec box = box_mesh(Vector3d(0, 0, 0), Vector3d(1, 1, 1));
+  Scene scene;
+  const MeshId body = scene.add_rigid_body(box.start, box.triangles);
+  const MeshId fixed = scene.add_static_mesh(box.start, box.triangles);
+  const MeshId moving = scene.add_mesh(box.start, box.triangles);
+  RigidMotion ok = RigidMotion::turn(Vector3d(0.5, 0.5, 0.5), Vector3d(0, 0, 1), 0.3);
+  EXPECT_NO_THROW(scene.set_rigid_motion(body, ok));
+  EXPECT_THROW(scene.set_rigid_motion(fixed, ok), std::invalid_argument);
+  EXPECT_THROW(scene.set_rigid_motion(moving, ok), std::invalid_argument);
+  EXPECT_THROW(scene.set_rigid_motion(7, ok), std::invalid_argument);
+  EXPECT_THROW(scene.set_motion(body, box.start, box.start), std::invalid_argument);
+  EXPECT_THROW(scene.rigid_motion(moving), std::invalid_argument);
+  for (Vector3d RigidMotion::*field :
+       {&RigidMotion::pivot, &RigidMotion::translation, &RigidMotion::cayley})
+    for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+      RigidMotion m = ok;
+      (m.*field)[1] = bad;
+      EXPECT_THROW(scene.set_rigid_motion(body, m), std::invalid_argument);
+    }
+  EXPECT_EQ(scene.rigid_motion(body).cayley, ok.cayley);  // a refused motion changes nothing
+  // The overload with new start positions.
+  Positions moved = box.start.array() + 0.5;
+  EXPECT_NO_THROW(scene.set_rigid_motion(body, moved, ok));
+  EXPECT_EQ(scene.start_positions(body), moved);
+  EXPECT_THROW(scene.set_rigid_motion(body, Positions(box.start.topRows(7)), ok),
+               std::invalid_argument);
+  Positions non_finite = box.start;
+  non_finite(4, 2) = HUGE_VAL;
+  EXPECT_THROW(scene.set_rigid_motion(body, non_finite, ok), std::invalid_argument);
+  EXPECT_THROW(scene.set_rigid_motion(moving, box.start, ok), std::invalid_argument);
+  RigidMotion nan_motion = ok;
+  nan_motion.pivot.x() = std::nan("");
+  EXPECT_THROW(scene.set_rigid_motion(body, box.start, nan_motion), std::invalid_argument);
+  EXPECT_EQ(scene.start_positions(body), moved);  // refused calls change nothing
+  Positions bad_positions = box.start;
+  bad_positions(2, 1) = std::nan("");
+  EXPECT_THROW(scene.add_rigid_body(bad_positions, box.triangles), std::invalid_argument);
+  Triangles bad_triangles = box.triangles;
+  bad_triangles(0, 0) = 8;
+  EXPECT_THROW(scene.add_rigid_body(box.start, bad_triangles), std::invalid_argument);
+  // Minimum separation and float_only have no rigid test.
+  SceneOptions o;
+  o.min_separation = 1e-3;
+  try {
+    scene.find_contacts(o);
+    ADD_FAILURE() << "min_separation with a rigid body did not throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("rigid"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(scene.earliest_contact(o), std::invalid_argument);
+  o.min_separation = 0;
+  o.ccd.mode = Mode::float_only;
+  EXPECT_THROW(scene.find_contacts(o), std::invalid_argument);
+  EXPECT_THROW(scene.earliest_contact(o), std::invalid_argument);
+  // Without a rigid body both are allowed as before.
+  Scene plain;
+  plain.add_mesh(box.start, box.triangles);
+  EXPECT_NO_THROW(plain.find_contacts(o));
+  o.ccd.mode = Mode::filtered;
+  o.min_separation = 1e-3;
+  EXPECT_NO_THROW(plain.find_contacts(o));
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3. The arc boxes (core/src/scene/rigid_boxes.hpp) hold the exact positions
+
+using Q3 = std::array<mpq_class, 3>;
+
+/// The exact position at rational s, from the matrix form C(v) = ((1 - v.v) I + 2 v v^T +
+/// 2 [v]x) / (1 + v.v) (not the polynomial expansion the library uses).
+Q3 exact_position(const RigidMotion& m, const Vector3d& x0, const mpq_class& s) {
+  Q3 c, d, q, r;
+  for (int k = 0; k < 3; ++k) {
+    c[k] = m.pivot[k];
+    d[k] = m.translation[k];
+    q[k] = m.cayley[k];
+    r[k] = mpq_class(x0[k]) - c[k];
+  }
+  const Q3 v{s * q[0], s * q[1], s * q[2]};
+  const mpq_class vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  const mpq_class vr = v[0] * r[0] + v[1] * r[1] + v[2] * r[2];
+  const Q3 vxr{v[1] * r[2] - v[2] * r[1], v[2] * r[0] - v[0] * r[2], v[0] * r[1] - v[1] * r[0]};
+  Q3 x;
+  for (int k = 0; k < 3; ++k)
+    x[k] = c[k] + s * d[k] + ((1 - vv) * r[k] + 2 * v[k] * vr + 2 * vxr[k]) / (1 + vv);
+  return x;
+}
+
+/// lo <= x <= hi, the ends possibly infinite.
+bool inside(double lo, const mpq_class& x, double hi) {
+  const bool above = lo == -HUGE_VAL || (lo != HUGE_VAL && mpq_class(lo) <= x);
+  const bool below = hi == HUGE_VAL || (hi != -HUGE_VAL && x <= mpq_class(hi));
+  return !std::isnan(lo) && !std::isnan(hi) && above && below;
+}
+
+scene::Box arc_box(const RigidMotion& m, const Vector3d& x0, double s_lo, double s_hi) {
+  const scene::Pieces ends = scene::pieces_for(m, s_lo, s_hi);
+  const filters::RoundingGuard upward;
+  scene::Box box = scene::empty_box();
+  scene::grow_by_arc(box, scene::arc_point(m, x0), scene::arc_pieces(m.cayley, ends));
+  return box;
+}
+
+TEST(SceneRigidBoxes, ArcBoxesHoldEveryExactPosition) {
+  Rng rng(test_seed() + 10);
+  std::uint64_t checked = 0;
+  double worst_slack = 0;  // box width over the sampled extent's, less 1, relative to |x0 - c|
+  const int motions = static_cast<int>(scaled_count(300));
+  for (int i = 0; i < motions; ++i) {
+    const double scale = std::array<double, 4>{1.0, 1e-7, 3e5, 1.0}[i % 4];
+    const double degrees = std::array<double, 5>{0, 5, 45, 170, 179.9}[i % 5];
+    const Vector3d pivot = scale * Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    Vector3d d = Vector3d::Zero();
+    if (i % 3 != 0) d = scale * Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    const RigidMotion m = degrees == 0 ? RigidMotion{pivot, d, Vector3d::Zero()}
+                                       : RigidMotion::turn(pivot, random_unit(rng),
+                                                           (i % 2 ? 1 : -1) * degrees * M_PI / 180, d);
+    const Vector3d x0 = pivot + scale * Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    const double window = i % 7 == 0 ? uniform(rng, 0, 1) : 1.0;
+    const scene::Box box = arc_box(m, x0, 0.0, window);
+    const scene::Pieces pieces = scene::pieces_for(m, 0.0, window);
+    // Rational s: a fine uniform grid over the window and every piece end.
+    std::vector<mpq_class> samples;
+    const mpq_class w(window);
+    for (int k = 0; k <= 256; ++k) samples.push_back(w * k / 256);
+    for (int k = 0; k <= pieces.count; ++k) samples.push_back(mpq_class(pieces.ends[k]));
+    std::array<mpq_class, 3> lo, hi;
+    bool first = true;
+    for (const mpq_class& s : samples) {
+      const Q3 x = exact_position(m, x0, s);
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_TRUE(inside(box.lo[k], x[k], box.hi[k]))
+            << "motion " << i << " axis " << k << " s " << s.get_d() << ": " << x[k].get_d()
+            << " outside [" << box.lo[k] << ", " << box.hi[k] << "]";
+        if (first || x[k] < lo[k]) lo[k] = x[k];
+        if (first || x[k] > hi[k]) hi[k] = x[k];
+      }
+      first = false;
+      ++checked;
+    }
+    // Not so loose as to be useless: within 15% of |x0 - c| + |d| of the sampled extent.
+    const double size = (x0 - pivot).norm() + d.norm();
+    for (int k = 0; k < 3; ++k) {
+      const double slack = ((box.hi[k] - box.lo[k]) - mpq_class(hi[k] - lo[k]).get_d()) / size;
+      worst_slack = std::max(worst_slack, slack);
+    }
+  }
+  std::cout << "[ info     ] " << checked << " exact positions inside their boxes; widest box "
+            << "exceeds the sampled extent by " << worst_slack << " of |x0 - c| + |d|\n";
+  EXPECT_LT(worst_slack, 0.15);
+}
+
+TEST(SceneRigidBoxes, PiecesCoverTheRange) {
+  for (double degrees : {0.0, 1.0, 30.0, 90.0, 170.0, 179.99}) {
+    const RigidMotion m =
+        degrees == 0 ? RigidMotion{} : RigidMotion::turn(Vector3d::Zero(), Vector3d(1, 1, 0), degrees * M_PI / 180);
+    for (const auto& [lo, hi] : std::vector<std::pair<double, double>>{{0, 1}, {0, 0.3}, {1, 1}, {0, 0}}) {
+      const scene::Pieces p = scene::pieces_for(m, lo, hi);
+      ASSERT_GE(p.count, 1);
+      ASSERT_LE(p.count, scene::Pieces::max_count);
+      EXPECT_EQ(p.ends[0], lo);
+      EXPECT_EQ(p.ends[p.count], hi);
+      for (int k = 0; k < p.count; ++k) EXPECT_LE(p.ends[k], p.ends[k + 1]);
+    }
+  }
+  // Equal turns per piece: 170 degrees in 31 pieces of at most pi / 32, no rotation in one.
+  EXPECT_EQ(scene::pieces_for(RigidMotion::turn(Vector3d::Zero(), Vector3d(0, 0, 1), 170 * M_PI / 180), 0, 1).count, 31);
+  EXPECT_EQ(scene::pieces_for(RigidMotion{}, 0, 1).count, 1);
+}
+
+TEST(SceneRigidBoxes, OverflowWidensInsteadOfShrinking) {
+  // |q| = 1e300: |q|^2 overflows; the box must still hold the positions (here: the whole axis
+  // where the arithmetic gave up).
+  RigidMotion m;
+  m.cayley = Vector3d(1e300, 0, 0);
+  const Vector3d x0(0, 1, 0);
+  const scene::Box box = arc_box(m, x0, 0, 1);
+  for (const mpq_class& s : {mpq_class(0), mpq_class(1, 1000), mpq_class(1)}) {
+    const Q3 x = exact_position(m, x0, s);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_TRUE(inside(box.lo[k], x[k], box.hi[k])) << k;
+  }
+}
+
+}  // namespace
+}  // namespace exactccd::test
