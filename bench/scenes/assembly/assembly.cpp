@@ -147,13 +147,16 @@ VariantResult run_variant(const Config& c, const std::string& name, double turn_
     const std::string where = name + ", " + step.phase + " step " + std::to_string(step.index);
 
     // The exact decision, timed (broad phase, then every candidate).
-    std::vector<double> broad_ms, narrow_ms;
+    std::vector<double> broad_ms, narrow_ms, boxes_ms, cylinders_ms, traversal_ms;
     Candidates candidates;
     StepDecision exact;
     for (int r = 0; r < std::max(1, c.repeat); ++r) {
       const auto t0 = Clock::now();
       candidates = exact_bp.rigid_step(start, step.motion);
       broad_ms.push_back(ms_since(t0));
+      boxes_ms.push_back(exact_bp.last_timing().boxes_ms);
+      cylinders_ms.push_back(exact_bp.last_timing().cylinders_ms);
+      traversal_ms.push_back(exact_bp.last_timing().traversal_ms);
       const auto t1 = Clock::now();
       exact = decide_rigid(m, start, step.motion, candidates);
       narrow_ms.push_back(ms_since(t1));
@@ -173,6 +176,10 @@ VariantResult run_variant(const Config& c, const std::string& name, double turn_
                     {"filter", exact.decided_by_filter},
                     {"exact", exact.decided_by_exact}}},
                   {"ms_broad_phase", median(broad_ms)},
+                  {"ms_broad_phase_parts",
+                   {{"arc_boxes", median(boxes_ms)},
+                    {"cylinder_ranges", median(cylinders_ms)},
+                    {"refit_and_traversal", median(traversal_ms)}}},
                   {"ms_narrow_phase", median(narrow_ms)},
                   {"ms", total_ms}};
     if (exact.collides) j["exact"]["earliest"] = describe(exact.earliest, key, lock, m);
@@ -239,6 +246,27 @@ VariantResult run_variant(const Config& c, const std::string& name, double turn_
         f["angle_hi"] = step.angle_from + e.time_hi * (step.angle_to - step.angle_from);
       }
       f["pairs_in_contact_this_step"] = exact.contacts.size();
+      // Where it touches (doubles, for the picture): the vertex of a vertex-face pair at the
+      // contact time, the two edges' closest points for an edge-edge pair.
+      const auto at = [&](const Eigen::Vector3d& x0) {
+        return position_at(step.motion, x0, e.toi_lo);
+      };
+      if (e.pair.kind == PairKind::lock_vertex_key_face) {
+        f["contact_point"] = vec(lock.mesh.positions.row(e.pair.lock).transpose());
+      } else if (e.pair.kind == PairKind::key_vertex_lock_face) {
+        f["contact_point"] = vec(at(start.row(e.pair.key).transpose()));
+      } else {
+        const Eigen::Vector3d a0 = at(start.row(key_edges(e.pair.key, 0)).transpose()),
+                              a1 = at(start.row(key_edges(e.pair.key, 1)).transpose()),
+                              b0 = lock.mesh.positions.row(lock_edges(e.pair.lock, 0)).transpose(),
+                              b1 = lock.mesh.positions.row(lock_edges(e.pair.lock, 1)).transpose();
+        // Closest points of the two lines (they meet at the contact).
+        const Eigen::Vector3d u = a1 - a0, v = b1 - b0, w = a0 - b0;
+        const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), uw = u.dot(w), vw = v.dot(w);
+        const double den = uu * vv - uv * uv;
+        const double t = den != 0 ? (uv * vw - vv * uw) / den : 0.0;
+        f["contact_point"] = vec(a0 + t * u);
+      }
       // Picture data: the bit's corners and one vertex of the barrel's inner wall, along the
       // arc and the chord of the step; the key's start pose.
       f["paths"] = paths(start, step.motion, bit_vertices, 64);

@@ -1,6 +1,7 @@
 #include "bench/scenes/assembly/rigid_broad_phase.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -13,6 +14,12 @@ namespace exactccd::assembly {
 namespace {
 
 using filters::Interval;
+using Clock = std::chrono::steady_clock;
+
+double ms(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
 using Eigen::Vector3d;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -321,11 +328,13 @@ RigidBroadPhase::RigidBroadPhase(const Positions& static_positions,
 
 Candidates RigidBroadPhase::rigid_step(const Positions& start, const RigidMotion& motion,
                                        bool use_cylinders) {
+  const auto t0 = Clock::now();
   std::vector<Box5> v(static_cast<std::size_t>(start.rows()));
   for (Eigen::Index i = 0; i < start.rows(); ++i)
     v[static_cast<std::size_t>(i)] = arc_box(motion, start.row(i).transpose());
   std::vector<Box5> e, f;
   primitive_boxes(v, moving_edges_, moving_triangles_, e, f);
+  const auto t1 = Clock::now();
   if (use_cylinders && axis_ && turns_about(motion, *axis_)) {
     // Distances to the axis stay; the axial coordinate moves by s d.
     const double d = motion.translation[axis_->index];
@@ -334,7 +343,10 @@ Candidates RigidBroadPhase::rigid_step(const Positions& start, const RigidMotion
     for (std::size_t i = 0; i < e.size(); ++i) set_cylinder(e[i], swept_axially(r.edges[i], d));
     for (std::size_t i = 0; i < f.size(); ++i) set_cylinder(f[i], swept_axially(r.faces[i], d));
   }
-  return traverse(v, e, f);
+  const auto t2 = Clock::now();
+  Candidates c = traverse(v, e, f);
+  timing_ = {ms(t0, t1), ms(t1, t2), ms(t2, Clock::now())};
+  return c;
 }
 
 Candidates RigidBroadPhase::linear_step(const Positions& start, const Positions& end) {

@@ -118,6 +118,13 @@ class RigidBroadPhase {
   /// `end` (the chord approximation): swept boxes only.
   Candidates linear_step(const Positions& start, const Positions& end);
 
+  /// Where the last step's time went (milliseconds): boxes of the moving primitives (arc boxes
+  /// and hulls), their cylinder ranges, the hierarchies' refit and traversal.
+  struct Timing {
+    double boxes_ms = 0, cylinders_ms = 0, traversal_ms = 0;
+  };
+  const Timing& last_timing() const { return timing_; }
+
   const Edges& static_edges() const { return static_edges_; }
   const Edges& moving_edges() const { return moving_edges_; }
 
@@ -130,6 +137,7 @@ class RigidBroadPhase {
   std::optional<Axis> axis_;
   Bvh5 static_vertices_, static_edges_bvh_, static_faces_;
   Bvh5 moving_vertices_, moving_edges_bvh_, moving_faces_;
+  Timing timing_;
 };
 
 // ---- Bvh5::for_each_overlap --------------------------------------------------------------------
