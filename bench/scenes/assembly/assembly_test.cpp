@@ -5,10 +5,12 @@
 //    the matrix form of the Cayley rotation, over the rationals), and are not vacuous;
 //  * cylinder ranges hold exact points of the primitives, at rest and along a motion about the
 //    axis;
-//  * at a coarse resolution, every step of the plan decided through the broad phase equals
-//    every pair decided without it (brute force), and the first contact is confirmed: the
-//    coplanarity of its four points changes sign across the enclosure, the primitives are
-//    apart (exactly, CGAL) just before it and interpenetrate just after it.
+//  * the broad phase keeps every pair that meets (random soups, motions about an axis, all pairs
+//    decided); at a coarse resolution (8 segments), the plan's last insertion steps and every
+//    turn decided through the broad phase equal every pair decided without it (brute force),
+//    and the first contact is confirmed: the coplanarity of its four points changes sign across
+//    the enclosure, the primitives are apart (exactly, CGAL) just before it and interpenetrate
+//    just after it.
 #include <gtest/gtest.h>
 #include <gmpxx.h>
 
@@ -150,7 +152,8 @@ TEST(AssemblyMeshes, TheTightFitsHaveTheDesignedClearance) {
       return std::sqrt(best);
     };
     // Radial gaps between the circumscribed circle inside and the inscribed one outside.
-    const double pin_barrel = range_of(key, "barrel inner wall", true) - range_of(lock, "pin", false);
+    const double pin_barrel =
+        range_of(key, "barrel inner wall", true) - range_of(lock, "pin", false);
     const double bit_chamber =
         range_of(lock, "chamber inner wall", true) - range_of(key, "bit", false);
     for (double gap : {pin_barrel, bit_chamber}) {

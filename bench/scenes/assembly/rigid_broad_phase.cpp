@@ -209,7 +209,8 @@ CylinderRange point_range(const Axis& axis, const Vector3d& p) {
 CylinderRange segment_range(const Axis& axis, const Vector3d& a, const Vector3d& b) {
   const filters::RoundingGuard upward;
   const Across pa = across(axis, a), pb = across(axis, b);
-  return {segment_rho2_lo(pa, pb, same_across(axis, a, b)), std::max(norm2(pa).sup(), norm2(pb).sup()),
+  return {segment_rho2_lo(pa, pb, same_across(axis, a, b)),
+          std::max(norm2(pa).sup(), norm2(pb).sup()),
           std::min(a[axis.index], b[axis.index]), std::max(a[axis.index], b[axis.index])};
 }
 
