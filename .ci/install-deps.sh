@@ -10,6 +10,9 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed doxygen
   # z3: the independent check of minimum-separation CCD (python/tests/test_min_separation.py).
   python3-z3
+  # FCL 0.7: the comparison of rigid-body CCD with FCL's continuous collision
+  # (bench/fcl_comparison; built only when CMake finds it, the library never uses it).
+  libfcl-dev
 )
 if [[ "${1:-}" == "--with-plots" ]]; then packages+=(python3-matplotlib); fi
 # .ci/sanitizers.sh: clang with its sanitizer and libFuzzer runtimes, llvm-symbolizer for traces.

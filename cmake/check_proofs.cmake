@@ -30,7 +30,8 @@ endforeach()
 # Known tests: programs, ctest names, GoogleTest suites and cases.
 set(tests "")
 file(GLOB test_sources "${SOURCE_DIR}/tests/*.cpp" "${SOURCE_DIR}/tests/*/*.cpp"
-                       "${SOURCE_DIR}/bench/*/*_test.cpp")
+                       "${SOURCE_DIR}/bench/*/*_test.cpp"
+                       "${SOURCE_DIR}/bench/*/*/*_test.cpp")
 foreach(src IN LISTS test_sources)
   get_filename_component(program "${src}" NAME_WE)
   list(APPEND tests "${program}")

@@ -66,7 +66,8 @@ SideMotion other_side(Draw& draw, const RigidQueryOptions& o, const Vector3d* at
   }
   // A rigid turn whose pose at s0 is close to the identity's: find x0 with x(s0) = at_s0 by
   // inverting the motion at s0 (in doubles; the query is whatever those doubles are).
-  const RigidMotion m = draw.turn(o.max_angle_degrees / 2, !o.pure_rotation, 1.0);
+  const RigidMotion m =
+      draw.turn(o.pure_translation ? 0.0 : o.max_angle_degrees / 2, !o.pure_rotation, 1.0);
   RigidMotion inverse;  // x = c + s0 d + R (x0 - c)  =>  x0 = c + R^T (x - c - s0 d)
   inverse.pivot = m.pivot;
   inverse.cayley = -s0 * m.cayley;  // C(-v) = C(v)^T
@@ -86,7 +87,8 @@ std::vector<RigidVertexFaceQuery> random_rigid_vertex_face(std::uint64_t seed, s
     q.a = draw.point(1.0);
     q.b = draw.point(1.0);
     q.c = draw.point(1.0);
-    const RigidMotion face = draw.turn(o.max_angle_degrees, !o.pure_rotation, 1.0);
+    const RigidMotion face =
+        draw.turn(o.pure_translation ? 0.0 : o.max_angle_degrees, !o.pure_rotation, 1.0);
     q.face = SideMotion::of(face);
     const double s0 = draw.uniform(0.0, 1.0);
     const double u = draw.uniform(0.0, 1.0);
@@ -111,7 +113,8 @@ std::vector<RigidEdgeEdgeQuery> random_rigid_edge_edge(std::uint64_t seed, std::
     RigidEdgeEdgeQuery q;
     q.ea0 = draw.point(1.0);
     q.ea1 = draw.point(1.0);
-    const RigidMotion edge = draw.turn(o.max_angle_degrees, !o.pure_rotation, 1.0);
+    const RigidMotion edge =
+        draw.turn(o.pure_translation ? 0.0 : o.max_angle_degrees, !o.pure_rotation, 1.0);
     q.edge_a = SideMotion::of(edge);
     const double s0 = draw.uniform(0.0, 1.0);
     const Vector3d a0 = position_at(edge, q.ea0, s0), a1 = position_at(edge, q.ea1, s0);

@@ -23,6 +23,10 @@ struct RigidQueryOptions {
   /// The first body's pivot stays in place (a pure rotation; FCL's screw motion with zero
   /// translation sweeps the same poses).
   bool pure_rotation = false;
+  /// Nothing turns (every Cayley vector is zero): the first body's pivot moves on a straight
+  /// line, so every point of it does (FCL's translation motion sweeps the same poses). The draws
+  /// are those of the default options, with the angles replaced by zero.
+  bool pure_translation = false;
   /// Largest |angle| of a turn in degrees (< 180).
   double max_angle_degrees = 170.0;
   /// The second body: rigid (its own turn), linear (a deformable mesh's vertices) or at rest.

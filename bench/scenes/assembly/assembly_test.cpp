@@ -1,0 +1,449 @@
+// The assembly demonstration (lock_and_key.hpp, rigid_broad_phase.hpp, assembly_step.hpp):
+//  * the meshes are closed, the plate's triangulation covers exactly the ring between its
+//    outlines, and the clearances are the designed ones;
+//  * arc boxes hold exact positions of the rigid motion at rational parameters (positions from
+//    the matrix form of the Cayley rotation, over the rationals), and are not vacuous;
+//  * cylinder ranges hold exact points of the primitives, at rest and along a motion about the
+//    axis;
+//  * the broad phase keeps every pair that meets (random soups, motions about an axis, all pairs
+//    decided); at a coarse resolution (8 segments), the plan's last insertion steps and every
+//    turn decided through the broad phase equal every pair decided without it (brute force),
+//    and the first contact is confirmed: the coplanarity of its four points changes sign across
+//    the enclosure, the primitives are apart (exactly, CGAL) just before it and interpenetrate
+//    just after it.
+#include <gtest/gtest.h>
+#include <gmpxx.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/gmpxx.h>
+#include <CGAL/intersections.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <set>
+
+#include "bench/scenes/assembly/assembly_step.hpp"
+#include "bench/scenes/assembly/lock_and_key.hpp"
+#include "bench/scenes/assembly/rigid_broad_phase.hpp"
+
+namespace {
+
+using namespace exactccd;
+using namespace exactccd::assembly;
+using Eigen::Vector3d;
+using Q3 = std::array<mpq_class, 3>;
+constexpr double kPi = 3.14159265358979323846;
+
+Q3 q3(const Vector3d& v) { return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())}; }
+
+/// x(s) = c + s d + C(s q) (x0 - c) over the rationals, C from its matrix form.
+Q3 exact_position(const RigidMotion& m, const Vector3d& x0, const mpq_class& s) {
+  const Q3 c = q3(m.pivot), d = q3(m.translation), q = q3(m.cayley), x = q3(x0);
+  const Q3 v = {s * q[0], s * q[1], s * q[2]};
+  const Q3 r = {x[0] - c[0], x[1] - c[1], x[2] - c[2]};
+  const mpq_class vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  mpq_class a[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a[i][j] = (i == j ? 1 - vv : mpq_class(0)) + 2 * v[i] * v[j];
+  a[0][1] -= 2 * v[2], a[0][2] += 2 * v[1];
+  a[1][0] += 2 * v[2], a[1][2] -= 2 * v[0];
+  a[2][0] -= 2 * v[1], a[2][1] += 2 * v[0];
+  Q3 out;
+  for (int i = 0; i < 3; ++i) {
+    mpq_class rotated = 0;
+    for (int j = 0; j < 3; ++j) rotated += a[i][j] * r[j];
+    out[i] = c[i] + s * d[i] + rotated / (1 + vv);
+  }
+  return out;
+}
+
+mpq_class rho2(const Axis& axis, const Q3& p) {
+  const int iu = axis.index == 0 ? 1 : 0, iv = axis.index == 2 ? 1 : 2;
+  const mpq_class u = p[iu] - axis.u, v = p[iv] - axis.v;
+  return u * u + v * v;
+}
+
+Vector3d row(const Positions& x, int i) { return x.row(i).transpose(); }
+
+// ---------------------------------------------------------------------------------------------
+// Meshes
+
+/// Every directed edge has exactly one reversed partner: closed, consistently oriented.
+void expect_closed(const Triangles& f, const char* what) {
+  std::multiset<std::pair<int, int>> directed;
+  for (Eigen::Index i = 0; i < f.rows(); ++i)
+    for (int k = 0; k < 3; ++k) directed.insert({f(i, k), f(i, (k + 1) % 3)});
+  std::size_t bad = 0;
+  for (const auto& [a, b] : directed)
+    if (directed.count({a, b}) != 1 || directed.count({b, a}) != 1) ++bad;
+  EXPECT_EQ(bad, 0u) << what;
+}
+
+TEST(AssemblyMeshes, ClosedPartsAndThePlateCoversItsRing) {
+  for (int segments : {16, 64, 1280}) {
+    LockDesign design;
+    design.segments = segments;
+    const PartMesh key = make_key(design), lock = make_lock(design);
+    EXPECT_EQ(key.mesh.triangles.rows(), 8 * segments + 12);
+    expect_closed(key.mesh.triangles, "key");
+    expect_closed(lock.mesh.triangles, "lock");
+    // The plate's top (z = plate_top): counterclockwise triangles whose areas add up to the
+    // outer polygon's minus the keyhole's.
+    const Dimensions d = dimensions(design);
+    const Part* plate = nullptr;
+    for (const Part& p : lock.parts)
+      if (p.name == "plate") plate = &p;
+    ASSERT_NE(plate, nullptr);
+    long double area = 0;
+    int top = 0;
+    for (int f = plate->triangle_begin; f < plate->triangle_end; ++f) {
+      const Vector3d a = row(lock.mesh.positions, lock.mesh.triangles(f, 0)),
+                     b = row(lock.mesh.positions, lock.mesh.triangles(f, 1)),
+                     c = row(lock.mesh.positions, lock.mesh.triangles(f, 2));
+      if (a.z() != d.plate_top || b.z() != d.plate_top || c.z() != d.plate_top) continue;
+      const long double twice = (static_cast<long double>(b.x()) - a.x()) * (c.y() - a.y()) -
+                                (static_cast<long double>(b.y()) - a.y()) * (c.x() - a.x());
+      EXPECT_GT(twice, 0) << "plate triangle " << f << " at " << segments << " segments";
+      area += twice / 2;
+      ++top;
+    }
+    // Polygon areas by the shoelace formula over the plate's top vertices in outline order: the
+    // keyhole's first, then the outer ring's (see make_lock).
+    std::vector<Vector3d> outline;
+    for (int v = plate->vertex_begin; v < plate->vertex_end; ++v)
+      if (lock.mesh.positions(v, 2) == d.plate_top) outline.push_back(row(lock.mesh.positions, v));
+    const std::size_t outer_n = static_cast<std::size_t>(segments),
+                      hole_n = outline.size() - outer_n;
+    const auto shoelace = [&](std::size_t first, std::size_t n) {
+      long double s = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const Vector3d& p = outline[first + k];
+        const Vector3d& q = outline[first + (k + 1) % n];
+        s += static_cast<long double>(p.x()) * q.y() - static_cast<long double>(q.x()) * p.y();
+      }
+      return s / 2;
+    };
+    const long double expected = shoelace(hole_n, outer_n) - shoelace(0, hole_n);
+    EXPECT_NEAR(static_cast<double>(area), static_cast<double>(expected), 1e-12);
+    EXPECT_EQ(static_cast<std::size_t>(top), outer_n + hole_n);  // a ring: as many as vertices
+  }
+}
+
+TEST(AssemblyMeshes, TheTightFitsHaveTheDesignedClearance) {
+  for (int segments : {16, 1280}) {
+    LockDesign design;
+    design.segments = segments;
+    const PartMesh key = make_key(design), lock = make_lock(design);
+    const Dimensions d = dimensions(design);
+    const Axis z{2, 0, 0};
+    const auto range_of = [&](const PartMesh& pm, const std::string& part, bool lower) {
+      double best = lower ? INFINITY : 0;
+      for (const Part& p : pm.parts) {
+        if (p.name != part) continue;
+        for (int f = p.triangle_begin; f < p.triangle_end; ++f) {
+          const auto t = pm.mesh.triangles.row(f);
+          const CylinderRange r = triangle_range(z, row(pm.mesh.positions, t[0]),
+                                                 row(pm.mesh.positions, t[1]),
+                                                 row(pm.mesh.positions, t[2]));
+          best = lower ? std::min(best, r.rho2_lo) : std::max(best, r.rho2_hi);
+        }
+      }
+      return std::sqrt(best);
+    };
+    // Radial gaps between the circumscribed circle inside and the inscribed one outside.
+    const double pin_barrel =
+        range_of(key, "barrel inner wall", true) - range_of(lock, "pin", false);
+    const double bit_chamber =
+        range_of(lock, "chamber inner wall", true) - range_of(key, "bit", false);
+    for (double gap : {pin_barrel, bit_chamber}) {
+      EXPECT_GT(gap, 0.99 * d.clearance) << segments;
+      EXPECT_LT(gap, 1.01 * d.clearance) << segments;
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Arc boxes and cylinder ranges
+
+TEST(AssemblyBroadPhase, ArcBoxHoldsExactPositionsAndIsTight) {
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto point = [&] { return Vector3d(u(rng), u(rng), u(rng)); };
+  int checked = 0;
+  for (int i = 0; i < 400; ++i) {
+    const double angle = (i % 4 == 0 ? 179.0 : (i % 4 == 1 ? 30.0 : 1e-3)) * u(rng) * kPi / 180;
+    const Vector3d axis = i % 3 == 0 ? Vector3d::UnitZ() : point();
+    if (axis.norm() < 1e-3 || angle == 0) continue;
+    const Vector3d translation = i % 2 ? point() : Vector3d::Zero();
+    const RigidMotion m = RigidMotion::turn(point(), axis, angle, translation);
+    const Vector3d x0 = 2 * point();
+    const Box5 box = arc_box(m, x0);
+    for (int k = 0; k <= 16; ++k) {
+      const mpq_class s(k, 16);
+      const Q3 x = exact_position(m, x0, s);
+      for (int a = 0; a < 3; ++a) {
+        ASSERT_LE(mpq_class(box.lo[a]), x[a]) << "motion " << i << " s " << s << " axis " << a;
+        ASSERT_GE(mpq_class(box.hi[a]), x[a]) << "motion " << i << " s " << s << " axis " << a;
+      }
+      ++checked;
+    }
+    // Not vacuous: for a pure rotation the box spans at most the chord plus twice the sagitta
+    // bound, far less than the circle for small angles.
+    if (translation.isZero()) {
+      const double radius = (x0 - m.pivot).norm(), q2 = m.cayley.squaredNorm();
+      const Vector3d end = position_at(m, x0, 1.0);
+      for (int a = 0; a < 3; ++a)
+        EXPECT_LE(box.hi[a] - box.lo[a],
+                  std::abs(end[a] - x0[a]) + radius * q2 + 1e-12 * (1 + radius))
+            << "motion " << i;
+    }
+  }
+  EXPECT_GT(checked, 5000);
+  // A pure translation's box is exactly its segment's.
+  RigidMotion slide;
+  slide.translation = Vector3d(0.5, -0.25, 0);
+  const Box5 b = arc_box(slide, Vector3d(1, 1, 1));
+  EXPECT_EQ(b.lo[0], 1);
+  EXPECT_EQ(b.hi[0], 1.5);
+  EXPECT_EQ(b.lo[1], 0.75);
+  EXPECT_EQ(b.hi[2], 1);
+}
+
+TEST(AssemblyBroadPhase, CylinderRangesHoldExactPointsAlongMotionsAboutTheAxis) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto point = [&] { return Vector3d(u(rng), u(rng), u(rng)); };
+  int positive_lo = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Axis axis{i % 3, 0.25 * u(rng), 0.25 * u(rng)};
+    Vector3d pivot = point();
+    pivot[axis.index == 0 ? 1 : 0] = axis.u;
+    pivot[axis.index == 2 ? 1 : 2] = axis.v;
+    Vector3d along = Vector3d::Zero(), slide = Vector3d::Zero();
+    along[axis.index] = 1;
+    slide[axis.index] = i % 2 ? 0.5 * u(rng) : 0.0;
+    const RigidMotion m = RigidMotion::turn(pivot, along, 2.5 * u(rng), slide);
+    ASSERT_TRUE(turns_about(m, axis));
+    // A triangle, and sometimes a thin or degenerate one (an edge, a point).
+    Vector3d a = point(), b = point(), c = point();
+    if (i % 5 == 0) c = b;
+    if (i % 7 == 0) b = c = a;
+    const CylinderRange t = triangle_range(axis, a, b, c), e = segment_range(axis, a, b);
+    positive_lo += t.rho2_lo > 0;
+    for (int k = 0; k <= 8; ++k) {
+      const mpq_class s(k, 8);
+      const Q3 pa = exact_position(m, a, s), pb = exact_position(m, b, s),
+               pc = exact_position(m, c, s);
+      for (int w = 0; w <= 6; ++w)
+        for (int v = 0; v + w <= 6; ++v) {
+          const mpq_class bw(w, 6), bv(v, 6), bu = 1 - bw - bv;
+          Q3 p;
+          for (int j = 0; j < 3; ++j) p[j] = bu * pa[j] + bv * pb[j] + bw * pc[j];
+          const mpq_class r2 = rho2(axis, p);
+          ASSERT_LE(mpq_class(t.rho2_lo), r2) << "triangle " << i;
+          ASSERT_GE(mpq_class(t.rho2_hi), r2) << "triangle " << i;
+          ASSERT_LE(mpq_class(t.axial_lo) + mpq_class(std::min(0.0, slide[axis.index])),
+                    p[axis.index]);
+          ASSERT_GE(mpq_class(t.axial_hi) + mpq_class(std::max(0.0, slide[axis.index])),
+                    p[axis.index]);
+          if (w == 0) {  // on the edge [a, b]
+            ASSERT_LE(mpq_class(e.rho2_lo), r2) << "segment " << i;
+            ASSERT_GE(mpq_class(e.rho2_hi), r2) << "segment " << i;
+          }
+        }
+    }
+  }
+  EXPECT_GT(positive_lo, 100);  // the lower bounds are not all the trivial 0
+  // Motions that leave the axis are recognised.
+  const Axis z{2, 0, 0};
+  EXPECT_FALSE(turns_about(RigidMotion::turn(Vector3d(0.5, 0, 0), Vector3d::UnitZ(), 0.1), z));
+  EXPECT_FALSE(turns_about(RigidMotion::turn(Vector3d::Zero(), Vector3d(0, 1, 1), 0.1), z));
+  RigidMotion sideways;
+  sideways.translation = Vector3d(1e-300, 0, 0);
+  EXPECT_FALSE(turns_about(sideways, z));
+  EXPECT_TRUE(turns_about(RigidMotion::turn(Vector3d(0, 0, 5), Vector3d::UnitZ(), 0.1), z));
+}
+
+/// Random triangles in [-1, 1]^3, as a soup.
+scenes::Mesh random_soup(std::mt19937_64& rng, int triangles) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  scenes::Mesh m;
+  m.positions.resize(3 * triangles, 3);
+  m.triangles.resize(triangles, 3);
+  for (int f = 0; f < triangles; ++f)
+    for (int k = 0; k < 3; ++k) {
+      m.positions.row(3 * f + k) << u(rng), u(rng), u(rng);
+      m.triangles(f, k) = 3 * f + k;
+    }
+  return m;
+}
+
+std::set<PairKey> keys_of(const Candidates& c) {
+  std::set<PairKey> s;
+  for (const auto& [k, l] : c.moving_vertex_static_face)
+    s.insert({PairKind::key_vertex_lock_face, k, l});
+  for (const auto& [k, l] : c.static_vertex_moving_face)
+    s.insert({PairKind::lock_vertex_key_face, k, l});
+  for (const auto& [k, l] : c.edge_edge) s.insert({PairKind::edge_edge, k, l});
+  return s;
+}
+
+Candidates all_pairs(const Positions& moving, const Triangles& moving_f, const Edges& me,
+                     const Positions& fixed, const Triangles& fixed_f, const Edges& fe);
+
+TEST(AssemblyBroadPhase, KeepsEveryPairThatMeets) {
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::size_t contacts = 0, culled = 0;
+  for (int scene = 0; scene < 24; ++scene) {
+    const scenes::Mesh fixed = random_soup(rng, 8), moving = random_soup(rng, 4);
+    const Axis axis{scene % 3, 0.5 * u(rng), 0.5 * u(rng)};
+    Vector3d pivot = Vector3d(u(rng), u(rng), u(rng)), along = Vector3d::Zero(),
+             slide = Vector3d::Zero();
+    pivot[axis.index == 0 ? 1 : 0] = axis.u;
+    pivot[axis.index == 2 ? 1 : 2] = axis.v;
+    along[axis.index] = 1;
+    slide[axis.index] = scene % 2 ? u(rng) : 0.0;
+    const RigidMotion motion = scene % 4 == 3 ? RigidMotion{pivot, slide, Vector3d::Zero()}
+                                              : RigidMotion::turn(pivot, along, 3 * u(rng), slide);
+    RigidBroadPhase bp(fixed.positions, fixed.triangles, moving.triangles, axis);
+    const Candidates c = bp.rigid_step(moving.positions, motion);
+    const Edges me = unique_edges(moving.triangles), fe = unique_edges(fixed.triangles);
+    const StepMeshes m{&moving.triangles, &me, &fixed.positions, &fixed.triangles, &fe};
+    const Candidates every =
+        all_pairs(moving.positions, moving.triangles, me, fixed.positions, fixed.triangles, fe);
+    const StepDecision all = decide_rigid(m, moving.positions, motion, every);
+    const std::set<PairKey> kept = keys_of(c);
+    for (const PairContact& p : all.contacts)
+      EXPECT_TRUE(kept.count(p.pair)) << "scene " << scene << ": a meeting pair was dropped ("
+                                      << to_string(p.pair.kind) << ")";
+    contacts += all.contacts.size();
+    culled += every.size() - c.size();
+  }
+  EXPECT_GT(contacts, 200u);  // enough pairs meet for the check to mean something
+  EXPECT_GT(culled, 5000u);   // and the broad phase does drop pairs
+}
+
+// ---------------------------------------------------------------------------------------------
+// The plan at a coarse resolution
+
+Candidates all_pairs(const Positions& moving, const Triangles& moving_f, const Edges& me,
+                     const Positions& fixed, const Triangles& fixed_f, const Edges& fe) {
+  Candidates c;
+  for (int v = 0; v < moving.rows(); ++v)
+    for (int f = 0; f < fixed_f.rows(); ++f) c.moving_vertex_static_face.push_back({v, f});
+  for (int f = 0; f < moving_f.rows(); ++f)
+    for (int v = 0; v < fixed.rows(); ++v) c.static_vertex_moving_face.push_back({f, v});
+  for (int a = 0; a < me.rows(); ++a)
+    for (int b = 0; b < fe.rows(); ++b) c.edge_edge.push_back({a, b});
+  return c;
+}
+
+using CgalPoint = CGAL::Simple_cartesian<mpq_class>::Point_3;
+CgalPoint cgal(const Q3& p) { return CgalPoint(p[0], p[1], p[2]); }
+
+/// The four points of a pair at parameter s, exactly: vertex-face (p, a, b, c) or edge-edge.
+std::array<Q3, 4> exact_points(const StepMeshes& m, const Positions& start,
+                               const RigidMotion& motion, const PairKey& p, const mpq_class& s) {
+  const RigidMotion rest;
+  if (p.kind == PairKind::edge_edge) {
+    const RigidEdgeEdgeQuery q = rigid_edge_edge(m, start, motion, p);
+    return {exact_position(motion, q.ea0, s), exact_position(motion, q.ea1, s),
+            exact_position(rest, q.eb0, s), exact_position(rest, q.eb1, s)};
+  }
+  const RigidVertexFaceQuery q = rigid_vertex_face(m, start, motion, p);
+  const RigidMotion& vm = p.kind == PairKind::key_vertex_lock_face ? motion : rest;
+  const RigidMotion& fm = p.kind == PairKind::key_vertex_lock_face ? rest : motion;
+  return {exact_position(vm, q.p, s), exact_position(fm, q.a, s), exact_position(fm, q.b, s),
+          exact_position(fm, q.c, s)};
+}
+
+int coplanarity_sign(const std::array<Q3, 4>& x) {
+  return static_cast<int>(CGAL::orientation(cgal(x[0]), cgal(x[1]), cgal(x[2]), cgal(x[3])));
+}
+
+bool touching(const PairKey& p, const std::array<Q3, 4>& x) {
+  if (p.kind == PairKind::edge_edge)
+    return CGAL::do_intersect(CGAL::Simple_cartesian<mpq_class>::Segment_3(cgal(x[0]), cgal(x[1])),
+                              CGAL::Simple_cartesian<mpq_class>::Segment_3(cgal(x[2]), cgal(x[3])));
+  return CGAL::do_intersect(cgal(x[0]), CGAL::Simple_cartesian<mpq_class>::Triangle_3(
+                                            cgal(x[1]), cgal(x[2]), cgal(x[3])));
+}
+
+/// The vertex's projection along the face's normal lies strictly inside the face (x: the
+/// vertex, then the face's corners): the vertex is on the same side of the three walls through
+/// the face's edges along its normal.
+bool projects_inside_face(const std::array<Q3, 4>& x) {
+  const Q3 &a = x[1], &b = x[2], &c = x[3];
+  const Q3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const Q3 n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const auto side = [&](int i, int j) {
+    const Q3 lifted{x[i][0] + n[0], x[i][1] + n[1], x[i][2] + n[2]};
+    return static_cast<int>(
+        CGAL::orientation(cgal(x[i]), cgal(x[j]), cgal(lifted), cgal(x[0])));
+  };
+  const int s1 = side(1, 2), s2 = side(2, 3), s3 = side(3, 1);
+  return s1 != 0 && s1 == s2 && s2 == s3;
+}
+
+TEST(AssemblyDemo, CoarsePlanEqualsBruteForceAndConfirmsItsFirstContact) {
+  LockDesign design;
+  design.segments = 8;
+  const PartMesh key = make_key(design), lock = make_lock(design);
+  const Edges ke = unique_edges(key.mesh.triangles), le = unique_edges(lock.mesh.triangles);
+  const StepMeshes m{&key.mesh.triangles, &ke, &lock.mesh.positions, &lock.mesh.triangles, &le};
+  const Candidates every = all_pairs(key.mesh.positions, key.mesh.triangles, ke,
+                                     lock.mesh.positions, lock.mesh.triangles, le);
+  RigidBroadPhase bp(lock.mesh.positions, lock.mesh.triangles, key.mesh.triangles,
+                     Axis{2, 0, 0});
+  Plan plan;
+  plan.turn_to_degrees = 120;
+  int contact_steps = 0;
+  std::size_t culled_by_cylinders = 0;
+  for (const PlanStep& step : plan_steps(design, plan)) {
+    // Brute force on the last insertion steps (the barrel over the pin) and every turn.
+    if (step.phase == "insert" && step.index < 6) continue;
+    const Positions start = key_positions_at_start(key, design, step);
+    const Candidates c = bp.rigid_step(start, step.motion);
+    culled_by_cylinders += bp.rigid_step(start, step.motion, false).size() - c.size();
+    const StepDecision fast = decide_rigid(m, start, step.motion, c);
+    const StepDecision brute = decide_rigid(m, start, step.motion, every);
+    const std::string at = step.phase + " " + std::to_string(step.index);
+    ASSERT_EQ(fast.contacts.size(), brute.contacts.size()) << at;
+    for (std::size_t i = 0; i < fast.contacts.size(); ++i) {
+      EXPECT_TRUE(fast.contacts[i].pair == brute.contacts[i].pair) << at;
+      EXPECT_EQ(fast.contacts[i].toi_lo, brute.contacts[i].toi_lo) << at;
+      EXPECT_EQ(fast.contacts[i].toi_hi, brute.contacts[i].toi_hi) << at;
+    }
+    if (!fast.collides) continue;
+    ++contact_steps;
+    // Only the step that reaches the stop (90 to 105 degrees) makes contact.
+    EXPECT_EQ(step.phase, "turn");
+    EXPECT_LT(step.angle_from, design.stop_degrees);
+    EXPECT_GT(step.angle_to, design.stop_degrees);
+    const PairContact& e = fast.earliest;
+    ASSERT_TRUE(e.has_time);
+    EXPECT_LE(e.time_lo, e.time_hi);
+    EXPECT_EQ(key.part_of_triangle(e.pair.key), "bit");
+    EXPECT_EQ(lock.part_of_vertex(e.pair.lock), "stop rib");
+    ASSERT_EQ(e.pair.kind, PairKind::lock_vertex_key_face);
+    // The four points are coplanar at an s in [toi_lo, toi_hi]: the sign changes (or vanishes)
+    // across it; apart just before, the rib's corner through the bit's face just after.
+    const mpq_class lo(e.toi_lo), hi(e.toi_hi), eps(1, 1 << 30);
+    const int before_sign = coplanarity_sign(exact_points(m, start, step.motion, e.pair, lo));
+    const int after_sign = coplanarity_sign(exact_points(m, start, step.motion, e.pair, hi));
+    EXPECT_LE(before_sign * after_sign, 0);
+    EXPECT_NE(before_sign, 0);
+    const auto just_before = exact_points(m, start, step.motion, e.pair, lo - eps);
+    const auto just_after = exact_points(m, start, step.motion, e.pair, hi + eps);
+    EXPECT_FALSE(touching(e.pair, just_before));
+    EXPECT_EQ(coplanarity_sign(just_before), before_sign);
+    EXPECT_EQ(coplanarity_sign(just_after), -before_sign);
+    EXPECT_TRUE(projects_inside_face(just_after));
+  }
+  EXPECT_EQ(contact_steps, 1);
+  EXPECT_GT(culled_by_cylinders, 1000u);  // the cylinder ranges did cull
+}
+
+}  // namespace
