@@ -7,7 +7,7 @@
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "exact/earliest_contact.hpp"
-#include "exact/vertex_edge_candidates.hpp"
+#include "exact/primitive_contact.hpp"
 
 namespace exactccd::exact {
 
@@ -39,22 +39,9 @@ CcdResult vertex_face_ccd_exact(const RationalQuery& query, const CcdOptions& op
   const auto& v = q.points;
   const auto p = moving(v[0], v[4]), a = moving(v[1], v[5]), b = moving(v[2], v[6]),
              c = moving(v[3], v[7]);
-  const Rational t_max(options.t_max);
-  auto contact_at = [&](AlgebraicTime& t) {
-    return predicates::point_in_triangle_at(p, a, b, c, sign_at(t));
-  };
   const Polynomial cubic(predicates::vertex_face_coplanarity_cubic(p, a, b, c));
-  if (!cubic.is_zero())  // contact implies coplanarity: only the cubic's roots are candidates
-    return make_result(
-        earliest_contact(std::initializer_list<Polynomial>{cubic}, false, t_max, contact_at),
-        options);
-  // Coplanar throughout: the first contact after t = 0 lies on an edge of the triangle.
-  return make_result(
-      earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(p, a, b),
-                                                         vertex_edge_candidates(p, b, c),
-                                                         vertex_edge_candidates(p, c, a)},
-                       true, t_max, contact_at),
-      options);
+  return make_result(earliest_vertex_face_contact(p, a, b, c, cubic, Rational(options.t_max)),
+                     options);
 }
 
 CcdResult edge_edge_ccd_exact(const RationalQuery& query, const CcdOptions& options) {
@@ -62,23 +49,9 @@ CcdResult edge_edge_ccd_exact(const RationalQuery& query, const CcdOptions& opti
   const auto& v = q.points;
   const auto a0 = moving(v[0], v[4]), a1 = moving(v[1], v[5]), b0 = moving(v[2], v[6]),
              b1 = moving(v[3], v[7]);
-  const Rational t_max(options.t_max);
-  auto contact_at = [&](AlgebraicTime& t) {
-    return predicates::segments_intersect_at(a0, a1, b0, b1, sign_at(t));
-  };
   const Polynomial cubic(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1));
-  if (!cubic.is_zero())
-    return make_result(
-        earliest_contact(std::initializer_list<Polynomial>{cubic}, false, t_max, contact_at),
-        options);
-  // Coplanar throughout: the first contact after t = 0 puts an endpoint on the other segment.
-  return make_result(
-      earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(a0, b0, b1),
-                                                         vertex_edge_candidates(a1, b0, b1),
-                                                         vertex_edge_candidates(b0, a0, a1),
-                                                         vertex_edge_candidates(b1, a0, a1)},
-                       true, t_max, contact_at),
-      options);
+  return make_result(earliest_edge_edge_contact(a0, a1, b0, b1, cubic, Rational(options.t_max)),
+                     options);
 }
 
 }  // namespace exactccd::exact

@@ -6,7 +6,7 @@
 #include "core/predicates/inclusion.hpp"
 #include "core/predicates/rigid_coplanarity.hpp"
 #include "exact/earliest_contact.hpp"
-#include "exact/vertex_edge_candidates.hpp"
+#include "exact/primitive_contact.hpp"
 
 namespace exactccd::exact {
 
@@ -63,36 +63,10 @@ CcdResult rigid_ccd_exact(const RationalRigidQuery& q, const CcdOptions& options
   const auto y = common_denominator_points(q);
   const Rational t_max(options.t_max);
   const Polynomial f = rigid_coplanarity_polynomial(q);
-  if (q.type == QueryType::vertex_face) {
-    const auto &p = y[0], &a = y[1], &b = y[2], &c = y[3];
-    auto contact_at = [&](AlgebraicTime& t) {
-      return predicates::point_in_triangle_at(p, a, b, c, sign_at(t));
-    };
-    if (!f.is_zero())
-      return make_result(earliest_contact(std::initializer_list<Polynomial>{f}, false, t_max,
-                                          contact_at),
-                         options);
-    return make_result(
-        earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(p, a, b),
-                                                           vertex_edge_candidates(p, b, c),
-                                                           vertex_edge_candidates(p, c, a)},
-                         true, t_max, contact_at),
-        options);
-  }
-  const auto &a0 = y[0], &a1 = y[1], &b0 = y[2], &b1 = y[3];
-  auto contact_at = [&](AlgebraicTime& t) {
-    return predicates::segments_intersect_at(a0, a1, b0, b1, sign_at(t));
-  };
-  if (!f.is_zero())
-    return make_result(
-        earliest_contact(std::initializer_list<Polynomial>{f}, false, t_max, contact_at),
-        options);
   return make_result(
-      earliest_contact(std::initializer_list<Polynomial>{vertex_edge_candidates(a0, b0, b1),
-                                                         vertex_edge_candidates(a1, b0, b1),
-                                                         vertex_edge_candidates(b0, a0, a1),
-                                                         vertex_edge_candidates(b1, a0, a1)},
-                       true, t_max, contact_at),
+      q.type == QueryType::vertex_face
+          ? earliest_vertex_face_contact(y[0], y[1], y[2], y[3], f, t_max)
+          : earliest_edge_edge_contact(y[0], y[1], y[2], y[3], f, t_max),
       options);
 }
 

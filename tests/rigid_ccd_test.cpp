@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus/rigid_exact_pose.hpp"
 #include "corpus/rigid_queries.hpp"
 #include "exact/rigid_ccd.hpp"
 #include "exactccd/ccd.hpp"
@@ -48,37 +49,20 @@ CcdOptions mode(Mode m) {
 SideMotion at_rest() { return SideMotion::of(RigidMotion{}); }
 
 // ---------------------------------------------------------------------------------------------
-// Positions at a rational parameter, from the matrix form C(v) = ((1 - v.v) I + 2 v v^T +
-// 2 [v]x) / (1 + v.v) (not the polynomial expansion the library uses).
+// Positions at a rational parameter, from the matrix form of the rotation
+// (corpus/rigid_exact_pose.hpp; not the polynomial expansion the library uses).
 
-using Q3 = std::array<mpq_class, 3>;
+using Q3 = rigid_pose::RationalPosition;
+using rigid_pose::exactly;
 
-Q3 q3(const Vector3d& v) { return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())}; }
+Q3 q3(const Vector3d& v) { return exactly(v); }
 
 Q3 rational_position(const SideMotion& side, int vertex, const Vector3d& x0, const mpq_class& s) {
   if (side.kind == PathKind::linear) {
     const Q3 a = q3(x0), b = q3(side.linear_end[vertex]);
     return {a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1]), a[2] + s * (b[2] - a[2])};
   }
-  const Q3 c = q3(side.rigid.pivot), d = q3(side.rigid.translation), q = q3(side.rigid.cayley),
-           x = q3(x0);
-  const Q3 v = {s * q[0], s * q[1], s * q[2]};
-  const Q3 r = {x[0] - c[0], x[1] - c[1], x[2] - c[2]};
-  const mpq_class vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-  mpq_class m[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = (i == j ? 1 - vv : mpq_class(0)) + 2 * v[i] * v[j];
-  // 2 [v]x: the cross-product matrix.
-  m[0][1] -= 2 * v[2], m[0][2] += 2 * v[1];
-  m[1][0] += 2 * v[2], m[1][2] -= 2 * v[0];
-  m[2][0] -= 2 * v[1], m[2][1] += 2 * v[0];
-  Q3 out;
-  for (int i = 0; i < 3; ++i) {
-    mpq_class rotated = 0;
-    for (int j = 0; j < 3; ++j) rotated += m[i][j] * r[j];
-    out[i] = c[i] + s * d[i] + rotated / (1 + vv);
-  }
-  return out;
+  return rigid_pose::exact_position(side.rigid, x0, s);
 }
 
 CgalPoint cgal(const Q3& x) { return CgalPoint(x[0], x[1], x[2]); }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "corpus/rigid_exact_pose.hpp"
 #include "exactccd/query_file.hpp"
 
 namespace exactccd::cli {
@@ -48,32 +49,13 @@ double nearest_double(const mpq_class& q) {
 
 Positions rounded_end_pose(const Positions& start, const RigidMotion& m, double* rounding,
                            const std::string& what) {
-  // C(q) = ((1 - q.q) I + 2 q q^T + 2 [q]x) / (1 + q.q), as rationals.
-  mpq_class q[3], c[3], d[3];
-  for (int k = 0; k < 3; ++k) {
-    q[k] = m.cayley[k];
-    c[k] = m.pivot[k];
-    d[k] = m.translation[k];
-  }
-  const mpq_class qq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-  mpq_class rotation[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) rotation[i][j] = (i == j ? 1 - qq : mpq_class(0)) + 2 * q[i] * q[j];
-  rotation[0][1] -= 2 * q[2], rotation[0][2] += 2 * q[1];
-  rotation[1][0] += 2 * q[2], rotation[1][2] -= 2 * q[0];
-  rotation[2][0] -= 2 * q[1], rotation[2][1] += 2 * q[0];
-  const mpq_class denominator = 1 + qq;
-  for (auto& row : rotation)
-    for (mpq_class& entry : row) entry /= denominator;
-
   Positions end(start.rows(), 3);
   mpq_class largest(0);
   for (Eigen::Index v = 0; v < start.rows(); ++v) {
-    mpq_class r[3];
-    for (int k = 0; k < 3; ++k) r[k] = mpq_class(start(v, k)) - c[k];
+    const rigid_pose::RationalPosition at_end =
+        rigid_pose::exact_position(m, start.row(v).transpose(), mpq_class(1));
     for (int i = 0; i < 3; ++i) {
-      const mpq_class exact =
-          c[i] + d[i] + rotation[i][0] * r[0] + rotation[i][1] * r[1] + rotation[i][2] * r[2];
+      const mpq_class& exact = at_end[i];
       const double rounded = nearest_double(exact);
       if (!std::isfinite(rounded))
         throw InputError(what, 0,

@@ -26,38 +26,7 @@ import pytest
 import exactccd
 from conftest import run
 
-try:
-    import z3
-except ImportError:
-    z3 = None
-needs_z3 = pytest.mark.skipif(
-    z3 is None, reason="z3 is not installed: Debian's python3-z3 (.ci/install-deps.sh installs it)")
-
-TIMEOUT_MS = 20000   # per z3 call
-MAX_TIMEOUTS = 3     # z3 calls allowed to time out per test
-
-
-def seed_from_environment():
-    seed = int(os.environ.get("EXACTCCD_TEST_SEED", "20240617"), 0)
-    print(f"[ seed ] EXACTCCD_TEST_SEED={seed}")
-    return seed
-
-
-class Z3Tally:
-    """Counts z3 calls, their timeouts, and the disagreements with exactccd (messages)."""
-
-    def __init__(self):
-        self.calls = self.timeouts = self.queries = self.contacts = 0
-        self.disagreements = []
-
-    def summary(self):
-        return (f"{self.queries} queries ({self.contacts} within delta), {self.calls} z3 calls, "
-                f"{self.timeouts} timeouts, {len(self.disagreements)} disagreements")
-
-    def check(self):
-        print(self.summary())
-        assert not self.disagreements, "\n".join([self.summary()] + self.disagreements[:20])
-        assert self.timeouts <= MAX_TIMEOUTS, self.summary()
+from z3_support import TIMEOUT_MS, Z3Tally, needs_z3, seed_from_environment, z3
 
 
 def within_delta(points, type, delta, t_lo=0, t_hi=1, t_hi_strict=False):
@@ -107,26 +76,12 @@ def check_query(tally, points, type, delta, where):
     double, so that the default path gets the same delta)."""
     assert F(float(delta)) == delta
     exact = exactccd.exact_ccd(points, type, min_separation=delta)
-    default = decide_double(points, type, delta)
-    tally.queries += 1
-    tally.contacts += exact.collides
-    if (default.collides, default.toi_lo, default.toi_hi) != (exact.collides, exact.toi_lo,
-                                                              exact.toi_hi):
-        tally.disagreements.append(f"{where}: default {default} != exact {exact}")
-
-    def ask(expected, **bounds):
-        tally.calls += 1
-        answer = within_delta(points, type, delta, **bounds)
-        if answer == z3.unknown:
-            tally.timeouts += 1
-        elif answer != expected:
-            tally.disagreements.append(f"{where}: {exact}, z3 says {answer} for {bounds}")
-
-    ask(z3.sat if exact.collides else z3.unsat)
-    if exact.collides:
-        if exact.toi_lo > 0:  # no time before toi_lo is within delta
-            ask(z3.unsat, t_hi=F(exact.toi_lo), t_hi_strict=True)
-        ask(z3.sat, t_hi=F(exact.toi_hi))  # some time up to toi_hi is
+    tally.record(exact, decide_double(points, type, delta), where)
+    tally.ask_about(
+        exact,
+        lambda lo=0, hi=1, hi_strict=False: within_delta(points, type, delta, t_lo=F(lo),
+                                                         t_hi=F(hi), t_hi_strict=hi_strict),
+        where)
 
 
 @pytest.fixture(scope="module")

@@ -28,21 +28,7 @@ import pytest
 
 import exactccd
 
-try:
-    import z3
-except ImportError:
-    z3 = None
-needs_z3 = pytest.mark.skipif(
-    z3 is None, reason="z3 is not installed: Debian's python3-z3 (.ci/install-deps.sh installs it)")
-
-TIMEOUT_MS = 20000
-MAX_TIMEOUTS = 3
-
-
-def seed_from_environment():
-    seed = int(os.environ.get("EXACTCCD_TEST_SEED", "20240617"), 0)
-    print(f"[ seed ] EXACTCCD_TEST_SEED={seed}")
-    return seed
+from z3_support import TIMEOUT_MS, Z3Tally, needs_z3, seed_from_environment, z3
 
 
 # ------------------------------------------------------------------------------------------
@@ -171,42 +157,15 @@ def random_query(rng, kind, styles=("rest", "linear")):
     return first + other, [turn, motion]
 
 
-class Z3Tally:
-    def __init__(self):
-        self.calls = self.timeouts = self.queries = self.contacts = 0
-        self.disagreements = []
-
-    def summary(self):
-        return (f"{self.queries} queries ({self.contacts} contacts), {self.calls} z3 calls, "
-                f"{self.timeouts} timeouts, {len(self.disagreements)} disagreements")
-
-    def check_query(self, kind, points, motions, where):
-        exact = decide(kind, points, motions, mode="exact")
-        default = decide(kind, points, motions)
-        self.queries += 1
-        self.contacts += exact.collides
-        if (default.collides, default.toi_lo, default.toi_hi) != (exact.collides, exact.toi_lo,
-                                                                  exact.toi_hi):
-            self.disagreements.append(f"{where}: default {default} != exact {exact}")
-
-        def ask(expected, **bounds):
-            self.calls += 1
-            answer = shares_a_point(kind, points, motions, **bounds)
-            if answer == z3.unknown:
-                self.timeouts += 1
-            elif answer != expected:
-                self.disagreements.append(f"{where}: {exact}, z3 says {answer} for {bounds}")
-
-        ask(z3.sat if exact.collides else z3.unsat)
-        if exact.collides:
-            if exact.toi_lo > 0:
-                ask(z3.unsat, hi=F(exact.toi_lo), hi_strict=True)
-            ask(z3.sat, hi=F(exact.toi_hi))
-
-    def check(self):
-        print(self.summary())
-        assert not self.disagreements, "\n".join([self.summary()] + self.disagreements[:20])
-        assert self.timeouts <= MAX_TIMEOUTS, self.summary()
+def check_query(tally, kind, points, motions, where):
+    """exactccd (exact and default modes) against z3 on one query."""
+    exact = decide(kind, points, motions, mode="exact")
+    tally.record(exact, decide(kind, points, motions), where)
+    tally.ask_about(
+        exact,
+        lambda lo=0, hi=1, hi_strict=False: shares_a_point(kind, points, motions, lo=F(lo),
+                                                           hi=F(hi), hi_strict=hi_strict),
+        where)
 
 
 @needs_z3
@@ -217,7 +176,7 @@ def test_random_rigid_pairs_near_contact_agree_with_z3(kind):
     count = int(os.environ.get("EXACTCCD_RIGID_Z3_QUERIES", "150"))
     for k in range(count):
         points, motions = random_query(rng, kind)
-        tally.check_query(kind, points, motions, f"{kind} query {k}")
+        check_query(tally, kind, points, motions, f"{kind} query {k}")
     assert 0 < tally.contacts < tally.queries, tally.summary()
     tally.check()
 
@@ -229,12 +188,12 @@ def test_exact_constructions_agree_with_z3():
     rest = Rigid([F(0)] * 3, [F(0)] * 3, [F(0)] * 3)
     # (5, 0, 0) turned a quarter reaches (3, 4, 0) at s = 1/2, on the plane y = 4.
     wall = [[F(2), F(4), F(-1)], [F(4), F(4), F(-1)], [F(3), F(4), F(1)]]
-    tally.check_query("vf", [[F(5), F(0), F(0)]] + wall, [quarter, rest], "pythagorean")
+    check_query(tally, "vf", [[F(5), F(0), F(0)]] + wall, [quarter, rest], "pythagorean")
     # The chord of the same turn misses a wall on the arc.
-    tally.check_query("vf", [[F(5), F(0), F(0)]] + wall, [Linear([[F(0), F(5), F(0)]]), rest],
+    check_query(tally, "vf", [[F(5), F(0), F(0)]] + wall, [Linear([[F(0), F(5), F(0)]]), rest],
                       "chord")
     # An edge swept about z across a vertical edge at radius 2 (the angle of (3/5, 4/5)).
-    tally.check_query("ee", [[F(1), F(0), F(0)], [F(3), F(0), F(0)],
+    check_query(tally, "ee", [[F(1), F(0), F(0)], [F(3), F(0), F(0)],
                              [F(6, 5), F(8, 5), F(-1)], [F(6, 5), F(8, 5), F(1)]],
                       [quarter, rest], "sweep")
     tally.check()

@@ -26,36 +26,21 @@
 #include "bench/scenes/assembly/assembly_step.hpp"
 #include "bench/scenes/assembly/lock_and_key.hpp"
 #include "bench/scenes/assembly/rigid_broad_phase.hpp"
+#include "corpus/rigid_exact_pose.hpp"
 
 namespace {
 
 using namespace exactccd;
 using namespace exactccd::assembly;
 using Eigen::Vector3d;
-using Q3 = std::array<mpq_class, 3>;
+using Q3 = rigid_pose::RationalPosition;
 constexpr double kPi = 3.14159265358979323846;
 
-Q3 q3(const Vector3d& v) { return {mpq_class(v.x()), mpq_class(v.y()), mpq_class(v.z())}; }
+Q3 q3(const Vector3d& v) { return rigid_pose::exactly(v); }
 
 /// x(s) = c + s d + C(s q) (x0 - c) over the rationals, C from its matrix form.
 Q3 exact_position(const RigidMotion& m, const Vector3d& x0, const mpq_class& s) {
-  const Q3 c = q3(m.pivot), d = q3(m.translation), q = q3(m.cayley), x = q3(x0);
-  const Q3 v = {s * q[0], s * q[1], s * q[2]};
-  const Q3 r = {x[0] - c[0], x[1] - c[1], x[2] - c[2]};
-  const mpq_class vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-  mpq_class a[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) a[i][j] = (i == j ? 1 - vv : mpq_class(0)) + 2 * v[i] * v[j];
-  a[0][1] -= 2 * v[2], a[0][2] += 2 * v[1];
-  a[1][0] += 2 * v[2], a[1][2] -= 2 * v[0];
-  a[2][0] -= 2 * v[1], a[2][1] += 2 * v[0];
-  Q3 out;
-  for (int i = 0; i < 3; ++i) {
-    mpq_class rotated = 0;
-    for (int j = 0; j < 3; ++j) rotated += a[i][j] * r[j];
-    out[i] = c[i] + s * d[i] + rotated / (1 + vv);
-  }
-  return out;
+  return rigid_pose::exact_position(m, x0, s);
 }
 
 mpq_class rho2(const Axis& axis, const Q3& p) {
