@@ -29,17 +29,6 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-std::string describe(const CcdResult& r) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, "collides %d [%a, %a] by %s", r.collides ? 1 : 0, r.toi_lo,
-                r.toi_hi, to_string(r.decided_by));
-  return buffer;
-}
-
-bool same_answer(const CcdResult& a, const CcdResult& b) {
-  return a.collides == b.collides && a.toi_lo == b.toi_lo && a.toi_hi == b.toi_hi;
-}
-
 CcdOptions mode(Mode m) {
   CcdOptions o;
   o.mode = m;
@@ -110,7 +99,7 @@ RigidVertexFaceQuery bisector_wall(double radius, double half_width) {
 TEST(RigidCcd, ArcHitsTheWallTheChordMisses) {
   for (Mode m : {Mode::filtered, Mode::exact}) {
     const RigidCcdResult arc = vertex_face_ccd(bisector_wall(1.0, 0.1), mode(m));
-    ASSERT_TRUE(arc.ccd.collides) << describe(arc.ccd);
+    ASSERT_TRUE(arc.ccd.collides) << describe_result(arc.ccd);
     // The turn reaches 45 degrees at s = tan(pi / 8) = sqrt(2) - 1 (about 0.4142).
     const long double expected = std::sqrt(2.0L) - 1.0L;
     EXPECT_LE(arc.ccd.toi_lo, expected + 1e-15L);
@@ -150,7 +139,7 @@ TEST(RigidCcd, PythagoreanTurnMeetsAtAHalfExactly) {
   for (Mode m : {Mode::filtered, Mode::exact}) {
     const RigidCcdResult r = vertex_face_ccd(q, mode(m));
     ASSERT_TRUE(r.ccd.collides);
-    EXPECT_EQ(r.ccd.toi_lo, 0.5) << describe(r.ccd);
+    EXPECT_EQ(r.ccd.toi_lo, 0.5) << describe_result(r.ccd);
     EXPECT_EQ(r.ccd.toi_hi, 0.5);
     // t = atan(1/2) / atan(1) = 0.5903344...
     const long double t = std::atan(0.5L) / std::atan(1.0L);
@@ -238,8 +227,8 @@ TEST(RigidCcd, LinearSidesEqualTheLinearApiOnTheSampleQueries) {
                               mode(m)).ccd;
       }
       ASSERT_TRUE(same_answer(linear, rigid))
-          << "sample query " << i << ": linear " << describe(linear) << ", rigid "
-          << describe(rigid);
+          << "sample query " << i << ": linear " << describe_result(linear) << ", rigid "
+          << describe_result(rigid);
       contacts += linear.collides;
       ++compared;
     }
@@ -274,8 +263,8 @@ TEST(RigidCcd, ZeroRotationTranslationsEqualLinearMotion) {
         VertexFaceQuery{x[0], x[1], x[2], x[3], x[0] + ma.translation, x[1] + mb.translation,
                         x[2] + mb.translation, x[3] + mb.translation},
         mode(Mode::exact));
-    ASSERT_TRUE(same_answer(vf_rigid, vf_linear)) << i << ": " << describe(vf_rigid) << " vs "
-                                                  << describe(vf_linear);
+    ASSERT_TRUE(same_answer(vf_rigid, vf_linear)) << i << ": " << describe_result(vf_rigid) << " vs "
+                                                  << describe_result(vf_linear);
     const CcdResult ee_rigid = edge_edge_ccd(RigidEdgeEdgeQuery{x[0], x[1], x[2], x[3], A, B}).ccd;
     const CcdResult ee_linear = edge_edge_ccd(
         EdgeEdgeQuery{x[0], x[1], x[2], x[3], x[0] + ma.translation, x[1] + ma.translation,
@@ -302,7 +291,7 @@ void check_against_independent_test(const Query& q, const RigidCcdResult& r, int
     const mpq_class s = end * j / 16;
     if (r.ccd.collides && s >= end) break;
     ASSERT_FALSE(cgal_contact_at(q, s)) << "query " << index << ": contact at s = " << s
-                                        << " before " << describe(r.ccd);
+                                        << " before " << describe_result(r.ccd);
   }
   if (r.ccd.collides && r.ccd.toi_lo == r.ccd.toi_hi)
     ASSERT_TRUE(cgal_contact_at(q, mpq_class(r.ccd.toi_lo))) << "query " << index;
@@ -315,8 +304,8 @@ Tally differential(const std::vector<Query>& queries, Ccd&& ccd) {
     const RigidCcdResult exact = ccd(queries[i], mode(Mode::exact));
     const RigidCcdResult filtered = ccd(queries[i], mode(Mode::filtered));
     EXPECT_TRUE(same_answer(exact.ccd, filtered.ccd))
-        << "query " << i << ": exact " << describe(exact.ccd) << ", filtered "
-        << describe(filtered.ccd);
+        << "query " << i << ": exact " << describe_result(exact.ccd) << ", filtered "
+        << describe_result(filtered.ccd);
     check_against_independent_test(queries[i], exact, static_cast<int>(i));
     t.contacts += exact.ccd.collides;
     ++t.queries;

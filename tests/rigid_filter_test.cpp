@@ -31,17 +31,6 @@ namespace {
 using Eigen::Vector3d;
 using predicates::Vec3;
 
-std::string describe_result(const CcdResult& r) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "collides %d [%a, %a] by %s", r.collides ? 1 : 0, r.toi_lo,
-                r.toi_hi, to_string(r.decided_by));
-  return buffer;
-}
-
-bool same_answer(const CcdResult& a, const CcdResult& b) {
-  return a.collides == b.collides && a.toi_lo == b.toi_lo && a.toi_hi == b.toi_hi;
-}
-
 CcdOptions with_mode(Mode m, double t_max = 1.0, double toi_width = 0.0) {
   CcdOptions o;
   o.mode = m;

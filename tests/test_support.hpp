@@ -120,6 +120,19 @@ inline CcdResult double_api_ccd(const RationalQuery& q, const CcdOptions& option
   return edge_edge_ccd(EdgeEdgeQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}, options);
 }
 
+/// A result in one line, TOIs in hexadecimal (exact).
+inline std::string describe_result(const CcdResult& r) {
+  char buffer[160];
+  std::snprintf(buffer, sizeof buffer, "collides %d [%a, %a] by %s", r.collides ? 1 : 0, r.toi_lo,
+                r.toi_hi, to_string(r.decided_by));
+  return buffer;
+}
+
+/// The same verdict and TOI enclosure, bit for bit (the stage may differ).
+inline bool same_answer(const CcdResult& a, const CcdResult& b) {
+  return a.collides == b.collides && a.toi_lo == b.toi_lo && a.toi_hi == b.toi_hi;
+}
+
 inline std::string describe(const RationalQuery& q) {
   std::string s = q.type == QueryType::vertex_face ? "vertex-face" : "edge-edge";
   for (const auto& p : q.points)

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <tbb/parallel_for.h>
 
+#include "bench_timing.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "oracle/check.hpp"
@@ -26,7 +27,6 @@ using namespace exactccd::oracle;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // The queries of one data set as the double API takes them, with their truth.
 struct Dataset {
@@ -92,33 +92,6 @@ Dataset simulation_dataset(const sim::SimulationConfig& config, double* truth_se
     }
   }
   return d;
-}
-
-// Median of `values` (the mean of the two middle ones for an even count); reorders them.
-double median(std::vector<double>& values) {
-  if (values.empty()) return 0.0;
-  const std::size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + mid, values.end());
-  const double upper = values[mid];
-  if (values.size() % 2 == 1) return upper;
-  const double lower = *std::max_element(values.begin(), values.begin() + mid);
-  return 0.5 * (lower + upper);
-}
-
-double nanoseconds(Clock::duration d) {
-  return static_cast<double>(std::chrono::duration_cast<std::chrono::nanoseconds>(d).count());
-}
-
-// The median cost of an empty timed region: two consecutive clock readings.
-double timer_overhead_ns() {
-  constexpr int kSamples = 100001;
-  std::vector<double> samples(kSamples);
-  for (double& s : samples) {
-    const auto start = Clock::now();
-    const auto stop = Clock::now();
-    s = nanoseconds(stop - start);
-  }
-  return median(samples);
 }
 
 volatile std::size_t g_sink;  // keeps the batch passes' results observable

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "bench_timing.hpp"
 #include "corpus/rigid_queries.hpp"
 #include "exactccd/rigid.hpp"
 #include "oracle/common.hpp"
@@ -16,7 +17,6 @@ namespace exactccd::cli {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using oracle::UsageError;
 
 /// The seeded queries: vertex-face then edge-edge, each a third with the second body turning,
@@ -47,32 +47,6 @@ RigidSet make_set(std::size_t count, std::uint64_t seed) {
       }
     }
   return set;
-}
-
-// Median of `values` (the mean of the two middle ones for an even count); reorders them.
-double median(std::vector<double>& values) {
-  if (values.empty()) return 0.0;
-  const std::size_t mid = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + mid, values.end());
-  const double upper = values[mid];
-  if (values.size() % 2 == 1) return upper;
-  const double lower = *std::max_element(values.begin(), values.begin() + mid);
-  return 0.5 * (lower + upper);
-}
-
-double nanoseconds(Clock::duration d) {
-  return static_cast<double>(std::chrono::duration_cast<std::chrono::nanoseconds>(d).count());
-}
-
-// The median cost of an empty timed region: two consecutive clock readings.
-double timer_overhead_ns() {
-  std::vector<double> samples(100001);
-  for (double& s : samples) {
-    const auto start = Clock::now();
-    const auto stop = Clock::now();
-    s = nanoseconds(stop - start);
-  }
-  return median(samples);
 }
 
 volatile std::size_t g_sink;  // keeps the batch passes' results observable
