@@ -18,8 +18,10 @@ namespace exactccd::filters {
 /// One side of a rigid query in doubles (as the public SideMotion, exactly).
 struct DoubleSide {
   bool rigid = true;
-  predicates::RigidMotionOver<double> motion;
-  std::array<predicates::Vec3<double>, 3> end;
+  /// Zero unless set ({}: Vec3 has no initialisers of its own; the filters read the motion of a
+  /// linear side too, and must never see indeterminate doubles).
+  predicates::RigidMotionOver<double> motion{};
+  std::array<predicates::Vec3<double>, 3> end{};
 };
 
 /// Positions at s = 0 in the public queries' order, and the two sides (rigid_ccd.hpp's layout).

@@ -3,6 +3,15 @@
 // hand-made queries whose contact times are worked out by hand.
 #pragma once
 
+// AddressSanitizer builds (gcc defines __SANITIZE_ADDRESS__, clang has __has_feature).
+#if defined(__SANITIZE_ADDRESS__)
+#define EXACTCCD_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define EXACTCCD_UNDER_ASAN 1
+#endif
+#endif
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -113,6 +122,18 @@ class CliTest : public ::testing::Test {
     std::string cwd;          ///< working directory
     std::string prefix;       ///< shell words before the command (timeout 20, setpriv ...)
   };
+
+  // The command stopped after `seconds` and limited to 4 GB of address space. Under
+  // AddressSanitizer, which reserves terabytes of address space at start-up, ASan's own
+  // resident-memory limit takes the place of the address-space limit.
+  RunResult run_bounded(const std::vector<std::string>& args, int seconds) {
+    const std::string timeout = " timeout " + std::to_string(seconds);
+#ifdef EXACTCCD_UNDER_ASAN
+    return run_with(args, {"", "", "ASAN_OPTIONS=\"$ASAN_OPTIONS:hard_rss_limit_mb=4000\"" + timeout});
+#else
+    return run_with(args, {"", "", "ulimit -v 4000000 &&" + timeout});
+#endif
+  }
 
   RunResult run_with(const std::vector<std::string>& args, const RunSetting& setting) {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";

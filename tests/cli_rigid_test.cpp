@@ -29,7 +29,7 @@ const fs::path kData = fs::path(EXACTCCD_TEST_DATA) / "rigid";
 class CliRigid : public CliTest {
  protected:
   RunResult run_bounded(const std::vector<std::string>& args) {
-    return run_with(args, {"", "", "ulimit -v 4000000 && timeout 60"});
+    return CliTest::run_bounded(args, 60);
   }
   /// `exactccd rigid --json` on a scene written from `scene` (in the temporary folder).
   RunResult run_scene(const json& scene, bool as_json = true) {

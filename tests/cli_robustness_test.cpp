@@ -22,32 +22,16 @@
 
 extern char** environ;
 
-// AddressSanitizer builds (gcc defines __SANITIZE_ADDRESS__, clang has __has_feature).
-#if defined(__SANITIZE_ADDRESS__)
-#define EXACTCCD_UNDER_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define EXACTCCD_UNDER_ASAN 1
-#endif
-#endif
-
 namespace {
 
 using namespace cli_test;
 
 class CliRobustness : public CliTest {
  protected:
-  // A command that could block or grow without bound before the fixes: stopped after 30 s and
-  // limited to 4 GB of address space (then it fails instead of hanging the suite). Under
-  // AddressSanitizer, which reserves terabytes of address space at start-up, ASan's own
-  // resident-memory limit takes the place of the address-space limit.
+  // A command that could block or grow without bound before the fixes: bounded (see
+  // CliTest::run_bounded), then it fails instead of hanging the suite.
   RunResult run_bounded(const std::vector<std::string>& args) {
-#ifdef EXACTCCD_UNDER_ASAN
-    return run_with(args,
-                    {"", "", "ASAN_OPTIONS=\"$ASAN_OPTIONS:hard_rss_limit_mb=4000\" timeout 30"});
-#else
-    return run_with(args, {"", "", "ulimit -v 4000000 && timeout 30"});
-#endif
+    return CliTest::run_bounded(args, 30);
   }
 
   // Leftover temporaries of the atomic writer (".NAME.tmp-...") anywhere below dir_.
