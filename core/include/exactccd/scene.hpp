@@ -154,6 +154,11 @@ struct SceneStats {
   std::uint32_t hierarchies_built = 0;
   /// Hierarchies refitted during the call.
   std::uint32_t hierarchies_refitted = 0;
+  /// Pairs whose boxes overlap but which the cylinder ranges separate (both sides turn about
+  /// one line, or slide along it, or rest; proofs/scene.md, section 9.3): not candidates,
+  /// never tested. 0 in scenes without rigid bodies. With BroadPhase::static_bvh, counted once per
+  /// span that met them.
+  std::uint64_t cylinder_culled = 0;
 };
 
 /// The answer of Scene::find_contacts.
