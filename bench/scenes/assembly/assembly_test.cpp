@@ -380,8 +380,12 @@ TEST(AssemblyDemo, CoarsePlanEqualsBruteForceAndConfirmsItsFirstContact) {
   const StepMeshes m{&key.mesh.triangles, &ke, &lock.mesh.positions, &lock.mesh.triangles, &le};
   const Candidates every = all_pairs(key.mesh.positions, key.mesh.triangles, ke,
                                      lock.mesh.positions, lock.mesh.triangles, le);
-  RigidBroadPhase bp(lock.mesh.positions, lock.mesh.triangles, key.mesh.triangles,
-                     Axis{2, 0, 0});
+  // The demonstration's path: the lock a static mesh, the key a rigid body of one Scene.
+  Scene scene;
+  const MeshId lock_id = scene.add_static_mesh(lock.mesh.positions, lock.mesh.triangles);
+  const MeshId key_id = scene.add_rigid_body(key.mesh.positions, key.mesh.triangles);
+  ASSERT_TRUE(scene.edges(key_id).rows() == ke.rows() && scene.edges(key_id) == ke);
+  ASSERT_TRUE(scene.edges(lock_id).rows() == le.rows() && scene.edges(lock_id) == le);
   Plan plan;
   plan.turn_to_degrees = 120;
   int contact_steps = 0;
@@ -390,9 +394,10 @@ TEST(AssemblyDemo, CoarsePlanEqualsBruteForceAndConfirmsItsFirstContact) {
     // Brute force on the last insertion steps (the barrel over the pin) and every turn.
     if (step.phase == "insert" && step.index < 6) continue;
     const Positions start = key_positions_at_start(key, design, step);
-    const Candidates c = bp.rigid_step(start, step.motion);
-    culled_by_cylinders += bp.rigid_step(start, step.motion, false).size() - c.size();
-    const StepDecision fast = decide_rigid(m, start, step.motion, c);
+    scene.set_rigid_motion(key_id, start, step.motion);
+    const SceneResult result = scene.find_contacts({});
+    culled_by_cylinders += result.stats.cylinder_culled;
+    const StepDecision fast = from_scene(result, key_id, lock_id);
     const StepDecision brute = decide_rigid(m, start, step.motion, every);
     const std::string at = step.phase + " " + std::to_string(step.index);
     ASSERT_EQ(fast.contacts.size(), brute.contacts.size()) << at;
@@ -400,7 +405,12 @@ TEST(AssemblyDemo, CoarsePlanEqualsBruteForceAndConfirmsItsFirstContact) {
       EXPECT_TRUE(fast.contacts[i].pair == brute.contacts[i].pair) << at;
       EXPECT_EQ(fast.contacts[i].toi_lo, brute.contacts[i].toi_lo) << at;
       EXPECT_EQ(fast.contacts[i].toi_hi, brute.contacts[i].toi_hi) << at;
+      EXPECT_EQ(fast.contacts[i].has_time, brute.contacts[i].has_time) << at;
+      EXPECT_EQ(fast.contacts[i].time_lo, brute.contacts[i].time_lo) << at;
+      EXPECT_EQ(fast.contacts[i].time_hi, brute.contacts[i].time_hi) << at;
     }
+    ASSERT_EQ(fast.collides, brute.collides) << at;
+    if (fast.collides) EXPECT_TRUE(fast.earliest.pair == brute.earliest.pair) << at;
     if (!fast.collides) continue;
     ++contact_steps;
     // Only the step that reaches the stop (90 to 105 degrees) makes contact.
