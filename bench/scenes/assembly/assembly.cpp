@@ -180,8 +180,7 @@ VariantResult run_variant(const Config& c, const std::string& name, double turn_
     j["exact"] = {{"candidates", candidates},
                   {"contacts", exact.contacts.size()},
                   {"collides", exact.collides},
-                  {"scene_cylinder_culled", result.stats.cylinder_culled},
-                  {"scene_candidates_boxes_only", candidates + result.stats.cylinder_culled},
+                  {"scene_cylinder_cuts", result.stats.cylinder_culled},
                   {"ms", total_ms}};
     if (exact.collides) j["exact"]["earliest"] = describe(exact.earliest, key, lock, m);
 

@@ -137,6 +137,12 @@ struct CylinderRange {
   double rho2_lo, rho2_hi, h_lo, h_hi;
 };
 
+/// The smallest ranges holding both (of a node of a hierarchy: every primitive below it).
+inline CylinderRange merge_ranges(const CylinderRange& x, const CylinderRange& y) {
+  return {std::min(x.rho2_lo, y.rho2_lo), std::max(x.rho2_hi, y.rho2_hi),
+          std::min(x.h_lo, y.h_lo), std::max(x.h_hi, y.h_hi)};
+}
+
 /// True when the ranges show that the primitives share no point.
 inline bool apart(const CylinderRange& x, const CylinderRange& y) {
   return x.rho2_hi < y.rho2_lo || y.rho2_hi < x.rho2_lo || x.h_hi < y.h_lo || y.h_hi < x.h_lo;

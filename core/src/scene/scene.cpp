@@ -491,16 +491,22 @@ struct Scene::Impl {
     for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
       const Mesh& mb = meshes[b];
       const auto& cull = culls[a * n + b];
-      at(meshes[a]).vertices.parallel_for_each_overlap(
-          at(mb).faces, [&](std::uint32_t v, std::uint32_t f) {
-            if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v)))
-              return;
-            if (cull && scene::apart(cull->first->vertices[v], cull->second->faces[f])) {
-              ++culled.local();
-              return;
-            }
-            found.local().push_back({QueryType::vertex_face, a, v, b, f});
-          });
+      const Bvh& va = at(meshes[a]).vertices;
+      const Bvh& fb = at(mb).faces;
+      const auto pair = [&](std::uint32_t v, std::uint32_t f) {
+        if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v))) return;
+        if (cull && scene::apart(cull->first->vertices[v], cull->second->faces[f])) {
+          ++culled.local();
+          return;
+        }
+        found.local().push_back({QueryType::vertex_face, a, v, b, f});
+      };
+      if (cull)
+        va.parallel_for_each_overlap(fb, pair,
+                                     node_cull(va, cull->first->vertices, fb, cull->second->faces,
+                                               culled));
+      else
+        va.parallel_for_each_overlap(fb, pair);
     });
     for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
       const Mesh& ma = meshes[a];
@@ -511,16 +517,40 @@ struct Scene::Impl {
         });
       } else {
         const auto& cull = culls[a * n + b];
-        at(ma).edges.parallel_for_each_overlap(
-            at(meshes[b]).edges, [&](std::uint32_t i, std::uint32_t j) {
-              if (cull && scene::apart(cull->first->edges[i], cull->second->edges[j])) {
-                ++culled.local();
-                return;
-              }
-              found.local().push_back({QueryType::edge_edge, a, i, b, j});
-            });
+        const Bvh& ea = at(ma).edges;
+        const Bvh& eb = at(meshes[b]).edges;
+        const auto pair = [&](std::uint32_t i, std::uint32_t j) {
+          if (cull && scene::apart(cull->first->edges[i], cull->second->edges[j])) {
+            ++culled.local();
+            return;
+          }
+          found.local().push_back({QueryType::edge_edge, a, i, b, j});
+        };
+        if (cull)
+          ea.parallel_for_each_overlap(
+              eb, pair, node_cull(ea, cull->first->edges, eb, cull->second->edges, culled));
+        else
+          ea.parallel_for_each_overlap(eb, pair);
       }
     });
+  }
+
+  /// The node test of a traversal with a cylinder cull: a node's ranges merge those of the
+  /// primitives below it, so apart nodes hold no pair that is not apart (each cut counted).
+  struct NodeCull {
+    std::vector<scene::CylinderRange> first, second;
+    tbb::enumerable_thread_specific<std::uint64_t>* culled;
+    bool operator()(std::uint32_t a, std::uint32_t b) const {
+      if (!scene::apart(first[a], second[b])) return true;
+      ++culled->local();
+      return false;
+    }
+  };
+  static NodeCull node_cull(const Bvh& a, const std::vector<scene::CylinderRange>& ra,
+                            const Bvh& b, const std::vector<scene::CylinderRange>& rb,
+                            tbb::enumerable_thread_specific<std::uint64_t>& culled) {
+    return {a.node_values(ra, scene::merge_ranges), b.node_values(rb, scene::merge_ranges),
+            &culled};
   }
 
   static std::uint64_t total(const tbb::enumerable_thread_specific<std::uint64_t>& counts) {
