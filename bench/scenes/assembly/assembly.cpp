@@ -142,10 +142,8 @@ VariantResult run_variant(const Config& c, const std::string& name, double turn_
     failures.push_back(name + ": the Scene's edges are not unique_edges'");
   // The box-only broad phase (arc boxes, no cylinder ranges): the pairs the ranges save, a sample
   // decided.
-  RigidBroadPhase exact_bp(lock.mesh.positions, lock.mesh.triangles, key.mesh.triangles,
-                           std::nullopt);
-  RigidBroadPhase chord_bp(lock.mesh.positions, lock.mesh.triangles, key.mesh.triangles,
-                           std::nullopt);
+  RigidBroadPhase exact_bp(lock.mesh.positions, lock.mesh.triangles, key.mesh.triangles);
+  RigidBroadPhase chord_bp(lock.mesh.positions, lock.mesh.triangles, key.mesh.triangles);
   std::vector<int> bit_vertices;
   for (const Part& p : key.parts)
     if (p.name == "bit")
@@ -186,7 +184,7 @@ VariantResult run_variant(const Config& c, const std::string& name, double turn_
 
     // What the cylinder ranges save: the box-only broad phase's pairs, a sample decided.
     {
-      const Candidates boxes = exact_bp.rigid_step(start, step.motion, false);
+      const Candidates boxes = exact_bp.rigid_step(start, step.motion);
       j["exact"]["candidates_boxes_only"] = boxes.size();
       if (c.box_only_sample > 0 && boxes.size() > candidates) {
         Candidates sample;
