@@ -29,7 +29,6 @@
 #include "bench/fcl_comparison/fcl_adapter.hpp"
 #include "bench/scenes/assembly/assembly_step.hpp"
 #include "bench/scenes/assembly/lock_and_key.hpp"
-#include "bench/scenes/assembly/rigid_broad_phase.hpp"
 #include "corpus/rigid_queries.hpp"
 
 namespace {
@@ -158,17 +157,17 @@ void run_demo(const Config& c, std::vector<Row>& rows, json& steps_json) {
   LockDesign design;
   design.segments = c.segments;
   const PartMesh key = make_key(design), lock = make_lock(design);
-  const Edges ke = unique_edges(key.mesh.triangles), le = unique_edges(lock.mesh.triangles);
-  const StepMeshes m{&key.mesh.triangles, &ke, &lock.mesh.positions, &lock.mesh.triangles, &le};
   Plan plan;
   plan.turn_to_degrees = 120;  // through the stop: one step with contact
   const std::vector<PlanStep> steps = plan_steps(design, plan);
   const Dimensions d = dimensions(design);
   const double pi = 3.14159265358979323846;
 
-  // Exact: the broad phase and every candidate, median of a few runs per step.
-  RigidBroadPhase bp(lock.mesh.positions, lock.mesh.triangles, key.mesh.triangles,
-                     Axis{2, 0.0, 0.0});
+  // Exact: the demonstration's path, an exactccd::Scene (the lock static, the key a rigid
+  // body), median of a few runs per step, each a fresh step.
+  Scene scene;
+  const MeshId lock_id = scene.add_static_mesh(lock.mesh.positions, lock.mesh.triangles);
+  const MeshId key_id = scene.add_rigid_body(key.mesh.positions, key.mesh.triangles);
   std::vector<Truth> truth(steps.size());
   std::vector<double> exact_ms(steps.size());
   std::vector<Pose> from(steps.size()), to(steps.size());
@@ -178,8 +177,10 @@ void run_demo(const Config& c, std::vector<Row>& rows, json& steps_json) {
     std::vector<double> ms;
     StepDecision decision;
     for (int r = 0; r < std::max(1, c.demo_repeat); ++r) {
+      scene.set_rigid_motion(key_id, key.mesh.positions, RigidMotion{});
       const auto t0 = Clock::now();
-      decision = decide_rigid(m, start, step.motion, bp.rigid_step(start, step.motion));
+      scene.set_rigid_motion(key_id, start, step.motion);
+      decision = from_scene(scene.find_contacts({}), key_id, lock_id);
       ms.push_back(seconds_since(t0) * 1e3);
     }
     exact_ms[k] = median(ms);

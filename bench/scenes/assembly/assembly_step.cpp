@@ -68,6 +68,33 @@ StepDecision decide_all(const Candidates& candidates, Decide&& decide) {
 
 }  // namespace
 
+StepDecision from_scene(const SceneResult& result, MeshId key, MeshId lock) {
+  StepDecision d;
+  d.queries = result.stats.vertex_face_candidates + result.stats.edge_edge_candidates;
+  for (const SceneContact& sc : result.contacts) {
+    const ScenePair& p = sc.pair;
+    const auto first = static_cast<std::int32_t>(p.first_index);
+    const auto second = static_cast<std::int32_t>(p.second_index);
+    PairKey k;
+    if (p.type == QueryType::edge_edge) {
+      k = p.first_mesh == key ? PairKey{PairKind::edge_edge, first, second}
+                              : PairKey{PairKind::edge_edge, second, first};
+    } else if (p.first_mesh == key && p.second_mesh == lock) {
+      k = {PairKind::key_vertex_lock_face, first, second};
+    } else {
+      k = {PairKind::lock_vertex_key_face, second, first};
+    }
+    d.contacts.push_back({k, sc.toi_lo, sc.toi_hi, sc.has_time, sc.time_lo, sc.time_hi});
+  }
+  std::sort(d.contacts.begin(), d.contacts.end(),
+            [](const PairContact& a, const PairContact& b) { return a.pair < b.pair; });
+  for (const PairContact& c : d.contacts) {
+    if (!d.collides || c.toi_lo < d.earliest.toi_lo) d.earliest = c;  // ties: the least pair
+    d.collides = true;
+  }
+  return d;
+}
+
 const char* to_string(PairKind k) {
   switch (k) {
     case PairKind::key_vertex_lock_face: return "key vertex - lock face";

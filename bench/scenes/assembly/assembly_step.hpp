@@ -55,6 +55,11 @@ struct StepDecision {
   std::size_t decided_by_culling = 0, decided_by_filter = 0, decided_by_exact = 0;
 };
 
+/// The contacts of a Scene holding the key (rigid body `key`) and the lock (`lock`), as pairs of
+/// the key and the lock (the Scene's edges are unique_edges'); `queries`: its candidates. The
+/// decided_by counts are left 0 (the Scene does not report them).
+StepDecision from_scene(const SceneResult& result, MeshId key, MeshId lock);
+
 /// Every candidate through the rigid functions (key: `start` and `motion`; lock at rest), in
 /// parallel (TBB, as many threads as the caller's arena allows).
 StepDecision decide_rigid(const StepMeshes& m, const Positions& start, const RigidMotion& motion,

@@ -3,11 +3,9 @@
 //    outlines, and the clearances are the designed ones;
 //  * arc boxes hold exact positions of the rigid motion at rational parameters (positions from
 //    the matrix form of the Cayley rotation, over the rationals), and are not vacuous;
-//  * cylinder ranges hold exact points of the primitives, at rest and along a motion about the
-//    axis;
-//  * the broad phase keeps every pair that meets (random soups, motions about an axis, all pairs
-//    decided); at a coarse resolution (8 segments), the plan's last insertion steps and every
-//    turn decided through the broad phase equal every pair decided without it (brute force),
+//  * the arc-box broad phase keeps every pair that meets (random soups, motions about an axis,
+//    all pairs decided); at a coarse resolution (8 segments), the plan's last insertion steps
+//    and every turn decided through exactccd::Scene (arc boxes and cylinder ranges) equal every pair decided without it (brute force),
 //    and the first contact is confirmed: the coplanarity of its four points changes sign across
 //    the enclosure, the primitives are apart (exactly, CGAL) just before it and interpenetrate
 //    just after it.
@@ -26,6 +24,7 @@
 #include "bench/scenes/assembly/assembly_step.hpp"
 #include "bench/scenes/assembly/lock_and_key.hpp"
 #include "bench/scenes/assembly/rigid_broad_phase.hpp"
+#include "core/src/scene/rigid_cylinder_ranges.hpp"
 #include "corpus/rigid_exact_pose.hpp"
 
 namespace {
@@ -41,12 +40,6 @@ Q3 q3(const Vector3d& v) { return rigid_pose::exactly(v); }
 /// x(s) = c + s d + C(s q) (x0 - c) over the rationals, C from its matrix form.
 Q3 exact_position(const RigidMotion& m, const Vector3d& x0, const mpq_class& s) {
   return rigid_pose::exact_position(m, x0, s);
-}
-
-mpq_class rho2(const Axis& axis, const Q3& p) {
-  const int iu = axis.index == 0 ? 1 : 0, iv = axis.index == 2 ? 1 : 2;
-  const mpq_class u = p[iu] - axis.u, v = p[iv] - axis.v;
-  return u * u + v * v;
 }
 
 Vector3d row(const Positions& x, int i) { return x.row(i).transpose(); }
@@ -121,14 +114,16 @@ TEST(AssemblyMeshes, TheTightFitsHaveTheDesignedClearance) {
     design.segments = segments;
     const PartMesh key = make_key(design), lock = make_lock(design);
     const Dimensions d = dimensions(design);
-    const Axis z{2, 0, 0};
+    // The Scene's cylinder ranges about the z axis (proofs/scene.md#cylinder-ranges).
+    const scene::AxisLine z{Vector3d::Zero(), Vector3d::UnitZ()};
     const auto range_of = [&](const PartMesh& pm, const std::string& part, bool lower) {
+      const filters::RoundingGuard upward;
       double best = lower ? INFINITY : 0;
       for (const Part& p : pm.parts) {
         if (p.name != part) continue;
         for (int f = p.triangle_begin; f < p.triangle_end; ++f) {
           const auto t = pm.mesh.triangles.row(f);
-          const CylinderRange r = triangle_range(z, row(pm.mesh.positions, t[0]),
+          const scene::CylinderRange r = scene::triangle_range(z, row(pm.mesh.positions, t[0]),
                                                  row(pm.mesh.positions, t[1]),
                                                  row(pm.mesh.positions, t[2]));
           best = lower ? std::min(best, r.rho2_lo) : std::max(best, r.rho2_hi);
@@ -163,7 +158,7 @@ TEST(AssemblyBroadPhase, ArcBoxHoldsExactPositionsAndIsTight) {
     const Vector3d translation = i % 2 ? point() : Vector3d::Zero();
     const RigidMotion m = RigidMotion::turn(point(), axis, angle, translation);
     const Vector3d x0 = 2 * point();
-    const Box5 box = arc_box(m, x0);
+    const Box3 box = arc_box(m, x0);
     for (int k = 0; k <= 16; ++k) {
       const mpq_class s(k, 16);
       const Q3 x = exact_position(m, x0, s);
@@ -188,66 +183,11 @@ TEST(AssemblyBroadPhase, ArcBoxHoldsExactPositionsAndIsTight) {
   // A pure translation's box is exactly its segment's.
   RigidMotion slide;
   slide.translation = Vector3d(0.5, -0.25, 0);
-  const Box5 b = arc_box(slide, Vector3d(1, 1, 1));
+  const Box3 b = arc_box(slide, Vector3d(1, 1, 1));
   EXPECT_EQ(b.lo[0], 1);
   EXPECT_EQ(b.hi[0], 1.5);
   EXPECT_EQ(b.lo[1], 0.75);
   EXPECT_EQ(b.hi[2], 1);
-}
-
-TEST(AssemblyBroadPhase, CylinderRangesHoldExactPointsAlongMotionsAboutTheAxis) {
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
-  const auto point = [&] { return Vector3d(u(rng), u(rng), u(rng)); };
-  int positive_lo = 0;
-  for (int i = 0; i < 300; ++i) {
-    const Axis axis{i % 3, 0.25 * u(rng), 0.25 * u(rng)};
-    Vector3d pivot = point();
-    pivot[axis.index == 0 ? 1 : 0] = axis.u;
-    pivot[axis.index == 2 ? 1 : 2] = axis.v;
-    Vector3d along = Vector3d::Zero(), slide = Vector3d::Zero();
-    along[axis.index] = 1;
-    slide[axis.index] = i % 2 ? 0.5 * u(rng) : 0.0;
-    const RigidMotion m = RigidMotion::turn(pivot, along, 2.5 * u(rng), slide);
-    ASSERT_TRUE(turns_about(m, axis));
-    // A triangle, and sometimes a thin or degenerate one (an edge, a point).
-    Vector3d a = point(), b = point(), c = point();
-    if (i % 5 == 0) c = b;
-    if (i % 7 == 0) b = c = a;
-    const CylinderRange t = triangle_range(axis, a, b, c), e = segment_range(axis, a, b);
-    positive_lo += t.rho2_lo > 0;
-    for (int k = 0; k <= 8; ++k) {
-      const mpq_class s(k, 8);
-      const Q3 pa = exact_position(m, a, s), pb = exact_position(m, b, s),
-               pc = exact_position(m, c, s);
-      for (int w = 0; w <= 6; ++w)
-        for (int v = 0; v + w <= 6; ++v) {
-          const mpq_class bw(w, 6), bv(v, 6), bu = 1 - bw - bv;
-          Q3 p;
-          for (int j = 0; j < 3; ++j) p[j] = bu * pa[j] + bv * pb[j] + bw * pc[j];
-          const mpq_class r2 = rho2(axis, p);
-          ASSERT_LE(mpq_class(t.rho2_lo), r2) << "triangle " << i;
-          ASSERT_GE(mpq_class(t.rho2_hi), r2) << "triangle " << i;
-          ASSERT_LE(mpq_class(t.axial_lo) + mpq_class(std::min(0.0, slide[axis.index])),
-                    p[axis.index]);
-          ASSERT_GE(mpq_class(t.axial_hi) + mpq_class(std::max(0.0, slide[axis.index])),
-                    p[axis.index]);
-          if (w == 0) {  // on the edge [a, b]
-            ASSERT_LE(mpq_class(e.rho2_lo), r2) << "segment " << i;
-            ASSERT_GE(mpq_class(e.rho2_hi), r2) << "segment " << i;
-          }
-        }
-    }
-  }
-  EXPECT_GT(positive_lo, 100);  // the lower bounds are not all the trivial 0
-  // Motions that leave the axis are recognised.
-  const Axis z{2, 0, 0};
-  EXPECT_FALSE(turns_about(RigidMotion::turn(Vector3d(0.5, 0, 0), Vector3d::UnitZ(), 0.1), z));
-  EXPECT_FALSE(turns_about(RigidMotion::turn(Vector3d::Zero(), Vector3d(0, 1, 1), 0.1), z));
-  RigidMotion sideways;
-  sideways.translation = Vector3d(1e-300, 0, 0);
-  EXPECT_FALSE(turns_about(sideways, z));
-  EXPECT_TRUE(turns_about(RigidMotion::turn(Vector3d(0, 0, 5), Vector3d::UnitZ(), 0.1), z));
 }
 
 /// Random triangles in [-1, 1]^3, as a soup.
@@ -283,16 +223,18 @@ TEST(AssemblyBroadPhase, KeepsEveryPairThatMeets) {
   std::size_t contacts = 0, culled = 0;
   for (int scene = 0; scene < 24; ++scene) {
     const scenes::Mesh fixed = random_soup(rng, 8), moving = random_soup(rng, 4);
-    const Axis axis{scene % 3, 0.5 * u(rng), 0.5 * u(rng)};
+    // Turns about lines parallel to x, y and z, some with a slide along them.
+    const int index = scene % 3;
+    const double au = 0.5 * u(rng), av = 0.5 * u(rng);
     Vector3d pivot = Vector3d(u(rng), u(rng), u(rng)), along = Vector3d::Zero(),
              slide = Vector3d::Zero();
-    pivot[axis.index == 0 ? 1 : 0] = axis.u;
-    pivot[axis.index == 2 ? 1 : 2] = axis.v;
-    along[axis.index] = 1;
-    slide[axis.index] = scene % 2 ? u(rng) : 0.0;
+    pivot[index == 0 ? 1 : 0] = au;
+    pivot[index == 2 ? 1 : 2] = av;
+    along[index] = 1;
+    slide[index] = scene % 2 ? u(rng) : 0.0;
     const RigidMotion motion = scene % 4 == 3 ? RigidMotion{pivot, slide, Vector3d::Zero()}
                                               : RigidMotion::turn(pivot, along, 3 * u(rng), slide);
-    RigidBroadPhase bp(fixed.positions, fixed.triangles, moving.triangles, axis);
+    RigidBroadPhase bp(fixed.positions, fixed.triangles, moving.triangles);
     const Candidates c = bp.rigid_step(moving.positions, motion);
     const Edges me = unique_edges(moving.triangles), fe = unique_edges(fixed.triangles);
     const StepMeshes m{&moving.triangles, &me, &fixed.positions, &fixed.triangles, &fe};
@@ -307,7 +249,7 @@ TEST(AssemblyBroadPhase, KeepsEveryPairThatMeets) {
     culled += every.size() - c.size();
   }
   EXPECT_GT(contacts, 200u);  // enough pairs meet for the check to mean something
-  EXPECT_GT(culled, 5000u);   // and the broad phase does drop pairs
+  EXPECT_GT(culled, 4000u);   // and the arc boxes do drop pairs (4,578 of them)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -380,8 +322,12 @@ TEST(AssemblyDemo, CoarsePlanEqualsBruteForceAndConfirmsItsFirstContact) {
   const StepMeshes m{&key.mesh.triangles, &ke, &lock.mesh.positions, &lock.mesh.triangles, &le};
   const Candidates every = all_pairs(key.mesh.positions, key.mesh.triangles, ke,
                                      lock.mesh.positions, lock.mesh.triangles, le);
-  RigidBroadPhase bp(lock.mesh.positions, lock.mesh.triangles, key.mesh.triangles,
-                     Axis{2, 0, 0});
+  // The demonstration's path: the lock a static mesh, the key a rigid body of one Scene.
+  Scene scene;
+  const MeshId lock_id = scene.add_static_mesh(lock.mesh.positions, lock.mesh.triangles);
+  const MeshId key_id = scene.add_rigid_body(key.mesh.positions, key.mesh.triangles);
+  ASSERT_TRUE(scene.edges(key_id).rows() == ke.rows() && scene.edges(key_id) == ke);
+  ASSERT_TRUE(scene.edges(lock_id).rows() == le.rows() && scene.edges(lock_id) == le);
   Plan plan;
   plan.turn_to_degrees = 120;
   int contact_steps = 0;
@@ -390,9 +336,10 @@ TEST(AssemblyDemo, CoarsePlanEqualsBruteForceAndConfirmsItsFirstContact) {
     // Brute force on the last insertion steps (the barrel over the pin) and every turn.
     if (step.phase == "insert" && step.index < 6) continue;
     const Positions start = key_positions_at_start(key, design, step);
-    const Candidates c = bp.rigid_step(start, step.motion);
-    culled_by_cylinders += bp.rigid_step(start, step.motion, false).size() - c.size();
-    const StepDecision fast = decide_rigid(m, start, step.motion, c);
+    scene.set_rigid_motion(key_id, start, step.motion);
+    const SceneResult result = scene.find_contacts({});
+    culled_by_cylinders += result.stats.cylinder_culled;
+    const StepDecision fast = from_scene(result, key_id, lock_id);
     const StepDecision brute = decide_rigid(m, start, step.motion, every);
     const std::string at = step.phase + " " + std::to_string(step.index);
     ASSERT_EQ(fast.contacts.size(), brute.contacts.size()) << at;
@@ -400,7 +347,12 @@ TEST(AssemblyDemo, CoarsePlanEqualsBruteForceAndConfirmsItsFirstContact) {
       EXPECT_TRUE(fast.contacts[i].pair == brute.contacts[i].pair) << at;
       EXPECT_EQ(fast.contacts[i].toi_lo, brute.contacts[i].toi_lo) << at;
       EXPECT_EQ(fast.contacts[i].toi_hi, brute.contacts[i].toi_hi) << at;
+      EXPECT_EQ(fast.contacts[i].has_time, brute.contacts[i].has_time) << at;
+      EXPECT_EQ(fast.contacts[i].time_lo, brute.contacts[i].time_lo) << at;
+      EXPECT_EQ(fast.contacts[i].time_hi, brute.contacts[i].time_hi) << at;
     }
+    ASSERT_EQ(fast.collides, brute.collides) << at;
+    if (fast.collides) EXPECT_TRUE(fast.earliest.pair == brute.earliest.pair) << at;
     if (!fast.collides) continue;
     ++contact_steps;
     // Only the step that reaches the stop (90 to 105 degrees) makes contact.

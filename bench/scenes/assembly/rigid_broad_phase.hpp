@@ -1,28 +1,20 @@
-// The demonstration's broad phase for one rigid body moving against a static mesh over a step
-// (to be replaced by the Scene's when it has rigid bodies). Certified: it never drops a pair
-// that meets during the step.
+// The demonstration's broad phase of arc boxes for one rigid body moving against a static mesh
+// over a step, and of swept chord boxes for the chord approximation. The exact path runs through
+// exactccd::Scene (which adds the cylinder ranges, proofs/scene.md#cylinder-ranges); this one
+// stays for the chord and for counting the pairs of boxes alone. Certified: it never drops a
+// pair that meets during the step.
 //
 //  * Arc boxes: a box holding every position of a vertex over s in [0, 1] under a RigidMotion,
 //    the intersection of two certified enclosures: the ball about the moving axis point
 //    (radius |x0 - a|, a on the rotation axis) and the box of the chord of the rotation
 //    inflated by the sagitta bound |x0 - a| |q|^2 / 2, each shifted along the translation.
 //    PROOF: proofs/rigid_ccd.md#arc-boxes
-//  * Cylinder ranges: when the step turns about a line parallel to a coordinate axis and
-//    translates along it, every point keeps its distance to that line and moves along it by
-//    s d; primitives whose ranges of squared distance to the line, or of the axial coordinate,
-//    are disjoint never meet. Coaxial walls that slide past each other with a tiny clearance
-//    (where no axis-aligned box can separate them) are culled this way.
-//    PROOF: proofs/rigid_ccd.md#cylinder-ranges
-//
-// Boxes have five coordinates (x, y, z, squared distance to the axis, axial coordinate; the
-// last two universal when unused) and two boxes overlap only if they overlap in all five.
 #pragma once
 
 #include <Eigen/Core>
 
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -31,51 +23,29 @@
 
 namespace exactccd::assembly {
 
-/// A closed box in five coordinates (see the file comment).
-struct Box5 {
-  std::array<double, 5> lo, hi;
+/// A closed box.
+struct Box3 {
+  std::array<double, 3> lo, hi;
 };
 
-/// The line through (u, v) parallel to coordinate axis `index` (u, v: the other two coordinates
-/// in increasing order).
-struct Axis {
-  int index = 2;
-  double u = 0, v = 0;
-};
+/// The certified box of x0's path over s in [0, 1]. PROOF: proofs/rigid_ccd.md#arc-boxes
+Box3 arc_box(const RigidMotion& motion, const Eigen::Vector3d& x0);
 
-/// True when `motion` turns about `axis` (its Cayley vector parallel to it and, unless zero, its
-/// pivot on it) and translates along it: checked exactly on the doubles.
-bool turns_about(const RigidMotion& motion, const Axis& axis);
-
-/// The certified box (first three coordinates) of x0's path over s in [0, 1]; the last two
-/// universal. PROOF: proofs/rigid_ccd.md#arc-boxes
-Box5 arc_box(const RigidMotion& motion, const Eigen::Vector3d& x0);
-
-/// Squared distance to the axis (lo, hi) and axial coordinate (lo, hi) of a closed primitive
-/// at rest, certified. PROOF: proofs/rigid_ccd.md#cylinder-ranges
-struct CylinderRange {
-  double rho2_lo, rho2_hi, axial_lo, axial_hi;
-};
-CylinderRange point_range(const Axis& axis, const Eigen::Vector3d& p);
-CylinderRange segment_range(const Axis& axis, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
-CylinderRange triangle_range(const Axis& axis, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                             const Eigen::Vector3d& c);
-
-/// A bounding volume hierarchy over Box5 (median splits on the centroids' widest spatial axis).
-class Bvh5 {
+/// A bounding volume hierarchy over Box3 (median splits on the centroids' widest axis).
+class Bvh3 {
  public:
-  void build(const std::vector<Box5>& boxes);
+  void build(const std::vector<Box3>& boxes);
   /// New boxes for the same primitives, the shape kept.
-  void refit(const std::vector<Box5>& boxes);
+  void refit(const std::vector<Box3>& boxes);
   bool empty() const { return nodes_.empty(); }
   std::size_t size() const { return boxes_.size(); }
   /// f(i, j) for every primitive i of *this and j of other whose boxes overlap.
   template <class F>
-  void for_each_overlap(const Bvh5& other, F&& f) const;
+  void for_each_overlap(const Bvh3& other, F&& f) const;
 
  private:
   struct Node {
-    Box5 box;
+    Box3 box;
     std::uint32_t first = 0;  ///< leaf: order_[first, first + count); inner: the right child
     std::uint32_t count = 0;  ///< 0 for an inner node (its left child is the next node)
   };
@@ -84,10 +54,10 @@ class Bvh5 {
   void refit_node(std::uint32_t n);
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> order_;
-  std::vector<Box5> boxes_;
+  std::vector<Box3> boxes_;
 };
 
-bool overlap(const Box5& a, const Box5& b);
+bool overlap(const Box3& a, const Box3& b);
 
 /// Candidate pairs of one step, each (moving primitive, static primitive).
 struct Candidates {
@@ -104,46 +74,34 @@ struct Candidates {
 /// refitted after.
 class RigidBroadPhase {
  public:
-  /// `axis`: the line the cylinder ranges refer to (nullopt: boxes only).
   RigidBroadPhase(const Positions& static_positions, const Triangles& static_triangles,
-                  const Triangles& moving_triangles, std::optional<Axis> axis);
+                  const Triangles& moving_triangles);
 
-  /// Pairs that may meet while the moving mesh, at `start` when s = 0, moves with `motion`.
-  /// The cylinder ranges are used when the motion turns about the axis (turns_about) and
-  /// `use_cylinders`.
-  Candidates rigid_step(const Positions& start, const RigidMotion& motion,
-                        bool use_cylinders = true);
+  /// Pairs whose arc boxes overlap while the moving mesh, at `start` when s = 0, moves with
+  /// `motion`.
+  Candidates rigid_step(const Positions& start, const RigidMotion& motion);
 
   /// Pairs that may meet while every moving vertex goes on the straight line from `start` to
   /// `end` (the chord approximation): swept boxes only.
   Candidates linear_step(const Positions& start, const Positions& end);
 
-  /// Where the last step's time went (milliseconds): boxes of the moving primitives (arc boxes
-  /// and hulls), their cylinder ranges, the hierarchies' refit and traversal.
-  struct Timing {
-    double boxes_ms = 0, cylinders_ms = 0, traversal_ms = 0;
-  };
-  const Timing& last_timing() const { return timing_; }
-
   const Edges& static_edges() const { return static_edges_; }
   const Edges& moving_edges() const { return moving_edges_; }
 
  private:
-  Candidates traverse(const std::vector<Box5>& vertex_boxes, const std::vector<Box5>& edge_boxes,
-                      const std::vector<Box5>& face_boxes);
+  Candidates traverse(const std::vector<Box3>& vertex_boxes, const std::vector<Box3>& edge_boxes,
+                      const std::vector<Box3>& face_boxes);
 
   Triangles moving_triangles_;
   Edges static_edges_, moving_edges_;
-  std::optional<Axis> axis_;
-  Bvh5 static_vertices_, static_edges_bvh_, static_faces_;
-  Bvh5 moving_vertices_, moving_edges_bvh_, moving_faces_;
-  Timing timing_;
+  Bvh3 static_vertices_, static_edges_bvh_, static_faces_;
+  Bvh3 moving_vertices_, moving_edges_bvh_, moving_faces_;
 };
 
-// ---- Bvh5::for_each_overlap --------------------------------------------------------------------
+// ---- Bvh3::for_each_overlap --------------------------------------------------------------------
 
 template <class F>
-void Bvh5::for_each_overlap(const Bvh5& other, F&& f) const {
+void Bvh3::for_each_overlap(const Bvh3& other, F&& f) const {
   if (empty() || other.empty()) return;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> stack{{0, 0}};
   while (!stack.empty()) {
@@ -163,8 +121,8 @@ void Bvh5::for_each_overlap(const Bvh5& other, F&& f) const {
       }
       continue;
     }
-    // Descend the inner node; of two inner nodes, the one with the larger spatial extent.
-    const auto extent = [](const Box5& x) {
+    // Descend the inner node; of two inner nodes, the one with the larger extent.
+    const auto extent = [](const Box3& x) {
       return (x.hi[0] - x.lo[0]) + (x.hi[1] - x.lo[1]) + (x.hi[2] - x.lo[2]);
     };
     if (nb.count || (!na.count && extent(na.box) >= extent(nb.box))) {

@@ -154,6 +154,12 @@ struct SceneStats {
   std::uint32_t hierarchies_built = 0;
   /// Hierarchies refitted during the call.
   std::uint32_t hierarchies_refitted = 0;
+  /// Cuts by the cylinder ranges (both sides turn about one line, or slide along it, or rest;
+  /// proofs/scene.md, section 9.3) during the hierarchies' traversal: pairs of nodes whose boxes
+  /// overlap but whose ranges are apart (each cut once, whatever it holds) and pairs of
+  /// primitives the same. Their pairs are not candidates, never tested. 0 in scenes without
+  /// rigid bodies. With BroadPhase::static_bvh, counted per span.
+  std::uint64_t cylinder_culled = 0;
 };
 
 /// The answer of Scene::find_contacts.

@@ -103,10 +103,36 @@ class Bvh {
   /// pair once. Node pairs are spread over TBB tasks: f is called concurrently.
   template <class F>
   void parallel_for_each_overlap(const Bvh& other, F&& f) const {
+    parallel_for_each_overlap(other, f, [](std::uint32_t, std::uint32_t) { return true; });
+  }
+  /// The same, skipping every node pair (a, b) (node indices of *this and other) for which
+  /// keep(a, b) is false, and the pairs of primitives below it: keep must be false only when
+  /// no primitive pair below the two nodes is wanted. Called concurrently.
+  template <class F, class Keep>
+  void parallel_for_each_overlap(const Bvh& other, F&& f, const Keep& keep) const {
     if (empty() || other.empty()) return;
     std::vector<Task> tasks{{0, 0, false}};
     split_tasks(other, tasks);
-    run_tasks(other, tasks, f);
+    run_tasks(other, tasks, f, keep);
+  }
+  /// Per node, the merge of `per_primitive[i]` over the primitives i below it (`merge(x, y)`
+  /// an associative union of two values; one value per primitive, by primitive index).
+  template <class T, class Merge>
+  std::vector<T> node_values(const std::vector<T>& per_primitive, const Merge& merge) const {
+    std::vector<T> out(nodes_.size());
+    // Pre-order: children follow their parent, so a reverse sweep meets them first.
+    for (std::size_t n = nodes_.size(); n-- > 0;) {
+      const Node& node = nodes_[n];
+      if (node.leaf()) {
+        T v = per_primitive[order_[node.first]];
+        for (std::uint32_t s = node.first + 1; s < node.first + node.count; ++s)
+          v = merge(v, per_primitive[order_[s]]);
+        out[n] = v;
+      } else {
+        out[n] = merge(out[n + 1], out[node.first]);
+      }
+    }
+    return out;
   }
 
   /// Calls f(i, j), i != j, once for every unordered pair of primitives whose boxes overlap
@@ -147,20 +173,25 @@ class Bvh {
     }
   }
 
-  template <class F>
-  void overlap_nodes(const Bvh& other, std::uint32_t a, std::uint32_t b, F& f) const {
+  template <class F, class Keep>
+  void overlap_nodes(const Bvh& other, std::uint32_t a, std::uint32_t b, F& f,
+                     const Keep& keep) const {
     const Node& na = nodes_[a];
     const Node& nb = other.nodes_[b];
-    if (!overlap(na.box, nb.box)) return;
+    if (!overlap(na.box, nb.box) || !keep(a, b)) return;
     if (na.leaf() && nb.leaf()) return leaf_pairs(other, na, nb, f);
     // Descend the node that is not a leaf; of two inner nodes, the larger one.
     if (nb.leaf() || (!na.leaf() && size_of(na.box) >= size_of(nb.box))) {
-      overlap_nodes(other, left(a), b, f);
-      overlap_nodes(other, right(a), b, f);
+      overlap_nodes(other, left(a), b, f, keep);
+      overlap_nodes(other, right(a), b, f, keep);
     } else {
-      overlap_nodes(other, a, other.left(b), f);
-      overlap_nodes(other, a, other.right(b), f);
+      overlap_nodes(other, a, other.left(b), f, keep);
+      overlap_nodes(other, a, other.right(b), f, keep);
     }
+  }
+  template <class F>
+  void overlap_nodes(const Bvh& other, std::uint32_t a, std::uint32_t b, F& f) const {
+    overlap_nodes(other, a, b, f, [](std::uint32_t, std::uint32_t) { return true; });
   }
 
   template <class F>
@@ -221,6 +252,10 @@ class Bvh {
 
   template <class F>
   void run_tasks(const Bvh& other, const std::vector<Task>& tasks, F& f) const {
+    run_tasks(other, tasks, f, [](std::uint32_t, std::uint32_t) { return true; });
+  }
+  template <class F, class Keep>
+  void run_tasks(const Bvh& other, const std::vector<Task>& tasks, F& f, const Keep& keep) const {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         // A worker may run with the host's FP state: box comparisons must not
@@ -231,7 +266,7 @@ class Bvh {
                           if (t.self)
                             self_nodes(t.a, f);
                           else
-                            overlap_nodes(other, t.a, t.b, f);
+                            overlap_nodes(other, t.a, t.b, f, keep);
                         }
                       });
   }

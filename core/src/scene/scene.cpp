@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,7 @@
 #include "core/src/ccd_options_check.hpp"
 #include "core/src/scene/bvh.hpp"
 #include "core/src/scene/rigid_boxes.hpp"
+#include "core/src/scene/rigid_cylinder_ranges.hpp"
 #include "core/src/scene/time_window.hpp"
 #include "exactccd/ccd.hpp"
 
@@ -69,7 +71,57 @@ struct Mesh {
   Triangles triangles;
   Edges edges;
   Hierarchies spans[3];
+  /// Cylinder ranges of the start positions about recently used lines (rigid_cylinder_ranges.hpp),
+  /// dropped when the start positions change.
+  std::vector<std::shared_ptr<const scene::MeshCylinderRanges>> cylinder_cache;
 };
+
+/// At most this many lines' ranges are kept per mesh (a few bodies turning about different axes).
+constexpr std::size_t kCylinderCacheSize = 4;
+
+/// What a mesh's motion keeps (rigid_cylinder_ranges.hpp). Needs upward rounding.
+scene::KeptAxes kept_axes_of(const Mesh& m) {
+  if (m.is_static) return {scene::KeptAxes::any, scene::AxisLine{}};
+  if (m.is_rigid) return scene::kept_axes(m.motion);
+  return {};  // a linearly moving mesh
+}
+
+/// The mesh's ranges about `line`, from the cache or computed (and cached). Needs upward rounding.
+std::shared_ptr<const scene::MeshCylinderRanges> cylinder_ranges(Mesh& m,
+                                                                 const scene::AxisLine& line) {
+  for (const auto& r : m.cylinder_cache)
+    if (r->line == line) return r;
+  auto r = std::make_shared<const scene::MeshCylinderRanges>(
+      scene::mesh_ranges(line, m.start, m.edges, m.triangles));
+  if (m.cylinder_cache.size() >= kCylinderCacheSize) m.cylinder_cache.erase(m.cylinder_cache.begin());
+  m.cylinder_cache.push_back(r);
+  return r;
+}
+
+/// The cylinder cull of one mesh pair: both sides' ranges about their common line, h widened by
+/// each side's slide along it. PROOF: proofs/scene.md#cylinder-ranges
+struct CylinderCull {
+  std::shared_ptr<const scene::MeshCylinderRanges> first, second;
+};
+
+/// The cull of the mesh pair (a, b), or nullopt when no line is kept by both motions (always
+/// when neither is a rigid body: scenes without rigid bodies are unchanged).
+std::optional<CylinderCull> cylinder_cull(std::vector<Mesh>& meshes, MeshId a, MeshId b) {
+  Mesh& ma = meshes[a];
+  Mesh& mb = meshes[b];
+  if (a == b || !(ma.is_rigid || mb.is_rigid)) return std::nullopt;
+  const filters::RoundingGuard upward;
+  const std::optional<scene::AxisLine> line =
+      scene::common_axis(kept_axes_of(ma), kept_axes_of(mb));
+  if (!line) return std::nullopt;
+  const auto side = [&](Mesh& m) {
+    auto r = cylinder_ranges(m, *line);
+    if (!m.is_rigid || m.motion.translation.isZero(0)) return r;
+    return std::shared_ptr<const scene::MeshCylinderRanges>(std::make_shared<
+        const scene::MeshCylinderRanges>(scene::shifted(*r, scene::h_shift(*line, m.motion.translation))));
+  };
+  return CylinderCull{side(ma), side(mb)};
+}
 
 Edges edges_of(const Triangles& triangles) {
   std::vector<std::pair<std::int32_t, std::int32_t>> sides;
@@ -416,19 +468,45 @@ struct Scene::Impl {
             row(b.end, b.edges(j, 0)),   row(b.end, b.edges(j, 1))};
   }
 
+  /// The cylinder culls of the mesh pairs the calls visit, indexed a * mesh count + b
+  /// (cylinder_cull); computed before the parallel traversals, which only read them.
+  std::vector<std::optional<CylinderCull>> cylinder_culls(const SceneOptions& o) {
+    const std::size_t n = meshes.size();
+    std::vector<std::optional<CylinderCull>> culls(n * n);
+    if (!any_rigid()) return culls;
+    for_each_mesh_pair(meshes, o.self_collision, true,
+                       [&](MeshId a, MeshId b) { culls[a * n + b] = cylinder_cull(meshes, a, b); });
+    return culls;
+  }
+
   /// Appends every candidate pair of the hierarchies `at(mesh)` (one span) to `found`: pairs
-  /// of primitives whose boxes overlap, pairs within a mesh sharing a vertex excluded.
+  /// of primitives whose boxes overlap, pairs within a mesh sharing a vertex excluded, pairs
+  /// whose cylinder ranges are apart (`culls`) counted in `culled` and excluded.
   template <class At>
   void gather_candidates(const SceneOptions& o, const At& at,
-                         tbb::enumerable_thread_specific<std::vector<ScenePair>>& found) const {
+                         const std::vector<std::optional<CylinderCull>>& culls,
+                         tbb::enumerable_thread_specific<std::vector<ScenePair>>& found,
+                         tbb::enumerable_thread_specific<std::uint64_t>& culled) const {
+    const std::size_t n = meshes.size();
     for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
       const Mesh& mb = meshes[b];
-      at(meshes[a]).vertices.parallel_for_each_overlap(
-          at(mb).faces, [&](std::uint32_t v, std::uint32_t f) {
-            if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v)))
-              return;
-            found.local().push_back({QueryType::vertex_face, a, v, b, f});
-          });
+      const auto& cull = culls[a * n + b];
+      const Bvh& va = at(meshes[a]).vertices;
+      const Bvh& fb = at(mb).faces;
+      const auto pair = [&](std::uint32_t v, std::uint32_t f) {
+        if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v))) return;
+        if (cull && scene::apart(cull->first->vertices[v], cull->second->faces[f])) {
+          ++culled.local();
+          return;
+        }
+        found.local().push_back({QueryType::vertex_face, a, v, b, f});
+      };
+      if (cull)
+        va.parallel_for_each_overlap(fb, pair,
+                                     node_cull(va, cull->first->vertices, fb, cull->second->faces,
+                                               culled));
+      else
+        va.parallel_for_each_overlap(fb, pair);
     });
     for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
       const Mesh& ma = meshes[a];
@@ -438,19 +516,58 @@ struct Scene::Impl {
           found.local().push_back({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)});
         });
       } else {
-        at(ma).edges.parallel_for_each_overlap(
-            at(meshes[b]).edges, [&](std::uint32_t i, std::uint32_t j) {
-              found.local().push_back({QueryType::edge_edge, a, i, b, j});
-            });
+        const auto& cull = culls[a * n + b];
+        const Bvh& ea = at(ma).edges;
+        const Bvh& eb = at(meshes[b]).edges;
+        const auto pair = [&](std::uint32_t i, std::uint32_t j) {
+          if (cull && scene::apart(cull->first->edges[i], cull->second->edges[j])) {
+            ++culled.local();
+            return;
+          }
+          found.local().push_back({QueryType::edge_edge, a, i, b, j});
+        };
+        if (cull)
+          ea.parallel_for_each_overlap(
+              eb, pair, node_cull(ea, cull->first->edges, eb, cull->second->edges, culled));
+        else
+          ea.parallel_for_each_overlap(eb, pair);
       }
     });
+  }
+
+  /// The node test of a traversal with a cylinder cull: a node's ranges merge those of the
+  /// primitives below it, so apart nodes hold no pair that is not apart (each cut counted).
+  struct NodeCull {
+    std::vector<scene::CylinderRange> first, second;
+    tbb::enumerable_thread_specific<std::uint64_t>* culled;
+    bool operator()(std::uint32_t a, std::uint32_t b) const {
+      if (!scene::apart(first[a], second[b])) return true;
+      ++culled->local();
+      return false;
+    }
+  };
+  static NodeCull node_cull(const Bvh& a, const std::vector<scene::CylinderRange>& ra,
+                            const Bvh& b, const std::vector<scene::CylinderRange>& rb,
+                            tbb::enumerable_thread_specific<std::uint64_t>& culled) {
+    return {a.node_values(ra, scene::merge_ranges), b.node_values(rb, scene::merge_ranges),
+            &culled};
+  }
+
+  static std::uint64_t total(const tbb::enumerable_thread_specific<std::uint64_t>& counts) {
+    std::uint64_t sum = 0;
+    for (std::uint64_t c : counts) sum += c;
+    return sum;
   }
 
   /// The candidate pairs of the swept hierarchies, in no particular order.
   std::vector<ScenePair> swept_candidates(const SceneOptions& o, SceneStats& stats) {
     for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats);
+    const auto culls = cylinder_culls(o);
     tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
-    gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, found);
+    tbb::enumerable_thread_specific<std::uint64_t> culled(0);
+    gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, culls,
+                      found, culled);
+    stats.cylinder_culled += total(culled);
     return concatenate(found);
   }
 
@@ -468,6 +585,8 @@ struct Scene::Impl {
   /// sorted, each once.
   std::vector<ScenePair> static_candidates(const SceneOptions& o, SceneStats& stats) {
     tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+    tbb::enumerable_thread_specific<std::uint64_t> culled(0);
+    const auto culls = cylinder_culls(o);
     for (Span span : {Span::start, Span::end}) {
       for (Mesh& m : meshes) prepare(m, span, o.min_separation, stats);
       gather_candidates(
@@ -475,8 +594,9 @@ struct Scene::Impl {
           [span](const Mesh& m) -> const Hierarchies& {
             return m.spans[m.is_static ? 0 : static_cast<int>(span)];
           },
-          found);
+          culls, found, culled);
     }
+    stats.cylinder_culled += total(culled);
     std::vector<ScenePair> all = concatenate(found);
     tbb::parallel_sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
@@ -704,6 +824,7 @@ void Scene::set_rigid_motion(MeshId id, const Positions& start, const RigidMotio
   if (start.rows() != m.start.rows())
     throw std::invalid_argument("exactccd: set_rigid_motion needs one row per vertex of the body");
   check_positions(start, "the start positions");
+  if (start != m.start) m.cylinder_cache.clear();
   m.start = start;
   apply_rigid_motion(m, motion);
 }
@@ -721,6 +842,7 @@ void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) 
   check_positions(end, "the end positions");
   m.start = start;
   m.end = end;
+  m.cylinder_cache.clear();
   for (Hierarchies& h : m.spans) h.stale = true;
 }
 
