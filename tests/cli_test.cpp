@@ -492,7 +492,9 @@ void expect_bench_object(const nlohmann::json& j) {
   EXPECT_TRUE(j.at("mean_ns").is_number());
   EXPECT_TRUE(j.at("median_ns").is_number());
   EXPECT_TRUE(j.at("max_ns").is_number());
-  EXPECT_GE(j.at("max_ns").get<double>(), j.at("median_ns").get<double>());
+  // max_ns is the slowest query re-timed (its fastest repeat), the median one of single timings
+  // on a busy machine: no order between them can be asserted (timings are not tested).
+  EXPECT_GT(j.at("max_ns").get<double>(), 0.0);
   EXPECT_TRUE(j.at("false_positives").is_number_unsigned());
   EXPECT_TRUE(j.at("false_negatives").is_number_unsigned());
   EXPECT_TRUE(j.at("stage_share").is_object());
