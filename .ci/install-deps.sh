@@ -8,7 +8,8 @@ packages=(
   googletest libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev nlohmann-json3-dev
   # The Python module and its tests, the Dask oracle, the API reference (issue 11).
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed doxygen
-  # z3: the independent check of minimum-separation CCD (python/tests/test_min_separation.py).
+  # z3: the independent check of minimum-separation and rigid-body CCD (python/tests/test_min_separation.py,
+  # python/tests/test_rigid.py).
   python3-z3
   # FCL 0.7: the comparison of rigid-body CCD with FCL's continuous collision
   # (bench/fcl_comparison; built only when CMake finds it, the library never uses it).
