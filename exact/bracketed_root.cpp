@@ -219,9 +219,21 @@ RootIterator::RootIterator(const SmallPolynomial& p, double t_max,
                            SmallPolynomial* square_free_storage)
     : p_(&p), storage_(square_free_storage) {
   if (p.degree() < 1) return;  // constants: no root (the zero polynomial is not passed)
-  if (p.sign_at(t_max) == 0) push({t_max, t_max, Kind::point});
+  if (p.degree() == 2) {
+    // Descartes' rule alone would bisect down to one ulp around a double root, or around the
+    // minimum of a quadratic without real roots that nearly touches zero.
+    // PROOF: proofs/exact_ccd.md#quadratic-discriminant
+    const int discriminant = p.quadratic_discriminant_sign();
+    if (discriminant < 0) return;  // no real root
+    if (discriminant == 0) {       // the same root, simple, as the only root of a line
+      square_free_ = true;
+      *storage_ = p.double_root_factor();
+      p_ = storage_;
+    }
+  }
+  if (p_->sign_at(t_max) == 0) push({t_max, t_max, Kind::point});
   push({0.0, t_max, Kind::interval});
-  if (p.sign_at(0.0) == 0) push({0.0, 0.0, Kind::point});
+  if (p_->sign_at(0.0) == 0) push({0.0, 0.0, Kind::point});
 }
 
 std::optional<BracketedRoot> RootIterator::next() {

@@ -6,6 +6,7 @@
 // PROOF: proofs/exact_ccd.md#descartes-at-doubles
 // PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
 // PROOF: proofs/exact_ccd.md#sign-at-a-root-by-remainders
+// PROOF: proofs/exact_ccd.md#quadratic-discriminant
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "core/predicates/fp_environment.hpp"
 #include "exact/bracketed_root.hpp"
 #include "exact/integer_cubic.hpp"
+#include "exact/root_isolation.hpp"
 #include "exact/small_polynomial.hpp"
 #include "test_scale.hpp"
 
@@ -419,6 +421,92 @@ TEST_F(SmallPolynomialTest, SignAtRootByRemaindersMatchesSturmTarski) {
     }
   }
   EXPECT_GT(compared, 1000);
+}
+
+/// Quadratics whose discriminant is zero, or within one of zero, or random, with coefficients
+/// of `bits` bits (every FixedInt width of the discriminant, and GMP beyond): c2 (k t - m)^2
+/// [+ delta]. Roots in and out of [0, 1], c2 of either sign.
+std::array<mpz_class, 4> adversarial_quadratic(std::mt19937_64& rng, int bits, int kind) {
+  const int part = std::max(1, bits / 3);
+  mpz_class a = random_integer(rng, part), k = random_integer(rng, part);
+  mpz_class m = random_integer(rng, static_cast<int>(rng() % (part + 1)));
+  if (a == 0) a = 1;
+  if (k == 0) k = 1;
+  if (rng() % 2 == 0) m = abs(k) - 1 - (m % 4);  // root m / k just below 1 (or beyond 0)
+  std::array<mpz_class, 4> c;
+  c[2] = a * k * k;
+  c[1] = -2 * a * k * m;
+  c[0] = a * m * m;
+  switch (kind) {
+    case 0: break;                        // double root m / k
+    case 1: c[0] += sgn(a); break;        // no real root, minimum a hair above zero
+    case 2: c[0] -= sgn(a); break;        // two roots a hair apart
+    default: c = random_coefficients(rng, 2, bits);
+  }
+  if (c[2] == 0) c[2] = 1;
+  return c;
+}
+
+// The discriminant's sign in its FixedInt width (or GMP) against GMP, and the double root's
+// linear factor against the identity 4 c2 p = (2 c2 t + c1)^2; 40- to 1,100-bit coefficients.
+TEST_F(SmallPolynomialTest, QuadraticDiscriminantMatchesGmp) {
+  std::mt19937_64 rng(0xd15c);
+  const int widths[] = {8, 40, 62, 100, 150, 300, 500, 700, 1100};
+  const int n = static_cast<int>(test::scaled_count(20000));
+  int zero = 0;
+  for (int trial = 0; trial < n; ++trial) {
+    const int bits = widths[trial % 9];
+    const auto c = adversarial_quadratic(rng, bits, static_cast<int>(rng() % 4));
+    const SmallPolynomial p = SmallPolynomial::from_mpz(c.data(), 3);
+    ASSERT_EQ(p.degree(), 2);
+    const mpz_class discriminant = c[1] * c[1] - 4 * c[2] * c[0];
+    ASSERT_EQ(p.quadratic_discriminant_sign(), sgn(discriminant))
+        << bits << " bits: " << c[2] << " t^2 + " << c[1] << " t + " << c[0];
+    if (discriminant != 0) continue;
+    ++zero;
+    const MpzPolynomial f = to_mpz_polynomial(p.double_root_factor());
+    ASSERT_EQ(f.degree, 1);
+    EXPECT_EQ(f.c[1] * f.c[1], 4 * c[2] * c[2]);
+    EXPECT_EQ(2 * f.c[1] * f.c[0], 4 * c[2] * c[1]);
+    EXPECT_EQ(f.c[0] * f.c[0], 4 * c[2] * c[0]);
+  }
+  EXPECT_GT(zero, n / 8);
+}
+
+// RootIterator on quadratics (double roots, no real root with the minimum a hair above zero,
+// two roots a hair apart, random) against the rational path's root isolation (Sturm
+// sequences): the same roots in [0, T], in order, each bracket holding its root.
+TEST_F(SmallPolynomialTest, RootIteratorOnQuadraticsMatchesRationalRoots) {
+  std::mt19937_64 rng(0x9ad2);
+  const int widths[] = {6, 20, 40, 62, 100, 200, 400};
+  const double t_maxes[] = {1.0, 0.5, 0.75};
+  const int n = static_cast<int>(test::scaled_count(3000));
+  int with_roots_found = 0;
+  for (int trial = 0; trial < n; ++trial) {
+    const int bits = widths[trial % 7];
+    const double t_max = t_maxes[rng() % 3];
+    const auto c = adversarial_quadratic(rng, bits, static_cast<int>(rng() % 4));
+    const SmallPolynomial p = SmallPolynomial::from_mpz(c.data(), 3);
+    const std::vector<AlgebraicTime> expected =
+        real_roots_in(Polynomial({Q(c[0]), Q(c[1]), Q(c[2])}), Q(0), Q(t_max));
+    SmallPolynomial square_free;
+    RootIterator it(p, t_max, &square_free);
+    std::vector<BracketedRoot> found;
+    while (auto r = it.next()) found.push_back(*r);
+    ASSERT_EQ(found.size(), expected.size())
+        << bits << " bits: " << c[2] << " t^2 + " << c[1] << " t + " << c[0] << ", T = " << t_max;
+    with_roots_found += !found.empty();
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      AlgebraicTime root = expected[i];
+      if (found[i].is_exact()) {
+        EXPECT_EQ(root.compare(Q(found[i].lo())), 0);
+      } else {
+        EXPECT_GT(root.compare(Q(found[i].lo())), 0);
+        EXPECT_LT(root.compare(Q(found[i].hi())), 0);
+      }
+    }
+  }
+  EXPECT_GT(with_roots_found, n / 4);
 }
 
 TEST_F(SmallPolynomialTest, GcdAndSquareFreePart) {
