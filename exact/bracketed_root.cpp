@@ -193,12 +193,19 @@ std::pair<double, double> BracketedRoot::enclosure(double width) const {
 
 int BracketedRoot::sign_of(const SmallPolynomial& g) {
   if (g.is_zero()) return 0;
-  if (fine_) return sign_in_dyadic_bracket(to_mpz_polynomial(*p_), to_mpz_polynomial(g), *fine_);
+  int sign = 0;
+  if (fine_) {
+    if (g.sign_at_roots_of(*p_, &sign)) return sign;
+    return sign_in_dyadic_bracket(to_mpz_polynomial(*p_), to_mpz_polynomial(g), *fine_);
+  }
   for (int step = 0;; ++step) {
     if (is_exact()) return g.sign_at(lo_);
     int s[4];
     const int n = g.bernstein_signs(lo_, hi_, s);
     if (one_strict_sign(s, n)) return s[0];  // g has that sign on all of [lo, hi]
+    // Degenerate contacts: g is often a multiple of p (h = 0), which no bracket can decide.
+    // PROOF: proofs/exact_ccd.md#constant-remainder
+    if (step == 0 && g.sign_at_roots_of(*p_, &sign)) return sign;
     if (step < 2) {
       if (!refine()) break;
     } else if (step == 2) {  // straight to adjacent doubles: Newton-guided, a few signs

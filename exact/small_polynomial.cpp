@@ -332,6 +332,36 @@ SmallPolynomial SmallPolynomial::double_root_factor() const {
   return from_fixed(c, 2, bits_ + 1);
 }
 
+// ---- the sign at the roots of a divisor, in fixed size ----------------------------------------
+// PROOF: proofs/exact_ccd.md#constant-remainder
+
+bool SmallPolynomial::sign_at_roots_of(const SmallPolynomial& p, int* sign) const {
+  const int dg = degree_, dp = p.degree_;
+  if (dp < 1 || dg < dp || in_gmp_ || p.in_gmp_) return false;
+  const int n = dg - dp + 1;  // elimination steps, each multiplying by lc(p)
+  const int limbs = fixed_limbs_for(bits_ + n * (p.bits_ + 1));
+  if (limbs == 0) return false;
+  return with_limbs(limbs, [&](auto w) {
+    constexpr int N = decltype(w)::value;
+    FixedInt<N> a[4] = {fixed_[0].resized<N>(), fixed_[1].resized<N>(), fixed_[2].resized<N>(),
+                        fixed_[3].resized<N>()};
+    const FixedInt<N> b[4] = {p.fixed_[0].resized<N>(), p.fixed_[1].resized<N>(),
+                              p.fixed_[2].resized<N>(), p.fixed_[3].resized<N>()};
+    const FixedInt<N>& lc = b[dp];
+    for (int k = dg; k >= dp; --k) {  // lc a - a_k t^(k - dp) b: the t^k term cancels
+      const FixedInt<N> lead = a[k];
+      for (int i = 0; i < k; ++i) a[i] *= lc;
+      for (int i = 0; i < dp; ++i) a[i + k - dp] -= lead * b[i];
+      a[k] = 0;
+    }
+    for (int i = 1; i < dp; ++i)
+      if (a[i].sign() != 0) return false;  // h of degree >= 1
+    const int epsilon = lc.sign() < 0 && n % 2 == 1 ? -1 : 1;
+    *sign = epsilon * a[0].sign();
+    return true;
+  });
+}
+
 // ---- GMP steps ---------------------------------------------------------------------------------
 
 namespace {

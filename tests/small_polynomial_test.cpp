@@ -7,6 +7,7 @@
 // PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
 // PROOF: proofs/exact_ccd.md#sign-at-a-root-by-remainders
 // PROOF: proofs/exact_ccd.md#quadratic-discriminant
+// PROOF: proofs/exact_ccd.md#constant-remainder
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -507,6 +508,74 @@ TEST_F(SmallPolynomialTest, RootIteratorOnQuadraticsMatchesRationalRoots) {
     }
   }
   EXPECT_GT(with_roots_found, n / 4);
+}
+
+/// A rational in (-1/2, 3/2) with a denominator of up to `bits` bits.
+Q random_rational(std::mt19937_64& rng, int bits) {
+  mpz_class den = abs(random_integer(rng, 1 + static_cast<int>(rng() % bits)));
+  if (den == 0) den = 1;
+  const mpz_class num = random_integer(rng, static_cast<int>(mpz_sizeinbase(den.get_mpz_t(), 2)));
+  Q q(num, den);
+  q.canonicalize();
+  return q + Q(1, 2);
+}
+
+// The sign at the roots of p from a constant pseudo-remainder, in fixed size: g = p u + c with
+// c = 0 (g(r) = 0 at every root r) or a constant of either sign, p with rational roots
+// (repeated ones too) and lc(p) of either sign, coefficients of 2 to 1,100 bits; against the
+// rational value of g at each root. A remainder of degree >= 1 (c of degree < deg p) must be
+// declined.
+TEST_F(SmallPolynomialTest, ConstantRemainderSignMatchesRationalValues) {
+  std::mt19937_64 rng(0xc0de);
+  const int root_bits[] = {1, 4, 16, 40, 64, 100, 180};
+  const int n = static_cast<int>(test::scaled_count(20000));
+  int decided = 0, zero = 0;
+  for (int trial = 0; trial < n; ++trial) {
+    const int dp = 1 + static_cast<int>(rng() % 3);
+    const int dg = dp + static_cast<int>(rng() % static_cast<unsigned>(4 - dp));
+    const int bits = root_bits[trial % 7];
+    std::vector<Q> roots;
+    for (int i = 0; i < dp; ++i)
+      roots.push_back(i > 0 && rng() % 4 == 0 ? roots.back() : random_rational(rng, bits));
+    const long scale = (rng() % 2 ? 1 : -1) * static_cast<long>(1 + rng() % 1000);
+    const MpzPolynomial p = to_mpz_polynomial(with_roots(roots, scale));
+    // g = p u + c, deg u = dg - dp.
+    std::array<mpz_class, 4> g{};
+    std::array<mpz_class, 4> u{};
+    for (int i = 0; i <= dg - dp; ++i)
+      u[static_cast<std::size_t>(i)] = random_integer(rng, 1 + static_cast<int>(rng() % (3 * bits)));
+    if (u[static_cast<std::size_t>(dg - dp)] == 0) u[static_cast<std::size_t>(dg - dp)] = 1;
+    for (int i = 0; i <= dp; ++i)
+      for (int j = 0; j <= dg - dp; ++j)
+        g[static_cast<std::size_t>(i + j)] += p.c[static_cast<std::size_t>(i)] * u[static_cast<std::size_t>(j)];
+    const int kind = static_cast<int>(rng() % 3);  // 0: c = 0, 1: constant, 2: degree >= 1
+    if (kind == 1) g[0] += random_integer(rng, 1 + static_cast<int>(rng() % (3 * bits)));
+    if (kind == 2 && dp >= 2) {
+      g[0] += random_integer(rng, 8);
+      g[1] += 1 + abs(random_integer(rng, 8));
+    }
+    const SmallPolynomial gs = SmallPolynomial::from_mpz(g.data(), 4);
+    const SmallPolynomial ps = SmallPolynomial::from_mpz(p.c.data(), 4);
+    int sign = 2;
+    const bool answered = gs.sign_at_roots_of(ps, &sign);
+    if (kind == 2 && dp >= 2) {
+      EXPECT_FALSE(answered) << "a remainder of degree >= 1 was taken for a constant";
+      continue;
+    }
+    // The fixed-size bound: b_g + n (b_p + 1) within 16 limbs, else declined.
+    const bool fits = fixed_limbs_for(gs.bits() + (dg - dp + 1) * (ps.bits() + 1)) != 0;
+    EXPECT_EQ(answered, fits) << "dp " << dp << " dg " << dg << " bits " << gs.bits() << ", "
+                              << ps.bits();
+    if (!answered) continue;
+    ++decided;
+    zero += sign == 0;
+    const RationalPolynomial gr = rational(g, dg);
+    for (const Q& r : roots)
+      ASSERT_EQ(sign, sgn(gr.at(r))) << "dp " << dp << " dg " << dg << " kind " << kind
+                                     << " root " << r << " lc(p) " << p.c[static_cast<std::size_t>(dp)];
+  }
+  EXPECT_GT(decided, n / 2);
+  EXPECT_GT(zero, n / 8);
 }
 
 TEST_F(SmallPolynomialTest, GcdAndSquareFreePart) {
