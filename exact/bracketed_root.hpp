@@ -109,6 +109,9 @@ class RootIterator {
   void isolate_beyond_doubles(const Item& it);
 
   static constexpr int kMaxItems = 192;
+  /// Splits at a double near a critical point of p before plain halving (guidance only).
+  static constexpr int kMaxGuidedSplits = 8;
+  int guided_splits_ = 0;
   const SmallPolynomial* p_;
   SmallPolynomial* storage_;
   bool square_free_ = false;

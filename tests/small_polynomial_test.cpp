@@ -510,6 +510,49 @@ TEST_F(SmallPolynomialTest, RootIteratorOnQuadraticsMatchesRationalRoots) {
   EXPECT_GT(with_roots_found, n / 4);
 }
 
+// Cubics with the same adversarial quadratic factors (a double root, a complex pair a hair off
+// the real axis, two roots a hair apart) times a line with a root in or near [0, 1]: where the
+// iterator splits near a critical point of p instead of halving. Against the rational path's
+// Sturm isolation, as above.
+TEST_F(SmallPolynomialTest, RootIteratorOnCubicsWithCloseRootsMatchesRationalRoots) {
+  std::mt19937_64 rng(0xc0b1);
+  const int widths[] = {6, 20, 40, 62, 100, 200};
+  const int n = static_cast<int>(test::scaled_count(3000));
+  int several = 0;
+  for (int trial = 0; trial < n; ++trial) {
+    const int bits = widths[trial % 6];
+    const double t_max = rng() % 2 ? 1.0 : 0.75;
+    const auto q = adversarial_quadratic(rng, bits, static_cast<int>(rng() % 4));
+    mpz_class k = abs(random_integer(rng, 1 + static_cast<int>(rng() % 30)));
+    if (k == 0) k = 1;
+    const mpz_class m = random_integer(rng, static_cast<int>(mpz_sizeinbase(k.get_mpz_t(), 2)));
+    std::array<mpz_class, 4> c;  // q (k t - m)
+    for (int i = 0; i <= 2; ++i) {
+      c[static_cast<std::size_t>(i + 1)] += q[static_cast<std::size_t>(i)] * k;
+      c[static_cast<std::size_t>(i)] -= q[static_cast<std::size_t>(i)] * m;
+    }
+    const SmallPolynomial p = SmallPolynomial::from_mpz(c.data(), 4);
+    std::vector<AlgebraicTime> expected = real_roots_in(
+        Polynomial({Q(c[0]), Q(c[1]), Q(c[2]), Q(c[3])}), Q(0), Q(t_max));
+    SmallPolynomial square_free;
+    RootIterator it(p, t_max, &square_free);
+    std::vector<BracketedRoot> found;
+    while (auto r = it.next()) found.push_back(*r);
+    ASSERT_EQ(found.size(), expected.size())
+        << bits << " bits: " << c[3] << " t^3 + " << c[2] << " t^2 + " << c[1] << " t + " << c[0];
+    several += found.size() >= 2;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      if (found[i].is_exact()) {
+        EXPECT_EQ(expected[i].compare(Q(found[i].lo())), 0);
+      } else {
+        EXPECT_GT(expected[i].compare(Q(found[i].lo())), 0);
+        EXPECT_LT(expected[i].compare(Q(found[i].hi())), 0);
+      }
+    }
+  }
+  EXPECT_GT(several, n / 10);
+}
+
 /// A rational in (-1/2, 3/2) with a denominator of up to `bits` bits.
 Q random_rational(std::mt19937_64& rng, int bits) {
   mpz_class den = abs(random_integer(rng, 1 + static_cast<int>(rng() % bits)));
