@@ -1,5 +1,6 @@
 #include "exact/algebraic_time.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -71,6 +72,9 @@ void AlgebraicTime::refine_once() {
 int AlgebraicTime::sign_of(const Polynomial& g) {
   if (g.is_zero()) return 0;
   if (rational_) return g.sign_at(lo_);
+  if (f_.has_integer_coefficients()) {
+    if (const int s = integer_sign_of(g); s != kUndecided) return s;
+  }
   // g(t) = rho(t) for rho = g mod f, since f(t) = 0: degree below deg f.
   Polynomial rho;
   divide(g, f_, nullptr, &rho);
@@ -106,6 +110,42 @@ int AlgebraicTime::sign_of(const Polynomial& g) {
     const Rational target = w / 2;
     while (!rational_ && cmp(hi_ - lo_, target) > 0) refine_once();
     if (rational_) return rho.sign_at(lo_);
+  }
+}
+
+int AlgebraicTime::integer_sign_of(const Polynomial& g) {
+  // PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time (b'), all in integers.
+  const Polynomial G = primitive_part(g);  // a positive multiple: the same sign at t
+  if (G.degree() < f_.degree()) return reduced_sign_of(G, 1);
+  int sign = 1;
+  const Polynomial rho = primitive_part(pseudo_remainder(G, f_, &sign));  // sets sign first
+  return reduced_sign_of(rho, sign);
+}
+
+int AlgebraicTime::reduced_sign_of(const Polynomial& rho, int sign) {
+  if (rho.degree() <= 0) return rho.is_zero() ? 0 : sign * sgn(rho.leading());
+  if (rho.degree() == 1) {
+    const Rational q = -rho.coefficients()[0] / rho.coefficients()[1];
+    return sign * sgn(rho.coefficients()[1]) * compare(q);
+  }
+  bool zero_checked = false;
+  for (;;) {
+    if (rational_) return sign * rho.sign_at(lo_);
+    const long kl = dyadic_exponent(lo_), kh = dyadic_exponent(hi_);
+    if (kl < 0 || kh < 0) return kUndecided;  // not dyadic: the rational procedure
+    const auto K = static_cast<unsigned long>(std::max(kl, kh));
+    mpz_class A, B;
+    mpz_mul_2exp(A.get_mpz_t(), lo_.get_num_mpz_t(), K - static_cast<unsigned long>(kl));
+    mpz_mul_2exp(B.get_mpz_t(), hi_.get_num_mpz_t(), K - static_cast<unsigned long>(kh));
+    // No root of rho in [lo, hi]: rho keeps its sign at lo over it, t included.
+    if (descartes_root_free_dyadic(rho, A, B, K)) return sign * rho.sign_at(lo_);
+    if (!zero_checked) {  // as in the rational procedure: rho(t) = 0 iff gcd(f, rho)(t) = 0
+      const Polynomial h = gcd(f_, rho);
+      if (h.degree() >= 1 && h.sign_at(lo_) != h.sign_at(hi_)) return 0;
+      zero_checked = true;
+    }
+    const Rational target = (hi_ - lo_) / 2;
+    while (!rational_ && cmp(hi_ - lo_, target) > 0) refine_once();
   }
 }
 

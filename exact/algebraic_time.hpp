@@ -55,6 +55,12 @@ class AlgebraicTime {
     return r;
   }
   void set_rational(Rational value);
+  /// sign_of for f with integer coefficients, in integers (pseudo-remainder, Descartes'
+  /// rule on the dyadic isolating interval); kUndecided where the interval is not dyadic.
+  static constexpr int kUndecided = 2;
+  int integer_sign_of(const Polynomial& g);
+  /// The sign at this time of g = sign * rho, rho of degree below deg f.
+  int reduced_sign_of(const Polynomial& rho, int sign);
 
   Polynomial f_;
   Rational lo_, hi_;

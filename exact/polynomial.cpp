@@ -127,6 +127,66 @@ Polynomial primitive_part(const Polynomial& p) {
   return Polynomial(std::move(c));
 }
 
+Polynomial pseudo_remainder(const Polynomial& a, const Polynomial& b, int* sign) {
+  if (!a.has_integer_coefficients() || !b.has_integer_coefficients() || b.is_zero() ||
+      a.degree() < b.degree())
+    throw std::domain_error("exactccd: pseudo-remainder needs integer a, b, deg a >= deg b");
+  std::vector<mpz_class> r;
+  for (const Rational& x : a.coefficients()) r.push_back(x.get_num());
+  const int db = b.degree(), e = a.degree() - db + 1;
+  const mpz_class& lead = b.leading().get_num();
+  for (int k = a.degree(); k >= db; --k) {  // e steps: r <- lc(b) r - r_k t^(k - db) b
+    const mpz_class top = r[k];
+    for (mpz_class& x : r) x *= lead;
+    if (sgn(top) != 0)
+      for (int j = 0; j <= db; ++j) r[k - db + j] -= top * b.coefficients()[j].get_num();
+  }
+  r.resize(static_cast<std::size_t>(db));
+  *sign = (sgn(lead) < 0 && e % 2 == 1) ? -1 : 1;
+  return Polynomial(std::vector<Rational>(r.begin(), r.end()));
+}
+
+long dyadic_exponent(const Rational& q) {
+  const mpz_class& den = q.get_den();
+  const auto k = static_cast<long>(mpz_scan1(den.get_mpz_t(), 0));
+  return static_cast<long>(mpz_sizeinbase(den.get_mpz_t(), 2)) == k + 1 ? k : -1;
+}
+
+bool descartes_root_free_dyadic(const Polynomial& p, const mpz_class& A, const mpz_class& B,
+                                unsigned long K) {
+  const auto& c = p.coefficients();
+  const std::size_t n = c.size();
+  if (n == 0 || !p.has_integer_coefficients()) return false;
+  const int d = static_cast<int>(n) - 1;
+  // R(y) = 2^(K d) p((A + W y) 2^-K), W = B - A: scale, Taylor shift by A, scale by W^i.
+  std::vector<mpz_class> r(n);
+  for (std::size_t i = 0; i < n; ++i)
+    mpz_mul_2exp(r[i].get_mpz_t(), c[i].get_num_mpz_t(), K * (n - 1 - i));
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    for (std::size_t i = n - 1; i > k; --i) r[i - 1] += A * r[i];
+  const mpz_class W = B - A;
+  mpz_class w = 1;
+  for (std::size_t i = 1; i < n; ++i) {
+    w *= W;
+    r[i] *= w;
+  }
+  // S(x) = sum_i R_i x^i (1 + x)^(d - i): its positive roots are R's roots in (0, 1).
+  std::vector<mpz_class> s(n);
+  for (int i = 0; i <= d; ++i) {
+    if (sgn(r[i]) == 0) continue;
+    mpz_class binomial = 1;  // C(d - i, k)
+    for (int k = 0; k <= d - i; ++k) {
+      s[i + k] += r[i] * binomial;
+      binomial = binomial * (d - i - k) / (k + 1);
+    }
+  }
+  if (sgn(s.front()) == 0 || sgn(s.back()) == 0) return false;  // p(a) = 0 or p(b) = 0
+  const int first = sgn(s.front());
+  for (const mpz_class& x : s)
+    if (sgn(x) == -first) return false;
+  return true;
+}
+
 Polynomial square_free_part(const Polynomial& p) {
   if (p.is_zero()) throw std::domain_error("exactccd: square-free part of the zero polynomial");
   const Polynomial g = gcd(p, p.derivative());

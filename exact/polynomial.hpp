@@ -21,6 +21,8 @@ class Polynomial {
   /// -1 for the zero polynomial.
   int degree() const { return static_cast<int>(c_.size()) - 1; }
   bool is_zero() const { return c_.empty(); }
+  /// Every coefficient an integer.
+  bool has_integer_coefficients() const { return integer_; }
   const std::vector<Rational>& coefficients() const { return c_; }
   const Rational& leading() const { return c_.back(); }
 
@@ -54,5 +56,20 @@ Polynomial square_free_part(const Polynomial& p);
 /// The positive multiple of p with coprime integer coefficients (zero stays zero): the same
 /// roots and the same signs everywhere, integer evaluations.
 Polynomial primitive_part(const Polynomial& p);
+
+/// For a and b with integer coefficients, deg a >= deg b >= 0: the pseudo-remainder
+/// r = lc(b)^e a - Q b, e = deg a - deg b + 1, deg r < deg b, in integers; *sign = sign(lc(b)^e),
+/// so that where b vanishes, a has the sign of *sign times r.
+Polynomial pseudo_remainder(const Polynomial& a, const Polynomial& b, int* sign);
+
+/// Whether p (integer coefficients, non-zero) certainly has no root in [a, b], a < b dyadic
+/// (A 2^-K, B 2^-K): p(a), p(b) non-zero and no sign variation in the coefficients of
+/// (1 + x)^d p(a + (b - a) x / (1 + x)) (Descartes' rule of signs), all in integers. False
+/// decides nothing. PROOF: proofs/min_separation.md#root-free-polynomials
+bool descartes_root_free_dyadic(const Polynomial& p, const mpz_class& A, const mpz_class& B,
+                                unsigned long K);
+
+/// k with q = Q 2^-k for an integer Q, or -1 when q's denominator is not a power of two.
+long dyadic_exponent(const Rational& q);
 
 }  // namespace exactccd::exact

@@ -62,3 +62,92 @@ TEST(AlgebraicTimeEnclosure, WidthBoundHoldsExactly) {
 }
 
 }  // namespace
+
+namespace sign_in_quadratic_field {
+
+/// P + Q sqrt(m) with rational P, Q and m > 0: its exact sign.
+int sign_plus_sqrt(const Rational& P, const Rational& Q, const Rational& m) {
+  const int sp = sgn(P), sq = sgn(Q);
+  if (sq == 0) return sp;
+  if (sp == 0 || sp == sq) return sq;
+  return sgn(P * P - Q * Q * m) * sp;  // opposite signs: the larger square wins
+}
+
+/// g(sqrt(m) / k) as P + Q sqrt(m), exactly, independently of the exact path.
+int sign_at_root(const Polynomial& g, const Rational& m, long k) {
+  Rational P = 0, Q = 0, even = 1;  // even = (m / k^2)^j
+  const Rational m_over_k2 = m / (k * k);
+  const auto& c = g.coefficients();
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (i % 2 == 0) {
+      P += c[i] * even;
+    } else {
+      Q += c[i] * even / k;
+      even *= m_over_k2;
+    }
+  }
+  return sign_plus_sqrt(P, Q, m);
+}
+
+}  // namespace sign_in_quadratic_field
+
+// PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time
+// AlgebraicTime::sign_of (integer pseudo-remainders and Descartes' rule on dyadic intervals)
+// at irrational roots sqrt(m) / k of f = (k^2 t^2 - m) h, against arithmetic in Q(sqrt(m)):
+// random g of degree 0-7, g sharing the root (zero), g with a rational root 2^-60 or 2^-200
+// away (tiny values), rational and integer coefficients.
+TEST(AlgebraicTimeSign, SignOfEqualsArithmeticInTheQuadraticField) {
+  gmp_randclass rng(gmp_randinit_default);
+  rng.seed(424242);
+  int zeros = 0, checks = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const long k = 2 + trial % 7;
+    long m = 1 + static_cast<long>(mpz_class(rng.get_z_range(k * k - 1)).get_si());
+    const long root = static_cast<long>(std::sqrt(static_cast<double>(m)));
+    if (root * root == m) ++m;  // not a square (m + 1 below k^2 is not one either: m < k^2)
+    if (m >= k * k) continue;
+    const Polynomial quadratic = poly({Rational(-m), 0, Rational(k * k)});
+    // h: a rational root and a quadratic without real roots, so the roots in [0, 1] are known.
+    const Rational other(1 + trial % 5, 7);
+    const Polynomial f = quadratic * poly({-other, 1}) * poly({1, 0, 1});
+    auto roots = exactccd::exact::real_roots_in(f, 0, 1);
+    ASSERT_EQ(roots.size(), 2u);
+    // The one at sqrt(m) / k: lo^2 < m / k^2 < hi^2 (the other is `other`).
+    const Rational r2(m, k * k);
+    auto holds_root = [&](const AlgebraicTime& x) {
+      return !x.is_rational() && cmp(x.lo() * x.lo(), r2) < 0 && cmp(r2, x.hi() * x.hi()) < 0;
+    };
+    ASSERT_NE(holds_root(roots[0]), holds_root(roots[1]));
+    AlgebraicTime& t = holds_root(roots[0]) ? roots[0] : roots[1];
+    for (int j = 0; j < 6; ++j) {
+      std::vector<Rational> c;
+      const int degree = static_cast<int>(mpz_class(rng.get_z_range(8)).get_si());
+      for (int i = 0; i <= degree; ++i) {
+        c.emplace_back(rng.get_z_bits(80) - rng.get_z_bits(80),
+                       j % 2 ? mpz_class(1) : mpz_class(rng.get_z_bits(30) + 1));
+        c.back().canonicalize();
+      }
+      Polynomial g(c);
+      if (j == 2) g = g * quadratic;  // vanishes at the root
+      if (j == 3 || j == 4) {  // a rational root s within 2^-60 (2^-200) of sqrt(m) / k
+        const int bits = j == 3 ? 60 : 200;
+        mpz_class s_num;
+        mpz_class m_scaled = mpz_class(m) << (2 * bits);
+        mpz_sqrt(s_num.get_mpz_t(), m_scaled.get_mpz_t());
+        Rational s(s_num, mpz_class(k) << bits);
+        s.canonicalize();
+        g = g * poly({-s, 1});
+      }
+      const int expected = g.is_zero() ? 0 : sign_in_quadratic_field::sign_at_root(g, m, k);
+      EXPECT_EQ(t.sign_of(g), expected) << "trial " << trial << " j " << j;
+      // The same time defined by -f (a negative leading coefficient: pseudo-remainders by it
+      // carry the sign of lc^e).
+      AlgebraicTime negated(-t.defining_polynomial(), t.lo(), t.hi());
+      EXPECT_EQ(negated.sign_of(g), expected) << "trial " << trial << " j " << j << " (-f)";
+      zeros += expected == 0;
+      ++checks;
+    }
+  }
+  EXPECT_GT(checks, 1500);
+  EXPECT_GT(zeros, checks / 8);
+}
