@@ -12,10 +12,11 @@ SturmSequence::SturmSequence(const Polynomial& p) {
   if (p.degree() == 0) return;
   seq_.push_back(primitive_part(p.derivative()));
   for (;;) {
-    Polynomial r;
-    divide(seq_[seq_.size() - 2], seq_.back(), nullptr, &r);
+    // -rem(A, B) as a positive multiple: lc(B)^e rem(A, B) is the integer pseudo-remainder.
+    int sign = 1;
+    const Polynomial r = pseudo_remainder(seq_[seq_.size() - 2], seq_.back(), &sign);
     if (r.is_zero()) break;  // p square-free: the last element is a non-zero constant
-    seq_.push_back(primitive_part(-r));
+    seq_.push_back(primitive_part(sign > 0 ? -r : r));
   }
 }
 
