@@ -1,4 +1,5 @@
 // PROOF: proofs/min_separation.md#interval-search
+// PROOF: proofs/min_separation.md#fixed-width-signs
 #include "filters/separation_exact_signs.hpp"
 
 #include <algorithm>
@@ -6,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <utility>
 
 #include "core/predicates/separation.hpp"
 
@@ -25,17 +27,6 @@ void split(double d, std::int64_t* mantissa, int* exponent) {
   *exponent = e - 53;
 }
 
-/// d 2^-e_min as an integer (d's exponent >= e_min).
-mpz_class scaled_integer(double d, int e_min) {
-  if (d == 0) return 0;
-  std::int64_t m = 0;
-  int e = 0;
-  split(d, &m, &e);
-  mpz_class r(static_cast<long>(m));
-  r <<= static_cast<mp_bitcnt_t>(e - e_min);
-  return r;
-}
-
 Point point(const std::array<mpz_class, 3>& x) {
   return {FixedPoly<mpz_class, 0>{{x[0]}}, FixedPoly<mpz_class, 0>{{x[1]}},
           FixedPoly<mpz_class, 0>{{x[2]}}};
@@ -50,32 +41,30 @@ long ulp_exponent(double t) {
   return e;
 }
 
+thread_local std::uint64_t g_gmp_evaluations = 0;
+
 }  // namespace
+
+std::uint64_t gmp_evaluations_in_this_thread() noexcept { return g_gmp_evaluations; }
 
 ExactSignsAtDoubles::ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*, 4>& t0,
                                          const std::array<const Eigen::Vector3d*, 4>& t1,
-                                         double delta) {
-  int e_min = INT_MAX;
-  auto lower = [&e_min](double d) {
-    if (d == 0) return;
-    std::int64_t m = 0;
-    int e = 0;
-    split(d, &m, &e);
-    e_min = std::min(e_min, e);
-  };
-  for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c) {
-      lower((*t0[i])[c]);
-      lower((*t1[i])[c]);
-    }
-  lower(delta);
-  if (e_min == INT_MAX) e_min = 0;  // all zero
-  for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c) {
-      x0_[i][c] = scaled_integer((*t0[i])[c], e_min);
-      dx_[i][c] = scaled_integer((*t1[i])[c], e_min) - x0_[i][c];
-    }
-  delta_ = scaled_integer(delta, e_min);
+                                         double delta)
+    : q_(exact::separation_integers(t0, t1, delta)) {}
+
+auto ExactSignsAtDoubles::gmp() const -> const Gmp& {
+  if (!gmp_) {
+    Gmp g;
+    const int e = q_.common_exponent;
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 3; ++c) {
+        g.x0[i][c] = exact::separation_integer<mpz_class>(q_.coords[0][i][c], e, 0);
+        g.dx[i][c] = exact::separation_integer<mpz_class>(q_.coords[1][i][c], e, 0) - g.x0[i][c];
+      }
+    g.delta = exact::separation_integer<mpz_class>(q_.delta, e, 0);
+    gmp_.emplace(std::move(g));
+  }
+  return *gmp_;
 }
 
 void ExactSignsAtDoubles::at(double t, long shift, std::array<Position, 4>* positions,
@@ -87,14 +76,16 @@ void ExactSignsAtDoubles::at(double t, long shift, std::array<Position, 4>* posi
   const mpz_class mz(static_cast<long>(m));
   const mp_bitcnt_t up = static_cast<mp_bitcnt_t>(shift);
   const mp_bitcnt_t up_m = t == 0 ? 0 : static_cast<mp_bitcnt_t>(shift + e);
+  const Gmp& g = gmp();
   for (int i = 0; i < 4; ++i)
     for (int c = 0; c < 3; ++c)
-      (*positions)[i][c] = (x0_[i][c] << up) + ((mz * dx_[i][c]) << up_m);
-  *delta = delta_ << up;
+      (*positions)[i][c] = (g.x0[i][c] << up) + ((mz * g.dx[i][c]) << up_m);
+  *delta = g.delta << up;
 }
 
 template <class Make>
 mpz_class ExactSignsAtDoubles::value(const Make& make, int k, double t, long shift) const {
+  ++g_gmp_evaluations;
   std::array<Position, 4> x;
   mpz_class d;
   at(t, shift, &x, &d);
@@ -138,19 +129,79 @@ struct MakeEdgeEdge {
 
 }  // namespace
 
+namespace {
+
+/// f(Ints) for the staged integer types that the differences' bit bound selects:
+/// FixedInt widths up to kMaxFaceLikeDifferenceLimbs, GMP beyond (counted).
+template <class F>
+auto with_face_like_integers(long difference_bits, F&& f) {
+  switch (exact::fixed_limbs_for(difference_bits)) {
+    case 1: return f(exact::FixedFaceLikeIntegers<1>{});
+    case 2: return f(exact::FixedFaceLikeIntegers<2>{});
+    case 3: return f(exact::FixedFaceLikeIntegers<3>{});
+    default: ++g_gmp_evaluations; return f(exact::GmpFaceLikeIntegers{});
+  }
+  static_assert(exact::kMaxFaceLikeDifferenceLimbs == 3, "extend the cases above");
+}
+
+}  // namespace
+
+int ExactSignsAtDoubles::face_like_sign(const exact::FaceLikeVertices& v, double t) const {
+  exact::DyadicTime d;
+  exact::dyadic_time(t, &d);  // the callers pass t in [0, 1]
+  return with_face_like_integers(
+      exact::face_like_difference_bits(q_.bits, d.exponent), [&](auto ints) {
+        using Ints = decltype(ints);
+        return exact::sign_of(exact::face_like_value<Ints>(q_, v, d.numerator, d.exponent));
+      });
+}
+
+double ExactSignsAtDoubles::face_like_secant(const exact::FaceLikeVertices& v, double lo,
+                                             double hi) const {
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  exact::DyadicTime a, b;
+  if (!exact::dyadic_time(lo, &a) || !exact::dyadic_time(hi, &b)) return kNone;
+  // One scale for both ends (the finer one's), so that the values are comparable; a time whose
+  // numerator would not fit 64 bits at that scale gives no guess.
+  const unsigned k = std::max(a.exponent, b.exponent);
+  auto numerator = [k](const exact::DyadicTime& d, std::uint64_t* out) {
+    const unsigned up = k - d.exponent;
+    if (d.numerator != 0 && (up >= 64 || (d.numerator >> (63 - up)) != 0)) return false;
+    *out = d.numerator << up;
+    return true;
+  };
+  std::uint64_t ta = 0, tb = 0;
+  if (!numerator(a, &ta) || !numerator(b, &tb)) return kNone;
+  const auto [va, vb] = with_face_like_integers(
+      exact::face_like_difference_bits(q_.bits, k), [&](auto ints) {
+        using Ints = decltype(ints);
+        return std::pair{exact::approximate(exact::face_like_value<Ints>(q_, v, ta, k)),
+                         exact::approximate(exact::face_like_value<Ints>(q_, v, tb, k))};
+      });
+  const long e = std::max(va.exponent, vb.exponent);
+  const double x = std::ldexp(va.mantissa, static_cast<int>(std::max(va.exponent - e, -2000L)));
+  const double y = std::ldexp(vb.mantissa, static_cast<int>(std::max(vb.exponent - e, -2000L)));
+  if (x == y) return kNone;
+  return lo + (hi - lo) * (x / (x - y));
+}
+
 int ExactSignsAtDoubles::vertex_face_sign(int k, double t) const {
+  if (k == 0 && t >= 0 && t <= 1) return face_like_sign(exact::kVertexFaceRegion, t);
   return sgn(value(MakeVertexFace{}, k, t, -ulp_exponent(t)));
 }
 
 int ExactSignsAtDoubles::edge_edge_sign(int k, double t) const {
+  if (k == 0 && t >= 0 && t <= 1) return face_like_sign(exact::kEdgeEdgeRegion, t);
   return sgn(value(MakeEdgeEdge{}, k, t, -ulp_exponent(t)));
 }
 
 double ExactSignsAtDoubles::vertex_face_secant(int k, double lo, double hi) const {
+  if (k == 0) return face_like_secant(exact::kVertexFaceRegion, lo, hi);
   return secant(MakeVertexFace{}, k, lo, hi);
 }
 
 double ExactSignsAtDoubles::edge_edge_secant(int k, double lo, double hi) const {
+  if (k == 0) return face_like_secant(exact::kEdgeEdgeRegion, lo, hi);
   return secant(MakeEdgeEdge{}, k, lo, hi);
 }
 

@@ -2,20 +2,31 @@
 // arithmetic: the query and delta scaled by one power of two to integers, the positions at
 // t = m 2^e computed exactly as integers (scaled by 2^-e), and the one polynomial asked for
 // evaluated on them. Every region polynomial is homogeneous in the coordinates and delta, so
-// the common positive scale changes no sign. Allocates (GMP): used only where interval signs
-// cannot decide. PROOF: proofs/min_separation.md#interval-search
+// the common positive scale changes no sign. Polynomial 0 (the face or interior region, the one
+// the search tightens most) runs in fixed-width integers chosen from proven bounds
+// (exact/separation_integers.hpp: no allocation); the others, and polynomial 0 beyond the
+// widest fixed width, in GMP (allocates). PROOF: proofs/min_separation.md#interval-search
+// PROOF: proofs/min_separation.md#fixed-width-signs
 #pragma once
 
 #include <gmpxx.h>
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
+#include <optional>
+
+#include "exact/separation_integers.hpp"
 
 namespace exactccd::filters::separation {
 
+/// How many evaluations of the calling thread's ExactSignsAtDoubles ran in GMP: tells tests
+/// which queries stayed within the fixed widths.
+std::uint64_t gmp_evaluations_in_this_thread() noexcept;
+
 class ExactSignsAtDoubles {
  public:
-  /// The four moving vertices (x_t0, x_t1 each) and delta, all finite doubles.
+  /// The four moving vertices (x_t0, x_t1 each) and delta, all finite doubles. No allocation.
   ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*, 4>& t0,
                       const std::array<const Eigen::Vector3d*, 4>& t1, double delta);
 
@@ -32,15 +43,23 @@ class ExactSignsAtDoubles {
 
  private:
   using Position = std::array<mpz_class, 3>;
+  /// The query in GMP integers, for the polynomials other than 0 (formed when first needed).
+  struct Gmp {
+    std::array<Position, 4> x0, dx;  // integers: coordinates times 2^-E
+    mpz_class delta;
+  };
+  const Gmp& gmp() const;
   /// The positions at t and delta, all times 2^shift, exactly; shift >= -(t's ulp exponent).
   void at(double t, long shift, std::array<Position, 4>* positions, mpz_class* delta) const;
   template <class Make>
   mpz_class value(const Make& make, int k, double t, long shift) const;
   template <class Make>
   double secant(const Make& make, int k, double lo, double hi) const;
+  int face_like_sign(const exact::FaceLikeVertices& v, double t) const;
+  double face_like_secant(const exact::FaceLikeVertices& v, double lo, double hi) const;
 
-  std::array<Position, 4> x0_, dx_;  // integers: coordinates times 2^-e_min
-  mpz_class delta_;
+  exact::SeparationIntegers q_;
+  mutable std::optional<Gmp> gmp_;
 };
 
 }  // namespace exactccd::filters::separation

@@ -1,0 +1,143 @@
+// The exact value at a double time of the region polynomial that the minimum-separation search
+// tightens most: polynomial 0 of both separations (core/predicates/separation.hpp), the face
+// or interior region's (W.m)^2 - delta^2 |m|^2 with m = U x V and U, V, W differences of the
+// moving vertices (vertex-face b - a, c - a, p - a; edge-edge a1 - a0, b1 - b0, a0 - b0).
+// Written once over staged integer types, as exact/integer_cubic.hpp: FixedInt widths chosen
+// from the proven bit-length bounds before computing (no allocation), or mpz_class throughout
+// (beyond the widest of them, and as the tests' reference). Every double is an integer times
+// the common power of two 2^E; at t = T 2^-k the differences are formed as 2^(k-E) times
+// their values, which multiplies the homogeneous degree-6 polynomial by 2^(6(k-E)) > 0.
+// PROOF: proofs/min_separation.md#fixed-width-signs
+#pragma once
+
+#include <gmpxx.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cstdint>
+
+#include "exact/fixed_int.hpp"
+#include "exact/integer_arithmetic.hpp"
+#include "exact/integer_bounds.hpp"
+#include "exact/integer_cubic.hpp"
+
+namespace exactccd::exact {
+
+/// The four moving vertices (at t = 0 and t = 1) and delta as integers: each double is
+/// X 2^E with X = mantissa 2^(exponent - E), |X| < 2^bits.
+struct SeparationIntegers {
+  Dyadic coords[2][4][3];  // [end][vertex][axis]
+  Dyadic delta;
+  int common_exponent = 0;  // E: the smallest exponent of a non-zero input
+  int bits = 0;             // L (0 when all inputs are zero)
+};
+
+inline SeparationIntegers separation_integers(const std::array<const Eigen::Vector3d*, 4>& t0,
+                                              const std::array<const Eigen::Vector3d*, 4>& t1,
+                                              double delta) {
+  SeparationIntegers q;
+  int lowest = INT_MAX, highest = INT_MIN;
+  auto take = [&lowest, &highest](double x, Dyadic* out) {
+    *out = dyadic(x);
+    if (out->mantissa == 0) return;
+    lowest = std::min(lowest, out->exponent);
+    highest = std::max(highest, out->exponent + mantissa_bits(out->mantissa));
+  };
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < 3; ++c) {
+      take(t0[i]->coeff(c), &q.coords[0][i][c]);
+      take(t1[i]->coeff(c), &q.coords[1][i][c]);
+    }
+  take(delta, &q.delta);
+  if (lowest != INT_MAX) {
+    q.common_exponent = lowest;
+    q.bits = highest - lowest;
+  }
+  return q;
+}
+
+/// The vertices (origin, end) of U, V and W, in the separation's vertex order.
+struct FaceLikeVertices {
+  int origin[3], end[3];
+};
+/// Vertex-face (p, a, b, c): U = b - a, V = c - a, W = p - a.
+inline constexpr FaceLikeVertices kVertexFaceRegion{{1, 1, 1}, {2, 3, 0}};
+/// Edge-edge (a0, a1, b0, b1): U = a1 - a0, V = b1 - b0, W = a0 - b0.
+inline constexpr FaceLikeVertices kEdgeEdgeRegion{{0, 2, 2}, {1, 3, 0}};
+
+/// The integer types of the stages: differences (and 2^k delta), cross products (and their
+/// squared delta), the dot product W.m, |m|^2, the value. FixedInt widths grow from stage to
+/// stage; GMP uses one type for all.
+template <class DifferenceInt, class CrossInt, class DotInt, class NormInt, class ValueInt>
+struct FaceLikeIntegers {
+  using Difference = DifferenceInt;
+  using Cross = CrossInt;
+  using Dot = DotInt;
+  using Norm = NormInt;
+  using Value = ValueInt;
+};
+
+/// The widths for differences of Wd limbs: the stages of proofs/min_separation.md#fixed-width-signs.
+template <int Wd>
+using FixedFaceLikeIntegers = FaceLikeIntegers<FixedInt<Wd>, FixedInt<2 * Wd>, FixedInt<3 * Wd>,
+                                               FixedInt<4 * Wd>, FixedInt<6 * Wd>>;
+using GmpFaceLikeIntegers = FaceLikeIntegers<mpz_class, mpz_class, mpz_class, mpz_class, mpz_class>;
+
+/// The widest differences computed in FixedInt (values in FixedInt<18>); GMP beyond.
+inline constexpr int kMaxFaceLikeDifferenceLimbs = 3;
+
+/// Bits bounding every intermediate of the differences at t = T 2^-k: B + 2 with B = L + k.
+inline long face_like_difference_bits(int coordinate_bits, unsigned k) {
+  return static_cast<long>(coordinate_bits) + static_cast<long>(k) + 2;
+}
+
+/// The integer of an input: X = mantissa 2^(exponent - E), times 2^shift.
+template <class Int>
+Int separation_integer(const Dyadic& d, int common_exponent, unsigned shift) {
+  if (d.mantissa == 0) return Int(0);
+  return scaled_integer<Int>(d.mantissa,
+                             static_cast<unsigned>(d.exponent - common_exponent) + shift);
+}
+
+/// 2^(6(k - E)) g(t) at t = T 2^-k (T <= 2^k, i.e. t <= 1), g = (W.m)^2 - delta^2 |m|^2.
+template <class Ints>
+typename Ints::Value face_like_value(const SeparationIntegers& q, const FaceLikeVertices& v,
+                                     std::uint64_t T, unsigned k) {
+  using D = typename Ints::Difference;
+  using X = typename Ints::Cross;
+  const int E = q.common_exponent;
+  D d[3][3];  // U, V, W at t, times 2^(k - E)
+  for (int j = 0; j < 3; ++j)
+    for (int c = 0; c < 3; ++c) {
+      // 2^k (x_end(t) - x_origin(t)) = 2^k d0 + T (d1 - d0), d0, d1 the differences at 0, 1.
+      D d0 = separation_integer<D>(q.coords[0][v.end[j]][c], E, 0);
+      d0 -= separation_integer<D>(q.coords[0][v.origin[j]][c], E, 0);
+      D step = separation_integer<D>(q.coords[1][v.end[j]][c], E, 0);
+      step -= separation_integer<D>(q.coords[1][v.origin[j]][c], E, 0);
+      step -= d0;
+      multiply_by(step, T);
+      add_shifted(step, d0, k);
+      d[j][c] = step;
+    }
+  X m[3] = {X(0), X(0), X(0)};
+  for (int c = 0; c < 3; ++c) {
+    const int i = (c + 1) % 3, j = (c + 2) % 3;
+    add_product(m[c], d[0][i], d[1][j]);
+    sub_product(m[c], d[0][j], d[1][i]);
+  }
+  typename Ints::Dot wm(0);
+  for (int c = 0; c < 3; ++c) add_product(wm, m[c], d[2][c]);
+  typename Ints::Norm m2(0);
+  for (int c = 0; c < 3; ++c) add_product(m2, m[c], m[c]);
+  const D delta = separation_integer<D>(q.delta, E, k);
+  X delta2(0);
+  add_product(delta2, delta, delta);
+  typename Ints::Value g(0);
+  add_product(g, wm, wm);
+  sub_product(g, delta2, m2);
+  return g;
+}
+
+}  // namespace exactccd::exact
