@@ -101,25 +101,61 @@ Int separation_integer(const Dyadic& d, int common_exponent, unsigned shift) {
                              static_cast<unsigned>(d.exponent - common_exponent) + shift);
 }
 
-/// 2^(6(k - E)) g(t) at t = T 2^-k (T <= 2^k, i.e. t <= 1), g = (W.m)^2 - delta^2 |m|^2.
-template <class Ints>
-typename Ints::Value face_like_value(const SeparationIntegers& q, const FaceLikeVertices& v,
-                                     std::uint64_t T, unsigned k) {
-  using D = typename Ints::Difference;
-  using X = typename Ints::Cross;
+/// U, V, W of t-independent integers: each component's difference d0 at t = 0 and its
+/// change d1 - d0 over the step (|d0| < 2^(L+1), |d1 - d0| < 2^(L+2)), and X_delta.
+template <class Int>
+struct FaceLikeDifferences {
+  Int d0[3][3], step[3][3];  // [U, V, W][axis]
+  Int delta;
+};
+
+template <class Int>
+FaceLikeDifferences<Int> face_like_differences(const SeparationIntegers& q,
+                                               const FaceLikeVertices& v) {
   const int E = q.common_exponent;
-  D d[3][3];  // U, V, W at t, times 2^(k - E)
+  FaceLikeDifferences<Int> r;
   for (int j = 0; j < 3; ++j)
     for (int c = 0; c < 3; ++c) {
-      // 2^k (x_end(t) - x_origin(t)) = 2^k d0 + T (d1 - d0), d0, d1 the differences at 0, 1.
-      D d0 = separation_integer<D>(q.coords[0][v.end[j]][c], E, 0);
-      d0 -= separation_integer<D>(q.coords[0][v.origin[j]][c], E, 0);
-      D step = separation_integer<D>(q.coords[1][v.end[j]][c], E, 0);
-      step -= separation_integer<D>(q.coords[1][v.origin[j]][c], E, 0);
+      Int d0 = separation_integer<Int>(q.coords[0][v.end[j]][c], E, 0);
+      d0 -= separation_integer<Int>(q.coords[0][v.origin[j]][c], E, 0);
+      Int step = separation_integer<Int>(q.coords[1][v.end[j]][c], E, 0);
+      step -= separation_integer<Int>(q.coords[1][v.origin[j]][c], E, 0);
       step -= d0;
-      multiply_by(step, T);
-      add_shifted(step, d0, k);
-      d[j][c] = step;
+      r.d0[j][c] = d0;
+      r.step[j][c] = step;
+    }
+  r.delta = separation_integer<Int>(q.delta, E, 0);
+  return r;
+}
+
+/// The widest differences' integers: FixedInt<3> holds them when L + 2 <= 191, which every
+/// fixed width (B + 2 <= 191, B >= L) implies.
+using StoredFaceLikeDifferences = FaceLikeDifferences<FixedInt<kMaxFaceLikeDifferenceLimbs>>;
+
+/// x in the type To: a FixedInt narrowed to fewer limbs (exact when its value fits), or as is.
+template <class To, int N>
+To narrowed(const FixedInt<N>& x) {
+  return x.template resized<To::kLimbs>();
+}
+template <class To>
+To narrowed(const mpz_class& x) {
+  return x;
+}
+
+/// 2^(6(k - E)) g(t) at t = T 2^-k (T <= 2^k, i.e. t <= 1), g = (W.m)^2 - delta^2 |m|^2, from
+/// the differences (in a type that holds their values).
+template <class Ints, class Int>
+typename Ints::Value face_like_value(const FaceLikeDifferences<Int>& in, std::uint64_t T,
+                                     unsigned k) {
+  using D = typename Ints::Difference;
+  using X = typename Ints::Cross;
+  D d[3][3];  // U, V, W at t, times 2^(k - E): 2^k d0 + T (d1 - d0)
+  for (int j = 0; j < 3; ++j)
+    for (int c = 0; c < 3; ++c) {
+      D v = narrowed<D>(in.step[j][c]);
+      multiply_by(v, T);
+      add_shifted(v, narrowed<D>(in.d0[j][c]), k);
+      d[j][c] = v;
     }
   X m[3] = {X(0), X(0), X(0)};
   for (int c = 0; c < 3; ++c) {
@@ -131,13 +167,21 @@ typename Ints::Value face_like_value(const SeparationIntegers& q, const FaceLike
   for (int c = 0; c < 3; ++c) add_product(wm, m[c], d[2][c]);
   typename Ints::Norm m2(0);
   for (int c = 0; c < 3; ++c) add_product(m2, m[c], m[c]);
-  const D delta = separation_integer<D>(q.delta, E, k);
+  D delta(0);
+  add_shifted(delta, narrowed<D>(in.delta), k);  // X_delta 2^k
   X delta2(0);
   add_product(delta2, delta, delta);
   typename Ints::Value g(0);
   add_product(g, wm, wm);
   sub_product(g, delta2, m2);
   return g;
+}
+
+/// The same from the query's integers.
+template <class Ints>
+typename Ints::Value face_like_value(const SeparationIntegers& q, const FaceLikeVertices& v,
+                                     std::uint64_t T, unsigned k) {
+  return face_like_value<Ints>(face_like_differences<typename Ints::Difference>(q, v), T, k);
 }
 
 }  // namespace exactccd::exact

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "core/predicates/separation.hpp"
@@ -146,13 +147,35 @@ auto with_face_like_integers(long difference_bits, F&& f) {
 
 }  // namespace
 
+const exact::StoredFaceLikeDifferences* ExactSignsAtDoubles::fixed_differences(
+    const exact::FaceLikeVertices& v) const {
+  if (q_.bits + 2 > 64 * exact::kMaxFaceLikeDifferenceLimbs - 1) return nullptr;
+  if (fixed_differences_of_ != &v) {
+    fixed_differences_.emplace(
+        exact::face_like_differences<exact::FixedInt<exact::kMaxFaceLikeDifferenceLimbs>>(q_, v));
+    fixed_differences_of_ = &v;
+  }
+  return &*fixed_differences_;
+}
+
+template <class Ints>
+typename Ints::Value ExactSignsAtDoubles::face_like_value(const exact::FaceLikeVertices& v,
+                                                          std::uint64_t T, unsigned k) const {
+  if constexpr (std::is_same_v<typename Ints::Difference, mpz_class>) {
+    return exact::face_like_value<Ints>(q_, v, T, k);
+  } else {
+    // A fixed width was selected: B + 2 <= 191, so the stored differences exist.
+    return exact::face_like_value<Ints>(*fixed_differences(v), T, k);
+  }
+}
+
 int ExactSignsAtDoubles::face_like_sign(const exact::FaceLikeVertices& v, double t) const {
   exact::DyadicTime d;
   exact::dyadic_time(t, &d);  // the callers pass t in [0, 1]
   return with_face_like_integers(
       exact::face_like_difference_bits(q_.bits, d.exponent), [&](auto ints) {
         using Ints = decltype(ints);
-        return exact::sign_of(exact::face_like_value<Ints>(q_, v, d.numerator, d.exponent));
+        return exact::sign_of(face_like_value<Ints>(v, d.numerator, d.exponent));
       });
 }
 
@@ -175,8 +198,8 @@ double ExactSignsAtDoubles::face_like_secant(const exact::FaceLikeVertices& v, d
   const auto [va, vb] = with_face_like_integers(
       exact::face_like_difference_bits(q_.bits, k), [&](auto ints) {
         using Ints = decltype(ints);
-        return std::pair{exact::approximate(exact::face_like_value<Ints>(q_, v, ta, k)),
-                         exact::approximate(exact::face_like_value<Ints>(q_, v, tb, k))};
+        return std::pair{exact::approximate(face_like_value<Ints>(v, ta, k)),
+                         exact::approximate(face_like_value<Ints>(v, tb, k))};
       });
   const long e = std::max(va.exponent, vb.exponent);
   const double x = std::ldexp(va.mantissa, static_cast<int>(std::max(va.exponent - e, -2000L)));

@@ -58,8 +58,17 @@ class ExactSignsAtDoubles {
   int face_like_sign(const exact::FaceLikeVertices& v, double t) const;
   double face_like_secant(const exact::FaceLikeVertices& v, double lo, double hi) const;
 
+  /// The differences of polynomial 0 in FixedInt (formed when first needed; none when the
+  /// coordinates need more than the widest fixed width).
+  const exact::StoredFaceLikeDifferences* fixed_differences(const exact::FaceLikeVertices& v) const;
+  template <class Ints>
+  typename Ints::Value face_like_value(const exact::FaceLikeVertices& v, std::uint64_t T,
+                                       unsigned k) const;
+
   exact::SeparationIntegers q_;
   mutable std::optional<Gmp> gmp_;
+  mutable std::optional<exact::StoredFaceLikeDifferences> fixed_differences_;
+  mutable const exact::FaceLikeVertices* fixed_differences_of_ = nullptr;
 };
 
 }  // namespace exactccd::filters::separation

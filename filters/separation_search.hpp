@@ -59,6 +59,15 @@ EXACTCCD_CERTIFIED Interval enclosure_over(const Poly6& g, double lo, double hi)
   return r;
 }
 
+/// The certified sign of g over [lo, hi] (constant there), or uncertain: interval Horner over
+/// the piece first (cheap, and enough where g is far from zero), the centred form where that
+/// cannot tell.
+EXACTCCD_CERTIFIED CertifiedSign sign_over(const Poly6& g, double lo, double hi) {
+  const CertifiedSign s = certified_sign(predicates::evaluate(g, Interval(lo, hi)));
+  if (s != CertifiedSign::uncertain) return s;
+  return certified_sign(enclosure_over(g, lo, hi));
+}
+
 EXACTCCD_CERTIFIED Poly6 derivative_of(const Poly6& g) {
   Poly6 d;
   for (int i = 1; i <= 6; ++i) d.c[i - 1] = g.c[i] * Interval(i);
@@ -170,25 +179,26 @@ class FirstWithinSearch {
     known_.fill(kUnknown);
     const auto& polys = table().poly;
     for (int k = 0; k < Separation::kCount; ++k) {
-      const CertifiedSign s = certified_sign(enclosure_over(polys[k], lo, hi));
+      const CertifiedSign s = sign_over(polys[k], lo, hi);
       if (s != CertifiedSign::uncertain) known_[k] = static_cast<signed char>(s);
     }
   }
 
   /// The signs of every region polynomial over [lo, hi]; *split when a finer piece may
-  /// decide what this one cannot.
+  /// decide what this one cannot. The signs are computed when first read: the optimistic test
+  /// often excludes a piece after a few of them.
   Step analyse(double lo, double hi, bool* split) {
     const auto& polys = table().poly;
+    constexpr signed char kNotYet = 3;
     std::array<signed char, Separation::kCount> sign;
-    int uncertain = 0, which = -1;
-    for (int k = 0; k < Separation::kCount; ++k) {
-      const CertifiedSign s = certified_sign(enclosure_over(polys[k], lo, hi));
-      sign[k] = static_cast<signed char>(s == CertifiedSign::uncertain ? kUnknown : int(s));
-      if (s == CertifiedSign::uncertain) {
-        ++uncertain;
-        which = k;
+    sign.fill(kNotYet);
+    auto sign_of = [&](int k) {
+      if (sign[k] == kNotYet) {
+        const CertifiedSign s = sign_over(polys[k], lo, hi);
+        sign[k] = static_cast<signed char>(s == CertifiedSign::uncertain ? kUnknown : int(s));
       }
-    }
+      return static_cast<int>(sign[k]);
+    };
     if (lo == 0.0 && cleared_ == 0.0) {  // not within at lo: lo is cleared, or t = 0 is tested
       const int at_zero = within_at(0.0);
       if (at_zero == 0) return Step::give_up;
@@ -200,12 +210,20 @@ class FirstWithinSearch {
     // Optimistic: an uncertain non-strict condition reads as satisfied (sign 0), an uncertain
     // strict one as positive. Not within even so: not within anywhere in the piece.
     const bool possible = Separation::within([&](int k) {
-      if (sign[k] != kUnknown) return static_cast<int>(sign[k]);
+      const int s = sign_of(k);
+      if (s != kUnknown) return s;
       return k < Separation::kNonStrictCount ? 0 : 1;
     });
     if (!possible) {
       cleared_ = hi;
       return Step::excluded;
+    }
+    int uncertain = 0, which = -1;
+    for (int k = 0; k < Separation::kCount; ++k) {
+      if (sign_of(k) == kUnknown) {
+        ++uncertain;
+        which = k;
+      }
     }
     if (uncertain != 1 || which >= Separation::kNonStrictCount) {
       *split = true;
@@ -213,7 +231,7 @@ class FirstWithinSearch {
     }
     // One polynomial g's sign is uncertain over the piece; every other sign is constant.
     const Poly6& g = polys[which];
-    const CertifiedSign slope = certified_sign(enclosure_over(derivative_of(g), lo, hi));
+    const CertifiedSign slope = sign_over(derivative_of(g), lo, hi);
     if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero) {
       *split = true;
       return Step::give_up;
