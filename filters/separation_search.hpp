@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 
 #include "core/predicates/double_bits.hpp"
@@ -269,29 +270,70 @@ class FirstWithinSearch {
     return exact_.sign(k, t);
   }
 
-  /// The first contact is the root r in (lo, hi) of polynomial k, of sign s_lo at lo:
-  /// bisection in the order of doubles with certified signs, exact ones at doubles where the
-  /// interval cannot tell, to the tightest pair of doubles (or toi_width).
+  /// The first contact is the root r in (lo, hi) of polynomial k, of sign s_lo at lo, g
+  /// strictly monotone on [lo, hi]: every probe t in (lo, hi) whose sign is certified moves lo
+  /// or hi to t. The probes: secant steps through the middles of g's interval values (at most
+  /// kGuidedSteps, the first slope from g''s enclosure), else bisection in the order of
+  /// doubles; where the interval cannot tell, two probes about its uncertainty away on either
+  /// side, then exact signs at doubles (a secant through exact values, and its neighbour on r's
+  /// side), to the tightest pair of doubles (or toi_width).
+  /// PROOF: proofs/min_separation.md#interval-search
   Step tighten(int k, double lo, double hi, int s_lo) {
+    constexpr int kGuidedSteps = 16;
     const Poly6& g = table().poly[k];
     bool exact_phase = false;  // the interval signs have failed once: exact signs from here
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    double slope = kNone;                   // a guess of g' near r
+    double guess = kNone;                   // the next probe the guesses suggest
+    double t_prev = kNone, v_prev = kNone;  // the previous probe and its value's middle
+    int guided = 0;
+    // A certified sign at t in (lo, hi) moves an end; true when t is the root itself.
+    auto classify = [&](CertifiedSign s, double t) {
+      if (s == CertifiedSign::zero) {
+        lo = hi = t;
+        return true;
+      }
+      (static_cast<int>(s) == s_lo ? lo : hi) = t;
+      return false;
+    };
     for (;;) {
       if (options_.toi_width > 0 && hi - lo <= options_.toi_width) break;  // rounded up
       double mid = 0;
       if (!predicates::middle_double(lo, hi, &mid)) break;
       if (!exact_phase) {
-        const CertifiedSign s = certified_sign(predicates::evaluate(g, Interval(mid)));
+        const bool use_guess = guided < kGuidedSteps && guess > lo && guess < hi;
+        guided += use_guess;
+        const double t = use_guess ? guess : mid;
+        const Interval v = predicates::evaluate(g, Interval(t));
+        const double v_mid = 0.5 * (v.inf() + v.sup());
+        const double secant = (v_mid - v_prev) / (t - t_prev);  // NaN without a previous probe
+        if (std::isfinite(secant) && secant != 0) {
+          slope = secant;
+        } else if (std::isnan(slope)) {
+          slope = predicates::evaluate(derivative_of(g), Interval(t)).sup();
+        }
+        const CertifiedSign s = certified_sign(v);
         if (s != CertifiedSign::uncertain) {
-          if (s == CertifiedSign::zero) {
-            lo = hi = mid;
-            break;
-          }
-          (static_cast<int>(s) == s_lo ? lo : hi) = mid;
+          if (classify(s, t)) break;
+          t_prev = t;
+          v_prev = v_mid;
+          guess = t - v_mid / slope;
           continue;
         }
+        // Within the interval's uncertainty of r: probes at twice its estimated radius on
+        // either side bracket r tightly when their signs are certified.
+        const double radius = 2 * (v.sup() - v.inf()) / std::fabs(slope);
+        bool root = false;
+        for (const double probe : {t - radius, t + radius}) {
+          if (root || !(probe > lo && probe < hi)) continue;
+          const CertifiedSign sp = certified_sign(predicates::evaluate(g, Interval(probe)));
+          if (sp != CertifiedSign::uncertain) root = classify(sp, probe);
+        }
+        if (root) break;
         exact_phase = true;
+        if (!predicates::middle_double(lo, hi, &mid)) break;
       }
-      // Near r the interval cannot tell: a point from the secant through g's exact values at
+    // Near r the interval cannot tell: a point from the secant through g's exact values at
       // the ends (a guess: its exact sign decides), and its neighbour on r's side, so that a
       // good guess closes the bracket to adjacent doubles at once.
       exact_used_ = true;
