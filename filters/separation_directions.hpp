@@ -1,7 +1,8 @@
-// Separating directions over a time interval for minimum-separation CCD: the vertices'
-// positions enclosed over the interval, and the certified test "the two convex hulls are
-// more than delta apart along a direction" for the axes and for directions guessed at the
-// interval's middle (closest points, the normal). Needs a RoundingGuard.
+// Separating directions over a time interval for minimum-separation CCD: the certified test
+// "the two convex hulls are more than delta apart along a direction" for the axes and for
+// directions guessed at the interval's middle (closest points, the normal), read at the
+// interval's two ends (the gap along a fixed direction is concave in t); over the whole step
+// from the input doubles alone, over a piece from interval positions. Needs a RoundingGuard.
 // PROOF: proofs/min_separation.md#separating-directions
 #pragma once
 
@@ -42,61 +43,6 @@ struct MovingVertex {
 
 template <std::size_t N>
 using Positions = std::array<std::array<Interval, 3>, N>;
-
-/// Lower bound of min over the second set minus max over the first, along s.
-template <std::size_t N1, std::size_t N2>
-EXACTCCD_CERTIFIED double support_gap(const Eigen::Vector3d& s, const Positions<N1>& first,
-                   const Positions<N2>& second) {
-  double max1 = -std::numeric_limits<double>::infinity();
-  for (const auto& x : first) {
-    const Interval proj = Interval(s[0]) * x[0] + Interval(s[1]) * x[1] + Interval(s[2]) * x[2];
-    max1 = std::max(max1, proj.sup());
-  }
-  double min2 = std::numeric_limits<double>::infinity();
-  for (const auto& x : second) {
-    const Interval proj = Interval(s[0]) * x[0] + Interval(s[1]) * x[1] + Interval(s[2]) * x[2];
-    min2 = std::min(min2, proj.inf());
-  }
-  return (exact_interval(min2) - exact_interval(max1)).inf();
-}
-
-/// Certainly more than delta apart along the direction s (either orientation): the convex
-/// hulls of the two vertex sets are separated by the slab of width gap / |s| > delta.
-/// PROOF: proofs/min_separation.md#separating-directions
-template <std::size_t N1, std::size_t N2>
-EXACTCCD_CERTIFIED bool apart_along(const Eigen::Vector3d& s, const Positions<N1>& first,
-                 const Positions<N2>& second, const Interval& delta2) {
-  if (!s.allFinite() || s.isZero(0.0)) return false;
-  const Interval norm2 = Interval(s[0]) * s[0] + Interval(s[1]) * s[1] + Interval(s[2]) * s[2];
-  for (const double orientation : {1.0, -1.0}) {
-    const double gap = support_gap<N1, N2>(orientation * s, first, second);
-    if (gap > 0 && (exact_interval(gap) * exact_interval(gap)).inf() > (delta2 * norm2).sup())
-      return true;
-  }
-  return false;
-}
-
-/// Axis-aligned gaps wider than delta over T.
-template <std::size_t N1, std::size_t N2>
-EXACTCCD_CERTIFIED bool apart_on_an_axis(const Positions<N1>& first, const Positions<N2>& second,
-                                         double delta) {
-  for (int k = 0; k < 3; ++k) {
-    double lo1 = first[0][k].inf(), hi1 = first[0][k].sup();
-    for (const auto& x : first) {
-      lo1 = std::min(lo1, x[k].inf());
-      hi1 = std::max(hi1, x[k].sup());
-    }
-    double lo2 = second[0][k].inf(), hi2 = second[0][k].sup();
-    for (const auto& x : second) {
-      lo2 = std::min(lo2, x[k].inf());
-      hi2 = std::max(hi2, x[k].sup());
-    }
-    if ((exact_interval(lo2) - exact_interval(hi1)).inf() > delta ||
-        (exact_interval(lo1) - exact_interval(hi2)).inf() > delta)
-      return true;
-  }
-  return false;
-}
 
 /// The closest point to p on the closed triangle (a, b, c) in plain arithmetic (Ericson,
 /// Real-Time Collision Detection, 5.1.5): a direction guess only, never a decision.
@@ -155,38 +101,207 @@ EXACTCCD_CERTIFIED std::pair<Eigen::Vector3d, Eigen::Vector3d> closest_on_segmen
   return {p1 + d1 * s, p2 + d2 * t};
 }
 
-/// Vertex-face: the positions over T and the direction guesses at T's middle.
+/// `s` or -s, whichever has `towards` on its positive side (a guess only).
+EXACTCCD_CERTIFIED Eigen::Vector3d oriented(const Eigen::Vector3d& s,
+                                           const Eigen::Vector3d& towards) {
+  return s.dot(towards) < 0 ? Eigen::Vector3d(-s) : s;
+}
+
+/// Direction guesses in plain arithmetic (never a decision), each oriented with the first
+/// primitive (the vertex, the edge a) on its positive side: the vector between the closest
+/// points, and the triangle's normal or the edges' cross product.
+EXACTCCD_CERTIFIED std::array<Eigen::Vector3d, 2> vertex_face_guesses(const Eigen::Vector3d& p,
+                                                                   const Eigen::Vector3d& a,
+                                                                   const Eigen::Vector3d& b,
+                                                                   const Eigen::Vector3d& c) {
+  return {p - closest_on_triangle(p, a, b, c), oriented((b - a).cross(c - a), p - a)};
+}
+
+EXACTCCD_CERTIFIED std::array<Eigen::Vector3d, 2> edge_edge_guesses(const Eigen::Vector3d& a0,
+                                                                 const Eigen::Vector3d& a1,
+                                                                 const Eigen::Vector3d& b0,
+                                                                 const Eigen::Vector3d& b1) {
+  const auto [ca, cb] = closest_on_segments(a0, a1, b0, b1);
+  const Eigen::Vector3d between = ca - cb;
+  return {between, oriented((a1 - a0).cross(b1 - b0), between.isZero(0.0) ? a0 - b0 : between)};
+}
+
+/// True when gap (a lower bound of the gap along s, at every time of the piece) certainly
+/// exceeds delta |s|: gap > 0 and gap^2 (rounded downwards) > delta^2 |s|^2 (upwards).
+EXACTCCD_CERTIFIED bool gap_exceeds(double gap, const Eigen::Vector3d& s, double delta2_upper) {
+  if (!(gap > 0)) return false;
+  const double bound = delta2_upper * ((s[0] * s[0] + s[1] * s[1]) + s[2] * s[2]);
+  return -((-gap) * gap) > bound;
+}
+
+/// Usable as a direction: finite and non-zero.
+EXACTCCD_CERTIFIED bool usable(const Eigen::Vector3d& s) {
+  return s.allFinite() && !s.isZero(0.0);
+}
+
+// ---- A piece [lo, hi] of the step: interval positions at its ends.
+
+/// The vertices' positions at the two ends of a piece.
+template <std::size_t N1, std::size_t N2>
+struct EndPositions {
+  Positions<N1> first_lo, first_hi;
+  Positions<N2> second_lo, second_hi;
+};
+
+/// A lower bound, at one instant, of min s.x - max s.y over x in first, y in second.
+template <std::size_t N1, std::size_t N2>
+EXACTCCD_CERTIFIED double interval_gap(const Eigen::Vector3d& s, const Positions<N1>& first,
+                                       const Positions<N2>& second) {
+  double min1 = std::numeric_limits<double>::infinity();
+  for (const auto& x : first) {
+    const Interval proj = Interval(s[0]) * x[0] + Interval(s[1]) * x[1] + Interval(s[2]) * x[2];
+    min1 = std::min(min1, proj.inf());
+  }
+  double max2 = -std::numeric_limits<double>::infinity();
+  for (const auto& y : second) {
+    const Interval proj = Interval(s[0]) * y[0] + Interval(s[1]) * y[1] + Interval(s[2]) * y[2];
+    max2 = std::max(max2, proj.sup());
+  }
+  return (exact_interval(min1) - exact_interval(max2)).inf();
+}
+
+/// Certainly more than delta apart along s, `first` on its positive side, over the piece.
+/// PROOF: proofs/min_separation.md#separating-directions
+template <std::size_t N1, std::size_t N2>
+EXACTCCD_CERTIFIED bool apart_along(const Eigen::Vector3d& s, const EndPositions<N1, N2>& ends,
+                                    double delta2_upper) {
+  if (!usable(s)) return false;
+  return gap_exceeds(std::min(interval_gap(s, ends.first_lo, ends.second_lo),
+                              interval_gap(s, ends.first_hi, ends.second_hi)),
+                     s, delta2_upper);
+}
+
+/// A lower bound of min over `second` minus max over `first` on axis k.
+template <std::size_t N1, std::size_t N2>
+EXACTCCD_CERTIFIED double axis_gap(int k, const Positions<N1>& first, const Positions<N2>& second) {
+  double hi1 = first[0][k].sup(), lo2 = second[0][k].inf();
+  for (const auto& x : first) hi1 = std::max(hi1, x[k].sup());
+  for (const auto& y : second) lo2 = std::min(lo2, y[k].inf());
+  return (exact_interval(lo2) - exact_interval(hi1)).inf();
+}
+
+/// Axis-aligned gaps wider than delta at both ends of the piece, either side.
+template <std::size_t N1, std::size_t N2>
+EXACTCCD_CERTIFIED bool apart_on_an_axis(const EndPositions<N1, N2>& ends, double delta) {
+  for (int k = 0; k < 3; ++k) {
+    if (std::min(axis_gap(k, ends.first_lo, ends.second_lo),
+                 axis_gap(k, ends.first_hi, ends.second_hi)) > delta ||
+        std::min(axis_gap(k, ends.second_lo, ends.first_lo),
+                 axis_gap(k, ends.second_hi, ends.first_hi)) > delta)
+      return true;
+  }
+  return false;
+}
+
+/// Vertex-face over a piece T: p, a, b, c.
 struct VertexFaceMotion {
   std::array<MovingVertex, 4> v;  // p, a, b, c
   /// `axes`: try the axes too (false where culling has just tried the same boxes).
   bool apart_over(const Interval& T, const Interval& delta2, double delta, bool axes) const {
-    const Positions<1> first{v[0].at(T)};
-    const Positions<3> second{v[1].at(T), v[2].at(T), v[3].at(T)};
-    if (axes && apart_on_an_axis<1, 3>(first, second, delta)) return true;
+    const Interval lo(T.inf()), hi(T.sup());
+    const EndPositions<1, 3> ends{{v[0].at(lo)},
+                                  {v[0].at(hi)},
+                                  {v[1].at(lo), v[2].at(lo), v[3].at(lo)},
+                                  {v[1].at(hi), v[2].at(hi), v[3].at(hi)}};
+    if (axes && apart_on_an_axis(ends, delta)) return true;
     const double mid = 0.5 * (T.inf() + T.sup());
-    const Eigen::Vector3d p = v[0].guess_at(mid), a = v[1].guess_at(mid), b = v[2].guess_at(mid),
-                          c = v[3].guess_at(mid);
-    if (apart_along<1, 3>(p - closest_on_triangle(p, a, b, c), first, second, delta2))
-      return true;
-    return apart_along<1, 3>((b - a).cross(c - a), first, second, delta2);
+    for (const Eigen::Vector3d& s : vertex_face_guesses(v[0].guess_at(mid), v[1].guess_at(mid),
+                                                        v[2].guess_at(mid), v[3].guess_at(mid)))
+      if (apart_along(s, ends, delta2.sup())) return true;
+    return false;
   }
 };
 
-/// Edge-edge: the positions over T and the direction guesses at T's middle.
+/// Edge-edge over a piece T: a0, a1, b0, b1.
 struct EdgeEdgeMotion {
   std::array<MovingVertex, 4> v;  // a0, a1, b0, b1
   /// `axes`: try the axes too (false where culling has just tried the same boxes).
   bool apart_over(const Interval& T, const Interval& delta2, double delta, bool axes) const {
-    const Positions<2> first{v[0].at(T), v[1].at(T)};
-    const Positions<2> second{v[2].at(T), v[3].at(T)};
-    if (axes && apart_on_an_axis<2, 2>(first, second, delta)) return true;
+    const Interval lo(T.inf()), hi(T.sup());
+    const EndPositions<2, 2> ends{{v[0].at(lo), v[1].at(lo)},
+                                  {v[0].at(hi), v[1].at(hi)},
+                                  {v[2].at(lo), v[3].at(lo)},
+                                  {v[2].at(hi), v[3].at(hi)}};
+    if (axes && apart_on_an_axis(ends, delta)) return true;
     const double mid = 0.5 * (T.inf() + T.sup());
-    const Eigen::Vector3d a0 = v[0].guess_at(mid), a1 = v[1].guess_at(mid),
-                          b0 = v[2].guess_at(mid), b1 = v[3].guess_at(mid);
-    const auto [ca, cb] = closest_on_segments(a0, a1, b0, b1);
-    if (apart_along<2, 2>(ca - cb, second, first, delta2)) return true;
-    return apart_along<2, 2>((a1 - a0).cross(b1 - b0), second, first, delta2);
+    for (const Eigen::Vector3d& s : edge_edge_guesses(v[0].guess_at(mid), v[1].guess_at(mid),
+                                                      v[2].guess_at(mid), v[3].guess_at(mid)))
+      if (apart_along(s, ends, delta2.sup())) return true;
+    return false;
   }
 };
+
+// ---- The whole step [0, 1], which contains [0, t_max]: the positions at its ends are the
+// input doubles themselves, so no interval is needed; upper bounds come from plain products
+// and sums rounded upwards (each >= its exact value). PROOF: proofs/min_separation.md#whole-step
+
+template <std::size_t N>
+using InputVertices = std::array<const Eigen::Vector3d*, N>;
+
+/// An upper bound of s.x.
+EXACTCCD_CERTIFIED double dot_upper(const Eigen::Vector3d& s, const Eigen::Vector3d& x) {
+  return (s[0] * x[0] + s[1] * x[1]) + s[2] * x[2];
+}
+
+/// A lower bound, at one instant, of min s.x - max s.y >= -(max (-s).x + max s.y).
+template <std::size_t N1, std::size_t N2>
+EXACTCCD_CERTIFIED double instant_gap(const Eigen::Vector3d& s, const InputVertices<N1>& first,
+                                      const InputVertices<N2>& second) {
+  const Eigen::Vector3d n = -s;
+  double up1 = dot_upper(n, *first[0]), up2 = dot_upper(s, *second[0]);
+  for (std::size_t i = 1; i < N1; ++i) up1 = std::max(up1, dot_upper(n, *first[i]));
+  for (std::size_t i = 1; i < N2; ++i) up2 = std::max(up2, dot_upper(s, *second[i]));
+  return -(up1 + up2);
+}
+
+/// Plain midpoint of a vertex's motion (a guess only).
+EXACTCCD_CERTIFIED Eigen::Vector3d midpoint_guess(const Eigen::Vector3d& x0,
+                                                  const Eigen::Vector3d& x1) {
+  return 0.5 * (x0 + x1);
+}
+
+/// Certainly more than delta apart over [0, 1] along a guess made at t = 1/2 (the axes are the
+/// culling's); t0, t1 = the four vertices at t = 0 and t = 1, the first N1 of them the first
+/// primitive. Needs a RoundingGuard.
+template <std::size_t N1, class Guess>
+EXACTCCD_CERTIFIED bool apart_over_whole_step(const InputVertices<4>& t0,
+                                              const InputVertices<4>& t1, double delta,
+                                              Guess guess) {
+  constexpr std::size_t N2 = 4 - N1;
+  InputVertices<N1> first0, first1;
+  InputVertices<N2> second0, second1;
+  for (std::size_t i = 0; i < N1; ++i) first0[i] = t0[i], first1[i] = t1[i];
+  for (std::size_t i = 0; i < N2; ++i) second0[i] = t0[N1 + i], second1[i] = t1[N1 + i];
+  const double delta2 = delta * delta;  // rounded upwards
+  for (const Eigen::Vector3d& s :
+       guess(midpoint_guess(*t0[0], *t1[0]), midpoint_guess(*t0[1], *t1[1]),
+             midpoint_guess(*t0[2], *t1[2]), midpoint_guess(*t0[3], *t1[3])))
+    if (usable(s) && gap_exceeds(std::min(instant_gap(s, first0, second0),
+                                          instant_gap(s, first1, second1)),
+                                 s, delta2))
+      return true;
+  return false;
+}
+
+/// Vertex-face over the whole step: {p, a, b, c} at t = 0 and t = 1.
+EXACTCCD_CERTIFIED bool vertex_face_apart_over_whole_step(const InputVertices<4>& t0,
+                                                          const InputVertices<4>& t1,
+                                                          double delta) {
+  return apart_over_whole_step<1>(
+      t0, t1, delta, [](const auto&... x) { return vertex_face_guesses(x...); });
+}
+
+/// Edge-edge over the whole step: {a0, a1, b0, b1} at t = 0 and t = 1.
+EXACTCCD_CERTIFIED bool edge_edge_apart_over_whole_step(const InputVertices<4>& t0,
+                                                        const InputVertices<4>& t1,
+                                                        double delta) {
+  return apart_over_whole_step<2>(
+      t0, t1, delta, [](const auto&... x) { return edge_edge_guesses(x...); });
+}
 
 }  // namespace exactccd::filters::separation

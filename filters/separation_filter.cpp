@@ -18,12 +18,12 @@ namespace {
 
 using predicates::Vec3;
 
-/// hi1 + delta < lo2 or hi2 + delta < lo1 on some axis, the sums rounded upwards: a certain
-/// gap wider than delta. PROOF: proofs/min_separation.md#culling-with-delta
+/// lo2 - hi1 > delta or lo1 - hi2 > delta on some axis, the difference rounded in any mode:
+/// rounding is monotone and delta is a double, so a rounded difference above delta means an
+/// exact one above it; no rounding mode to set. PROOF: proofs/min_separation.md#culling-with-delta
 template <std::size_t N1, std::size_t N2>
 bool boxes_apart(const std::array<const Eigen::Vector3d*, N1>& first,
                  const std::array<const Eigen::Vector3d*, N2>& second, double delta) {
-  const RoundingGuard upward;
   for (int k = 0; k < 3; ++k) {
     double lo1 = first[0]->coeff(k), hi1 = lo1, lo2 = second[0]->coeff(k), hi2 = lo2;
     for (const auto* v : first) {
@@ -34,7 +34,7 @@ bool boxes_apart(const std::array<const Eigen::Vector3d*, N1>& first,
       lo2 = std::min(lo2, v->coeff(k));
       hi2 = std::max(hi2, v->coeff(k));
     }
-    if (hi1 + delta < lo2 || hi2 + delta < lo1) return true;
+    if (lo2 - hi1 > delta || lo1 - hi2 > delta) return true;
   }
   return false;
 }
@@ -56,12 +56,19 @@ using Vertices = std::array<const Eigen::Vector3d*, 4>;
 /// The search over [0, t_max] for the four moving vertices (t0, t1) of one query type: `make`
 /// builds its separation, `sign` and `secant` are ExactSignsAtDoubles' members for that type
 /// (the integer query built only when first asked).
-template <class Motion, class Make, class Sign, class Secant>
+template <class Motion, class WholeStep, class Make, class Sign, class Secant>
 SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
-                                    const CcdOptions& options, Make make, Sign sign,
-                                    Secant secant) {
+                                    const CcdOptions& options, WholeStep apart_over_whole_step,
+                                    Make make, Sign sign, Secant secant) {
   using separation::MovingVertex;
   const RoundingGuard upward;
+  // Most pairs that pass culling are decided here, from the input doubles alone.
+  if (apart_over_whole_step(t0, t1, options.min_separation)) {
+    SeparationOutcome out;
+    out.verdict = SeparationVerdict::never_within;
+    out.cleared_until = options.t_max;
+    return out;
+  }
   const Motion m{{MovingVertex(*t0[0], *t1[0]), MovingVertex(*t0[1], *t1[1]),
                   MovingVertex(*t0[2], *t1[2]), MovingVertex(*t0[3], *t1[3])}};
   const Interval delta2 = Interval(options.min_separation) * options.min_separation;
@@ -94,6 +101,7 @@ SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                 const CcdOptions& options) {
   return separation_filter<separation::VertexFaceMotion>(
       {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0}, {&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1}, options,
+      separation::vertex_face_apart_over_whole_step,
       [](const auto&... x) { return predicates::vertex_face_separation(x...); },
       &separation::ExactSignsAtDoubles::vertex_face_sign,
       &separation::ExactSignsAtDoubles::vertex_face_secant);
@@ -102,7 +110,8 @@ SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
 SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
   return separation_filter<separation::EdgeEdgeMotion>(
       {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0}, {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
-      options, [](const auto&... x) { return predicates::edge_edge_separation(x...); },
+      options, separation::edge_edge_apart_over_whole_step,
+      [](const auto&... x) { return predicates::edge_edge_separation(x...); },
       &separation::ExactSignsAtDoubles::edge_edge_sign,
       &separation::ExactSignsAtDoubles::edge_edge_secant);
 }

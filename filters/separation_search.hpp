@@ -226,6 +226,10 @@ class FirstWithinSearch {
         which = k;
       }
     }
+    if (uncertain > 1) {
+      const Step s = conditions_turning_on(lo, hi, sign);
+      if (s != Step::give_up) return s;
+    }
     if (uncertain != 1 || which >= Separation::kNonStrictCount) {
       *split = true;
       return Step::give_up;
@@ -260,6 +264,52 @@ class FirstWithinSearch {
       return Step::found;
     }
     return tighten(which, lo, hi, s_lo);
+  }
+
+  /// Several signs uncertain over [lo, hi], every one a non-strict polynomial whose
+  /// derivative's enclosure has the certain strict sign that turns its condition on (negative
+  /// for "<= 0", positive for ">= 0"): each condition, once on, stays on over the piece, so by
+  /// monotonicity the instants within delta form [t*, hi] or nothing (lo is not within). The
+  /// predicate at hi and a bisection in double order on the predicate at doubles (certified
+  /// signs, exact ones where intervals cannot tell) then give t*. The case of several region
+  /// polynomials vanishing together: a vertex reaching delta at a triangle's corner.
+  /// PROOF: proofs/min_separation.md#conditions-turning-on
+  Step conditions_turning_on(double lo, double hi,
+                             const std::array<signed char, Separation::kCount>& sign) {
+    const auto& polys = table().poly;
+    for (int k = 0; k < Separation::kCount; ++k) {
+      if (sign[k] != kUnknown) continue;
+      if (k >= Separation::kNonStrictCount) return Step::give_up;
+      const CertifiedSign slope = sign_over(derivative_of(polys[k]), lo, hi);
+      if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero ||
+          static_cast<int>(slope) != Separation::condition(k))
+        return Step::give_up;
+    }
+    auto within_exactly_at = [&](double t) {
+      return Separation::within(
+          [&](int k) { return sign[k] != kUnknown ? int(sign[k]) : sign_at(k, t); });
+    };
+    if (!within_exactly_at(hi)) {
+      cleared_ = hi;
+      return Step::excluded;
+    }
+    double l = lo, h = hi;  // not within at l, within at h
+    for (;;) {
+      if (options_.toi_width > 0 && h - l <= options_.toi_width) break;  // rounded up
+      double mid = 0;
+      if (!predicates::middle_double(l, h, &mid)) break;
+      (within_exactly_at(mid) ? h : l) = mid;
+    }
+    // t* = h exactly iff not within just before h: there a condition whose polynomial vanishes
+    // at h is still off, one strictly on at h was already on.
+    const bool before_h = Separation::within([&](int k) {
+      if (sign[k] != kUnknown) return int(sign[k]);
+      const int s = sign_at(k, h);
+      return s != 0 ? s : -Separation::condition(k);
+    });
+    toi_lo_ = before_h ? l : h;
+    toi_hi_ = h;
+    return Step::found;
   }
 
   /// The sign of polynomial k at the double t: certified by intervals, else exact.

@@ -170,6 +170,74 @@ TEST(MinSeparationTest, DefaultPathEqualsExactPathOnTheSampleQueries) {
   EXPECT_GT(by_filters, contacts / 2);  // the search decides most contacts without GMP's roots
 }
 
+/// Every non-strict polynomial's condition (Separation::condition) is the one `within` reads:
+/// moving its sign from the off side onto the condition never turns `within` off, and turns it
+/// on for some signs of the others (the conditions-turning-on case of the search relies on it).
+template <class Separation>
+void expect_conditions_match_within() {
+  std::mt19937_64 rng(7);
+  std::array<int, Separation::kCount> sign{};
+  for (int k = 0; k < Separation::kNonStrictCount; ++k) {
+    const int on = Separation::condition(k);
+    bool turns_on = false;
+    for (int trial = 0; trial < 4000; ++trial) {
+      for (int j = 0; j < Separation::kCount; ++j)
+        sign[j] = j < Separation::kNonStrictCount ? static_cast<int>(rng() % 3) - 1
+                                                  : static_cast<int>(rng() % 2);
+      auto within_with = [&](int s) {
+        return Separation::within([&](int j) { return j == k ? s : sign[j]; });
+      };
+      const bool off = within_with(-on);
+      for (const int s : {0, on}) {
+        EXPECT_TRUE(!off || within_with(s)) << "polynomial " << k << " turned within off";
+        turns_on = turns_on || (!off && within_with(s));
+      }
+    }
+    EXPECT_TRUE(turns_on) << "polynomial " << k << " never mattered";
+  }
+}
+
+TEST(MinSeparationTest, ConditionsAreTheOnesWithinReads) {
+  using P = predicates::Vec3<predicates::FixedPoly<mpq_class, 1>>;
+  expect_conditions_match_within<predicates::VertexFaceSeparation<P, mpq_class>>();
+  expect_conditions_match_within<predicates::EdgeEdgeSeparation<P, mpq_class>>();
+}
+
+/// Several region polynomials reaching zero together (a vertex coming within delta of a
+/// triangle's corner, an edge's end coming within delta of another's end): the filters' search
+/// decides them (conditions turning on) with the exact path's TOI, the point one when t* is a
+/// double, the tightest pair when 2^-40 off the corner moves the roots apart.
+TEST(MinSeparationTest, SeveralPolynomialsVanishingTogetherAreDecidedByTheSearch) {
+  const double delta = std::ldexp(1.0, -10), off = std::ldexp(1.0, -40);
+  const V a(0, 0, 0), b(1, 0, 1), c(1, 0, 0);
+  std::vector<random_queries::DoubleQuery> queries;
+  for (const double dz : {0.0, off, -off}) {
+    random_queries::DoubleQuery q;  // p falls through the plane y = 0 above (near) corner b
+    q.type = QueryType::vertex_face;
+    q.v = {V(1, 1, 1 + dz), a, b, c, V(1, -1, 1 - dz), a, b, c};
+    queries.push_back(q);
+    q.type = QueryType::edge_edge;  // a1 = (0, 1 - 2t, dz) passes b0 = (0, 0, 0)
+    q.v = {V(-1, 1, dz), V(0, 1, dz), V(0, 0, 0), V(0, 0, 1),
+           V(-1, -1, -dz), V(0, -1, -dz), V(0, 0, 0), V(0, 0, 1)};
+    queries.push_back(q);
+  }
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const CcdOptions o = with_delta(delta);
+    const CcdResult fast = random_queries::ccd(queries[i], o);
+    const CcdResult exact =
+        random_queries::ccd(queries[i], random_queries::with_mode(o, Mode::exact));
+    ASSERT_TRUE(exact.collides) << "query " << i;
+    EXPECT_EQ(fast.collides, exact.collides) << "query " << i;
+    EXPECT_EQ(fast.toi_lo, exact.toi_lo) << "query " << i;
+    EXPECT_EQ(fast.toi_hi, exact.toi_hi) << "query " << i;
+    EXPECT_NE(fast.decided_by, Stage::exact) << "query " << i;
+  }
+  // On the corner itself t* = (1 - delta) / 2, a double.
+  const CcdResult corner = random_queries::ccd(queries[0], with_delta(delta));
+  EXPECT_EQ(corner.toi_lo, (1 - delta) / 2);
+  EXPECT_EQ(corner.toi_hi, (1 - delta) / 2);
+}
+
 /// A random query of coordinates in [-1, 1] with the given spread of motion.
 random_queries::DoubleQuery random_query(std::mt19937_64& rng, QueryType type, double motion) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);

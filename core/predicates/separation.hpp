@@ -103,6 +103,13 @@ struct VertexFaceSeparation {
     for (int i = 0; i < 3; ++i)
       if (wanted(17 + i)) f(edge(i).length2());
   }
+  /// The condition on non-strict polynomial k: -1 for "<= 0", +1 for ">= 0".
+  static constexpr int condition(int k) {
+    if (k == 0) return -1;
+    if (k <= 3) return 1;
+    const int r = (k - 4) % 4;  // sphere, projection from x, projection from y, capsule
+    return r == 0 || r == 3 ? -1 : 1;
+  }
   /// Within delta from the signs: an edge's capsule or sphere, or the face region.
   template <class Sign>
   static bool within(Sign&& sign) {
@@ -181,6 +188,13 @@ struct EdgeEdgeSeparation {
     }
     if (wanted(22)) f(e0.length2());
     if (wanted(23)) f(endpoint(2).length2());
+  }
+  /// The condition on non-strict polynomial k: -1 for "<= 0", +1 for ">= 0".
+  static constexpr int condition(int k) {
+    if (k == 0) return -1;
+    if (k <= 4) return 1;
+    if (k <= 8) return -1;  // the endpoint spheres
+    return (k - 9) % 3 == 2 ? -1 : 1;  // projections >= 0, capsule <= 0
   }
   /// Within delta from the signs: an endpoint's capsule or sphere, or the interior region.
   template <class Sign>
