@@ -1,12 +1,14 @@
-// The exact value at a double time of the region polynomial that the minimum-separation search
-// tightens most: polynomial 0 of both separations (core/predicates/separation.hpp), the face
-// or interior region's (W.m)^2 - delta^2 |m|^2 with m = U x V and U, V, W differences of the
-// moving vertices (vertex-face b - a, c - a, p - a; edge-edge a1 - a0, b1 - b0, a0 - b0).
-// Written once over staged integer types, as exact/integer_cubic.hpp: FixedInt widths chosen
-// from the proven bit-length bounds before computing (no allocation), or mpz_class throughout
-// (beyond the widest of them, and as the tests' reference). Every double is an integer times
-// the common power of two 2^E; at t = T 2^-k the differences are formed as 2^(k-E) times
-// their values, which multiplies the homogeneous degree-6 polynomial by 2^(6(k-E)) > 0.
+// Exact values at double times of the minimum-separation region polynomials that the search
+// tightens most (core/predicates/separation.hpp): polynomial 0 of both separations, the face or
+// interior region's (W.m)^2 - delta^2 |m|^2 with m = U x V (vertex-face U, V, W = b - a, c - a,
+// p - a; edge-edge a1 - a0, b1 - b0, a0 - b0), and the capsules' sides
+// |W|^2 |E|^2 - (W.E)^2 - delta^2 |E|^2 of a vertex p against a segment [x, y] (W = p - x,
+// E = y - x), both formed from differences of the moving vertices. Written once over staged
+// integer types, as exact/integer_cubic.hpp: FixedInt widths chosen from the proven bit-length
+// bounds before computing (no allocation), or mpz_class throughout (beyond the widest of them,
+// and as the tests' reference). Every double is an integer times the common power of two 2^E;
+// at t = T 2^-k the differences are formed as 2^(k-E) times their values, which multiplies a
+// polynomial homogeneous of degree d by 2^(d(k-E)) > 0.
 // PROOF: proofs/min_separation.md#fixed-width-signs
 #pragma once
 
@@ -58,20 +60,30 @@ inline SeparationIntegers separation_integers(const std::array<const Eigen::Vect
   return q;
 }
 
-/// The vertices (origin, end) of U, V and W, in the separation's vertex order.
-struct FaceLikeVertices {
+/// The vertices (origin, end) of three differences, in the separation's vertex order.
+struct DifferenceVertices {
   int origin[3], end[3];
 };
 /// Vertex-face (p, a, b, c): U = b - a, V = c - a, W = p - a.
-inline constexpr FaceLikeVertices kVertexFaceRegion{{1, 1, 1}, {2, 3, 0}};
+inline constexpr DifferenceVertices kVertexFaceRegion{{1, 1, 1}, {2, 3, 0}};
 /// Edge-edge (a0, a1, b0, b1): U = a1 - a0, V = b1 - b0, W = a0 - b0.
-inline constexpr FaceLikeVertices kEdgeEdgeRegion{{0, 2, 2}, {1, 3, 0}};
+inline constexpr DifferenceVertices kEdgeEdgeRegion{{0, 2, 2}, {1, 3, 0}};
+/// The capsule of vertex p against the segment [x, y]: W = p - x, E = y - x (the third
+/// difference repeats W). Vertex-face: p against ab, bc, ca (polynomials 7, 11, 15); edge-edge:
+/// a0, a1 against [b0, b1], b0, b1 against [a0, a1] (polynomials 11, 14, 17, 20).
+constexpr DifferenceVertices capsule_vertices(int p, int x, int y) { return {{x, x, x}, {p, y, p}}; }
+inline constexpr DifferenceVertices kVertexFaceCapsules[3] = {
+    capsule_vertices(0, 1, 2), capsule_vertices(0, 2, 3), capsule_vertices(0, 3, 1)};
+inline constexpr DifferenceVertices kEdgeEdgeCapsules[4] = {
+    capsule_vertices(0, 2, 3), capsule_vertices(1, 2, 3), capsule_vertices(2, 0, 1),
+    capsule_vertices(3, 0, 1)};
 
-/// The integer types of the stages: differences (and 2^k delta), cross products (and their
-/// squared delta), the dot product W.m, |m|^2, the value. FixedInt widths grow from stage to
+/// The integer types of the stages: differences (and 2^k delta); products of two (cross
+/// products, dot products of differences, squared delta); the dot product W.m; products of
+/// four (|m|^2, a capsule's value); the face-like value. FixedInt widths grow from stage to
 /// stage; GMP uses one type for all.
 template <class DifferenceInt, class CrossInt, class DotInt, class NormInt, class ValueInt>
-struct FaceLikeIntegers {
+struct StageIntegers {
   using Difference = DifferenceInt;
   using Cross = CrossInt;
   using Dot = DotInt;
@@ -81,15 +93,16 @@ struct FaceLikeIntegers {
 
 /// The widths for differences of Wd limbs: the stages of proofs/min_separation.md#fixed-width-signs.
 template <int Wd>
-using FixedFaceLikeIntegers = FaceLikeIntegers<FixedInt<Wd>, FixedInt<2 * Wd>, FixedInt<3 * Wd>,
+using FixedStageIntegers = StageIntegers<FixedInt<Wd>, FixedInt<2 * Wd>, FixedInt<3 * Wd>,
                                                FixedInt<4 * Wd>, FixedInt<6 * Wd>>;
-using GmpFaceLikeIntegers = FaceLikeIntegers<mpz_class, mpz_class, mpz_class, mpz_class, mpz_class>;
+using GmpStageIntegers = StageIntegers<mpz_class, mpz_class, mpz_class, mpz_class, mpz_class>;
 
-/// The widest differences computed in FixedInt (values in FixedInt<18>); GMP beyond.
-inline constexpr int kMaxFaceLikeDifferenceLimbs = 3;
+/// The widest differences computed in FixedInt (face-like values in FixedInt<18>); GMP
+/// beyond.
+inline constexpr int kMaxDifferenceLimbs = 3;
 
 /// Bits bounding every intermediate of the differences at t = T 2^-k: B + 2 with B = L + k.
-inline long face_like_difference_bits(int coordinate_bits, unsigned k) {
+inline long separation_difference_bits(int coordinate_bits, unsigned k) {
   return static_cast<long>(coordinate_bits) + static_cast<long>(k) + 2;
 }
 
@@ -104,16 +117,16 @@ Int separation_integer(const Dyadic& d, int common_exponent, unsigned shift) {
 /// U, V, W of t-independent integers: each component's difference d0 at t = 0 and its
 /// change d1 - d0 over the step (|d0| < 2^(L+1), |d1 - d0| < 2^(L+2)), and X_delta.
 template <class Int>
-struct FaceLikeDifferences {
+struct StepDifferences {
   Int d0[3][3], step[3][3];  // [U, V, W][axis]
   Int delta;
 };
 
 template <class Int>
-FaceLikeDifferences<Int> face_like_differences(const SeparationIntegers& q,
-                                               const FaceLikeVertices& v) {
+StepDifferences<Int> step_differences(const SeparationIntegers& q,
+                                               const DifferenceVertices& v) {
   const int E = q.common_exponent;
-  FaceLikeDifferences<Int> r;
+  StepDifferences<Int> r;
   for (int j = 0; j < 3; ++j)
     for (int c = 0; c < 3; ++c) {
       Int d0 = separation_integer<Int>(q.coords[0][v.end[j]][c], E, 0);
@@ -130,7 +143,7 @@ FaceLikeDifferences<Int> face_like_differences(const SeparationIntegers& q,
 
 /// The widest differences' integers: FixedInt<3> holds them when L + 2 <= 191, which every
 /// fixed width (B + 2 <= 191, B >= L) implies.
-using StoredFaceLikeDifferences = FaceLikeDifferences<FixedInt<kMaxFaceLikeDifferenceLimbs>>;
+using StoredStepDifferences = StepDifferences<FixedInt<kMaxDifferenceLimbs>>;
 
 /// x in the type To: a FixedInt narrowed to fewer limbs (exact when its value fits), or as is.
 template <class To, int N>
@@ -142,14 +155,20 @@ To narrowed(const mpz_class& x) {
   return x;
 }
 
-/// 2^(6(k - E)) g(t) at t = T 2^-k (T <= 2^k, i.e. t <= 1), g = (W.m)^2 - delta^2 |m|^2, from
-/// the differences (in a type that holds their values).
+/// (X_delta 2^k)^2, a product of two differences' width.
 template <class Ints, class Int>
-typename Ints::Value face_like_value(const FaceLikeDifferences<Int>& in, std::uint64_t T,
-                                     unsigned k) {
+typename Ints::Cross squared_delta(const StepDifferences<Int>& in, unsigned k) {
   using D = typename Ints::Difference;
-  using X = typename Ints::Cross;
-  D d[3][3];  // U, V, W at t, times 2^(k - E): 2^k d0 + T (d1 - d0)
+  D delta(0);
+  add_shifted(delta, narrowed<D>(in.delta), k);
+  typename Ints::Cross r(0);
+  add_product(r, delta, delta);
+  return r;
+}
+
+/// The differences at t = T 2^-k, times 2^(k - E): 2^k d0 + T (d1 - d0).
+template <class D, class Int>
+void differences_at(const StepDifferences<Int>& in, std::uint64_t T, unsigned k, D (&d)[3][3]) {
   for (int j = 0; j < 3; ++j)
     for (int c = 0; c < 3; ++c) {
       D v = narrowed<D>(in.step[j][c]);
@@ -157,6 +176,17 @@ typename Ints::Value face_like_value(const FaceLikeDifferences<Int>& in, std::ui
       add_shifted(v, narrowed<D>(in.d0[j][c]), k);
       d[j][c] = v;
     }
+}
+
+/// 2^(6(k - E)) g(t) at t = T 2^-k (T <= 2^k, i.e. t <= 1), g = (W.m)^2 - delta^2 |m|^2, from
+/// the differences (in a type that holds their values).
+template <class Ints, class Int>
+typename Ints::Value face_like_value(const StepDifferences<Int>& in, std::uint64_t T,
+                                     unsigned k) {
+  using D = typename Ints::Difference;
+  using X = typename Ints::Cross;
+  D d[3][3];
+  differences_at(in, T, k, d);
   X m[3] = {X(0), X(0), X(0)};
   for (int c = 0; c < 3; ++c) {
     const int i = (c + 1) % 3, j = (c + 2) % 3;
@@ -167,21 +197,45 @@ typename Ints::Value face_like_value(const FaceLikeDifferences<Int>& in, std::ui
   for (int c = 0; c < 3; ++c) add_product(wm, m[c], d[2][c]);
   typename Ints::Norm m2(0);
   for (int c = 0; c < 3; ++c) add_product(m2, m[c], m[c]);
-  D delta(0);
-  add_shifted(delta, narrowed<D>(in.delta), k);  // X_delta 2^k
-  X delta2(0);
-  add_product(delta2, delta, delta);
+  const X delta2 = squared_delta<Ints>(in, k);
   typename Ints::Value g(0);
   add_product(g, wm, wm);
   sub_product(g, delta2, m2);
   return g;
 }
 
+/// 2^(4(k - E)) c(t) at t = T 2^-k for a capsule's c = |W|^2 |E|^2 - (W.E)^2 - delta^2 |E|^2
+/// (differences from capsule_vertices).
+template <class Ints, class Int>
+typename Ints::Norm capsule_value(const StepDifferences<Int>& in, std::uint64_t T, unsigned k) {
+  using D = typename Ints::Difference;
+  using X = typename Ints::Cross;
+  D d[3][3];
+  differences_at(in, T, k, d);
+  X ww(0), ee(0), we(0);
+  for (int c = 0; c < 3; ++c) {
+    add_product(ww, d[0][c], d[0][c]);
+    add_product(ee, d[1][c], d[1][c]);
+    add_product(we, d[0][c], d[1][c]);
+  }
+  const X delta2 = squared_delta<Ints>(in, k);
+  typename Ints::Norm v(0);
+  add_product(v, ww, ee);
+  sub_product(v, we, we);
+  sub_product(v, delta2, ee);
+  return v;
+}
+
 /// The same from the query's integers.
 template <class Ints>
-typename Ints::Value face_like_value(const SeparationIntegers& q, const FaceLikeVertices& v,
+typename Ints::Value face_like_value(const SeparationIntegers& q, const DifferenceVertices& v,
                                      std::uint64_t T, unsigned k) {
-  return face_like_value<Ints>(face_like_differences<typename Ints::Difference>(q, v), T, k);
+  return face_like_value<Ints>(step_differences<typename Ints::Difference>(q, v), T, k);
+}
+template <class Ints>
+typename Ints::Norm capsule_value(const SeparationIntegers& q, const DifferenceVertices& v,
+                                  std::uint64_t T, unsigned k) {
+  return capsule_value<Ints>(step_differences<typename Ints::Difference>(q, v), T, k);
 }
 
 }  // namespace exactccd::exact

@@ -133,54 +133,84 @@ struct MakeEdgeEdge {
 namespace {
 
 /// f(Ints) for the staged integer types that the differences' bit bound selects:
-/// FixedInt widths up to kMaxFaceLikeDifferenceLimbs, GMP beyond (counted).
+/// FixedInt widths up to kMaxDifferenceLimbs, GMP beyond (counted).
 template <class F>
-auto with_face_like_integers(long difference_bits, F&& f) {
+auto with_stage_integers(long difference_bits, F&& f) {
   switch (exact::fixed_limbs_for(difference_bits)) {
-    case 1: return f(exact::FixedFaceLikeIntegers<1>{});
-    case 2: return f(exact::FixedFaceLikeIntegers<2>{});
-    case 3: return f(exact::FixedFaceLikeIntegers<3>{});
-    default: ++g_gmp_evaluations; return f(exact::GmpFaceLikeIntegers{});
+    case 1: return f(exact::FixedStageIntegers<1>{});
+    case 2: return f(exact::FixedStageIntegers<2>{});
+    case 3: return f(exact::FixedStageIntegers<3>{});
+    default: ++g_gmp_evaluations; return f(exact::GmpStageIntegers{});
   }
-  static_assert(exact::kMaxFaceLikeDifferenceLimbs == 3, "extend the cases above");
+  static_assert(exact::kMaxDifferenceLimbs == 3, "extend the cases above");
 }
 
 }  // namespace
 
-const exact::StoredFaceLikeDifferences* ExactSignsAtDoubles::fixed_differences(
-    const exact::FaceLikeVertices& v) const {
-  if (q_.bits + 2 > 64 * exact::kMaxFaceLikeDifferenceLimbs - 1) return nullptr;
+auto ExactSignsAtDoubles::vertex_face_kernel(int k) -> IntegerKernel {
+  if (k == 0) return {&exact::kVertexFaceRegion, false};
+  if (k == 7 || k == 11 || k == 15) return {&exact::kVertexFaceCapsules[(k - 7) / 4], true};
+  return {};
+}
+
+auto ExactSignsAtDoubles::edge_edge_kernel(int k) -> IntegerKernel {
+  if (k == 0) return {&exact::kEdgeEdgeRegion, false};
+  if (k == 11 || k == 14 || k == 17 || k == 20) return {&exact::kEdgeEdgeCapsules[(k - 11) / 3], true};
+  return {};
+}
+
+const exact::StoredStepDifferences* ExactSignsAtDoubles::fixed_differences(
+    const exact::DifferenceVertices& v) const {
+  if (q_.bits + 2 > 64 * exact::kMaxDifferenceLimbs - 1) return nullptr;
   if (fixed_differences_of_ != &v) {
     fixed_differences_.emplace(
-        exact::face_like_differences<exact::FixedInt<exact::kMaxFaceLikeDifferenceLimbs>>(q_, v));
+        exact::step_differences<exact::FixedInt<exact::kMaxDifferenceLimbs>>(q_, v));
     fixed_differences_of_ = &v;
   }
   return &*fixed_differences_;
 }
 
-template <class Ints>
-typename Ints::Value ExactSignsAtDoubles::face_like_value(const exact::FaceLikeVertices& v,
-                                                          std::uint64_t T, unsigned k) const {
+template <class Ints, class F, std::size_t N>
+auto ExactSignsAtDoubles::kernel_values(const IntegerKernel& kernel,
+                                        const std::uint64_t (&ts)[N], unsigned k,
+                                        F&& f) const {
+  auto each = [&](const auto& differences) {
+    std::array<exact::Approximation, N> out{};
+    int sign = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+      if (kernel.capsule) {
+        const auto v = exact::capsule_value<Ints>(differences, ts[i], k);
+        sign = exact::sign_of(v);
+        out[i] = exact::approximate(v);
+      } else {
+        const auto v = exact::face_like_value<Ints>(differences, ts[i], k);
+        sign = exact::sign_of(v);
+        out[i] = exact::approximate(v);
+      }
+    }
+    return f(sign, out);
+  };
   if constexpr (std::is_same_v<typename Ints::Difference, mpz_class>) {
-    return exact::face_like_value<Ints>(q_, v, T, k);
+    return each(exact::step_differences<mpz_class>(q_, *kernel.vertices));
   } else {
     // A fixed width was selected: B + 2 <= 191, so the stored differences exist.
-    return exact::face_like_value<Ints>(*fixed_differences(v), T, k);
+    return each(*fixed_differences(*kernel.vertices));
   }
 }
 
-int ExactSignsAtDoubles::face_like_sign(const exact::FaceLikeVertices& v, double t) const {
+int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) const {
   exact::DyadicTime d;
   exact::dyadic_time(t, &d);  // the callers pass t in [0, 1]
-  return with_face_like_integers(
-      exact::face_like_difference_bits(q_.bits, d.exponent), [&](auto ints) {
-        using Ints = decltype(ints);
-        return exact::sign_of(face_like_value<Ints>(v, d.numerator, d.exponent));
+  const std::uint64_t ts[1] = {d.numerator};
+  return with_stage_integers(
+      exact::separation_difference_bits(q_.bits, d.exponent), [&](auto ints) {
+        return kernel_values<decltype(ints)>(kernel, ts, d.exponent,
+                                             [](int sign, const auto&) { return sign; });
       });
 }
 
-double ExactSignsAtDoubles::face_like_secant(const exact::FaceLikeVertices& v, double lo,
-                                             double hi) const {
+double ExactSignsAtDoubles::kernel_secant(const IntegerKernel& kernel, double lo,
+                                          double hi) const {
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   exact::DyadicTime a, b;
   if (!exact::dyadic_time(lo, &a) || !exact::dyadic_time(hi, &b)) return kNone;
@@ -193,14 +223,15 @@ double ExactSignsAtDoubles::face_like_secant(const exact::FaceLikeVertices& v, d
     *out = d.numerator << up;
     return true;
   };
-  std::uint64_t ta = 0, tb = 0;
-  if (!numerator(a, &ta) || !numerator(b, &tb)) return kNone;
-  const auto [va, vb] = with_face_like_integers(
-      exact::face_like_difference_bits(q_.bits, k), [&](auto ints) {
-        using Ints = decltype(ints);
-        return std::pair{exact::approximate(face_like_value<Ints>(v, ta, k)),
-                         exact::approximate(face_like_value<Ints>(v, tb, k))};
+  std::uint64_t ts[2] = {0, 0};
+  if (!numerator(a, &ts[0]) || !numerator(b, &ts[1])) return kNone;
+  const auto values = with_stage_integers(
+      exact::separation_difference_bits(q_.bits, k), [&](auto ints) {
+        return kernel_values<decltype(ints)>(kernel, ts, k,
+                                             [](int, const auto& approx) { return approx; });
       });
+  const exact::Approximation& va = values[0];
+  const exact::Approximation& vb = values[1];
   const long e = std::max(va.exponent, vb.exponent);
   const double x = std::ldexp(va.mantissa, static_cast<int>(std::max(va.exponent - e, -2000L)));
   const double y = std::ldexp(vb.mantissa, static_cast<int>(std::max(vb.exponent - e, -2000L)));
@@ -209,22 +240,26 @@ double ExactSignsAtDoubles::face_like_secant(const exact::FaceLikeVertices& v, d
 }
 
 int ExactSignsAtDoubles::vertex_face_sign(int k, double t) const {
-  if (k == 0 && t >= 0 && t <= 1) return face_like_sign(exact::kVertexFaceRegion, t);
+  const IntegerKernel kernel = vertex_face_kernel(k);
+  if (kernel.vertices && t >= 0 && t <= 1) return kernel_sign(kernel, t);
   return sgn(value(MakeVertexFace{}, k, t, -ulp_exponent(t)));
 }
 
 int ExactSignsAtDoubles::edge_edge_sign(int k, double t) const {
-  if (k == 0 && t >= 0 && t <= 1) return face_like_sign(exact::kEdgeEdgeRegion, t);
+  const IntegerKernel kernel = edge_edge_kernel(k);
+  if (kernel.vertices && t >= 0 && t <= 1) return kernel_sign(kernel, t);
   return sgn(value(MakeEdgeEdge{}, k, t, -ulp_exponent(t)));
 }
 
 double ExactSignsAtDoubles::vertex_face_secant(int k, double lo, double hi) const {
-  if (k == 0) return face_like_secant(exact::kVertexFaceRegion, lo, hi);
+  const IntegerKernel kernel = vertex_face_kernel(k);
+  if (kernel.vertices) return kernel_secant(kernel, lo, hi);
   return secant(MakeVertexFace{}, k, lo, hi);
 }
 
 double ExactSignsAtDoubles::edge_edge_secant(int k, double lo, double hi) const {
-  if (k == 0) return face_like_secant(exact::kEdgeEdgeRegion, lo, hi);
+  const IntegerKernel kernel = edge_edge_kernel(k);
+  if (kernel.vertices) return kernel_secant(kernel, lo, hi);
   return secant(MakeEdgeEdge{}, k, lo, hi);
 }
 

@@ -2,10 +2,10 @@
 // arithmetic: the query and delta scaled by one power of two to integers, the positions at
 // t = m 2^e computed exactly as integers (scaled by 2^-e), and the one polynomial asked for
 // evaluated on them. Every region polynomial is homogeneous in the coordinates and delta, so
-// the common positive scale changes no sign. Polynomial 0 (the face or interior region, the one
-// the search tightens most) runs in fixed-width integers chosen from proven bounds
-// (exact/separation_integers.hpp: no allocation); the others, and polynomial 0 beyond the
-// widest fixed width, in GMP (allocates). PROOF: proofs/min_separation.md#interval-search
+// the common positive scale changes no sign. Polynomial 0 (the face or interior region) and
+// the capsules' sides, the ones the search tightens, run in fixed-width integers chosen from
+// proven bounds (exact/separation_integers.hpp: no allocation); the others, and these beyond
+// the widest fixed width, in GMP (allocates). PROOF: proofs/min_separation.md#interval-search
 // PROOF: proofs/min_separation.md#fixed-width-signs
 #pragma once
 
@@ -55,20 +55,28 @@ class ExactSignsAtDoubles {
   mpz_class value(const Make& make, int k, double t, long shift) const;
   template <class Make>
   double secant(const Make& make, int k, double lo, double hi) const;
-  int face_like_sign(const exact::FaceLikeVertices& v, double t) const;
-  double face_like_secant(const exact::FaceLikeVertices& v, double lo, double hi) const;
-
-  /// The differences of polynomial 0 in FixedInt (formed when first needed; none when the
-  /// coordinates need more than the widest fixed width).
-  const exact::StoredFaceLikeDifferences* fixed_differences(const exact::FaceLikeVertices& v) const;
-  template <class Ints>
-  typename Ints::Value face_like_value(const exact::FaceLikeVertices& v, std::uint64_t T,
-                                       unsigned k) const;
+  /// A polynomial computed from differences in fixed-width integers (proofs/min_separation.md
+  /// #fixed-width-signs): the face-like polynomial 0 or a capsule's side; none for the others.
+  struct IntegerKernel {
+    const exact::DifferenceVertices* vertices = nullptr;
+    bool capsule = false;
+  };
+  static IntegerKernel vertex_face_kernel(int k);
+  static IntegerKernel edge_edge_kernel(int k);
+  int kernel_sign(const IntegerKernel& kernel, double t) const;
+  double kernel_secant(const IntegerKernel& kernel, double lo, double hi) const;
+  /// The differences of a kernel in FixedInt (formed when first needed, the last kernel's
+  /// kept; none when the coordinates need more than the widest fixed width).
+  const exact::StoredStepDifferences* fixed_differences(const exact::DifferenceVertices& v) const;
+  /// f(the kernel's value at T 2^-k, at each T of ts) in the integer types Ints.
+  template <class Ints, class F, std::size_t N>
+  auto kernel_values(const IntegerKernel& kernel, const std::uint64_t (&ts)[N], unsigned k,
+                     F&& f) const;
 
   exact::SeparationIntegers q_;
   mutable std::optional<Gmp> gmp_;
-  mutable std::optional<exact::StoredFaceLikeDifferences> fixed_differences_;
-  mutable const exact::FaceLikeVertices* fixed_differences_of_ = nullptr;
+  mutable std::optional<exact::StoredStepDifferences> fixed_differences_;
+  mutable const exact::DifferenceVertices* fixed_differences_of_ = nullptr;
 };
 
 }  // namespace exactccd::filters::separation

@@ -1,8 +1,8 @@
 // The fixed-width exact values at double times of the minimum-separation region polynomial 0
-// (exact/separation_integers.hpp) against GMP and the rationals:
+// and of the capsules' sides (exact/separation_integers.hpp) against GMP and the rationals:
 //  - every FixedInt width at least the one its bound selects gives the same integer as the same
-//    kernel in GMP, and that integer is 2^(6(k-E)) times the polynomial of
-//    core/predicates/separation.hpp evaluated over the rationals at the same time;
+//    kernel in GMP, and that integer is 2^(d(k-E)) times the polynomial of
+//    core/predicates/separation.hpp (degree d) evaluated over the rationals at the same time;
 //  - on random queries of every coordinate spread (differences of 1, 2 and 3 limbs, and GMP),
 //    on extreme ones (coordinates at the top of their range, many sign patterns) whose bit
 //    bound sits at each width's limit and just beyond, scaled by 2^+-500, at times near 0 and 1;
@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
 
 #include "core/predicates/separation.hpp"
 #include "exact/integer_arithmetic.hpp"
@@ -27,7 +28,7 @@
 namespace exactccd {
 namespace {
 
-using exact::FaceLikeVertices;
+using exact::DifferenceVertices;
 using exact::SeparationIntegers;
 using Vertices = std::array<Eigen::Vector3d, 4>;
 
@@ -36,8 +37,8 @@ struct Case {
   double delta = 0;
 };
 
-/// g(t) of polynomial 0 over the rationals, from the separation predicates.
-mpq_class rational_value(const Case& c, bool vertex_face, double t) {
+/// Region polynomial `poly` at t over the rationals, from the separation predicates.
+mpq_class rational_value(const Case& c, bool vertex_face, int poly, double t) {
   using P = predicates::FixedPoly<mpq_class, 0>;
   using Point = predicates::Vec3<P>;
   const mpq_class tq(t);
@@ -52,9 +53,9 @@ mpq_class rational_value(const Case& c, bool vertex_face, double t) {
   mpq_class v;
   auto take = [&v](const auto& g) { v = g.c[0]; };
   if (vertex_face)
-    predicates::vertex_face_separation(x[0], x[1], x[2], x[3], d2).for_each_polynomial(take, 0);
+    predicates::vertex_face_separation(x[0], x[1], x[2], x[3], d2).for_each_polynomial(take, poly);
   else
-    predicates::edge_edge_separation(x[0], x[1], x[2], x[3], d2).for_each_polynomial(take, 0);
+    predicates::edge_edge_separation(x[0], x[1], x[2], x[3], d2).for_each_polynomial(take, poly);
   return v;
 }
 
@@ -63,10 +64,26 @@ SeparationIntegers integers_of(const Case& c) {
                                     {&c.t1[0], &c.t1[1], &c.t1[2], &c.t1[3]}, c.delta);
 }
 
-template <int Wd>
-mpz_class fixed_value(const SeparationIntegers& q, const FaceLikeVertices& v, std::uint64_t T,
-                      unsigned k) {
-  return exact::to_mpz(exact::face_like_value<exact::FixedFaceLikeIntegers<Wd>>(q, v, T, k));
+/// A kernel: the polynomial it computes and its vertices.
+struct Kernel {
+  bool vertex_face;
+  int poly;
+  const DifferenceVertices* vertices;
+  bool capsule;
+};
+
+const Kernel kKernels[] = {
+    {true, 0, &exact::kVertexFaceRegion, false},  {true, 7, &exact::kVertexFaceCapsules[0], true},
+    {true, 11, &exact::kVertexFaceCapsules[1], true}, {true, 15, &exact::kVertexFaceCapsules[2], true},
+    {false, 0, &exact::kEdgeEdgeRegion, false},   {false, 11, &exact::kEdgeEdgeCapsules[0], true},
+    {false, 14, &exact::kEdgeEdgeCapsules[1], true}, {false, 17, &exact::kEdgeEdgeCapsules[2], true},
+    {false, 20, &exact::kEdgeEdgeCapsules[3], true}};
+
+template <class Ints>
+mpz_class kernel_value(const Kernel& kernel, const SeparationIntegers& q, std::uint64_t T,
+                       unsigned k) {
+  if (kernel.capsule) return exact::to_mpz(exact::capsule_value<Ints>(q, *kernel.vertices, T, k));
+  return exact::to_mpz(exact::face_like_value<Ints>(q, *kernel.vertices, T, k));
 }
 
 /// Checks the case at t in every width that its bound admits; returns the width selected
@@ -75,35 +92,37 @@ int check(const Case& c, double t, const char* what) {
   exact::DyadicTime d;
   EXPECT_TRUE(exact::dyadic_time(t, &d));
   const SeparationIntegers q = integers_of(c);
-  const int selected = exact::fixed_limbs_for(exact::face_like_difference_bits(q.bits, d.exponent));
-  for (const bool vf : {true, false}) {
-    const FaceLikeVertices& v = vf ? exact::kVertexFaceRegion : exact::kEdgeEdgeRegion;
-    const mpz_class gmp =
-        exact::face_like_value<exact::GmpFaceLikeIntegers>(q, v, d.numerator, d.exponent);
-    // The reference: 2^(6(k - E)) g(t) over the rationals.
-    mpq_class expected = rational_value(c, vf, t);
-    const long scale = 6L * (static_cast<long>(d.exponent) - q.common_exponent);
+  const int selected = exact::fixed_limbs_for(exact::separation_difference_bits(q.bits, d.exponent));
+  for (const Kernel& kernel : kKernels) {
+    const std::string label = std::string(what) + (kernel.vertex_face ? " vertex-face " : " edge-edge ") +
+                              std::to_string(kernel.poly);
+    const std::uint64_t T = d.numerator;
+    const unsigned k = d.exponent;
+    const mpz_class gmp = kernel_value<exact::GmpStageIntegers>(kernel, q, T, k);
+    // The reference: 2^(deg (k - E)) g(t) over the rationals.
+    mpq_class expected = rational_value(c, kernel.vertex_face, kernel.poly, t);
+    const long scale = (kernel.capsule ? 4L : 6L) * (static_cast<long>(k) - q.common_exponent);
     if (scale >= 0)
       mpq_mul_2exp(expected.get_mpq_t(), expected.get_mpq_t(), static_cast<mp_bitcnt_t>(scale));
     else
       mpq_div_2exp(expected.get_mpq_t(), expected.get_mpq_t(), static_cast<mp_bitcnt_t>(-scale));
-    EXPECT_EQ(mpq_class(gmp), expected) << what << (vf ? " vertex-face" : " edge-edge") << " t "
-                                        << t;
+    EXPECT_EQ(mpq_class(gmp), expected) << label << " t " << t;
     if (selected >= 1 && selected <= 1)
-      EXPECT_EQ(fixed_value<1>(q, v, d.numerator, d.exponent), gmp) << what << " width 1";
+      EXPECT_EQ(kernel_value<exact::FixedStageIntegers<1>>(kernel, q, T, k), gmp) << label << " width 1";
     if (selected >= 1 && selected <= 2)
-      EXPECT_EQ(fixed_value<2>(q, v, d.numerator, d.exponent), gmp) << what << " width 2";
+      EXPECT_EQ(kernel_value<exact::FixedStageIntegers<2>>(kernel, q, T, k), gmp) << label << " width 2";
     if (selected >= 1 && selected <= 3)
-      EXPECT_EQ(fixed_value<3>(q, v, d.numerator, d.exponent), gmp) << what << " width 3";
+      EXPECT_EQ(kernel_value<exact::FixedStageIntegers<3>>(kernel, q, T, k), gmp) << label << " width 3";
     // The filters' interface: the same sign, in GMP only beyond the fixed widths.
     const filters::separation::ExactSignsAtDoubles signs(
         {&c.t0[0], &c.t0[1], &c.t0[2], &c.t0[3]}, {&c.t1[0], &c.t1[1], &c.t1[2], &c.t1[3]},
         c.delta);
     const std::uint64_t before = filters::separation::gmp_evaluations_in_this_thread();
-    const int s = vf ? signs.vertex_face_sign(0, t) : signs.edge_edge_sign(0, t);
-    EXPECT_EQ(s, sgn(expected)) << what;
+    const int s = kernel.vertex_face ? signs.vertex_face_sign(kernel.poly, t)
+                                     : signs.edge_edge_sign(kernel.poly, t);
+    EXPECT_EQ(s, sgn(expected)) << label;
     const bool used_gmp = filters::separation::gmp_evaluations_in_this_thread() != before;
-    EXPECT_EQ(used_gmp, selected < 1 || selected > exact::kMaxFaceLikeDifferenceLimbs) << what;
+    EXPECT_EQ(used_gmp, selected < 1 || selected > exact::kMaxDifferenceLimbs) << label;
   }
   return selected;
 }
