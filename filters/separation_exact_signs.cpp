@@ -198,45 +198,84 @@ auto ExactSignsAtDoubles::kernel_values(const IntegerKernel& kernel,
   }
 }
 
-int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) const {
+auto ExactSignsAtDoubles::kernel_value_at(const IntegerKernel& kernel, double t) const
+    -> KernelValue {
+  if (last_.vertices == kernel.vertices && last_.t == t) return last_.value;
   exact::DyadicTime d;
   exact::dyadic_time(t, &d);  // the callers pass t in [0, 1]
   const std::uint64_t ts[1] = {d.numerator};
-  return with_stage_integers(
+  const KernelValue v = with_stage_integers(
       exact::separation_difference_bits(q_.bits, d.exponent), [&](auto ints) {
         return kernel_values<decltype(ints)>(kernel, ts, d.exponent,
-                                             [](int sign, const auto&) { return sign; });
+                                             [&](int sign, const auto& approx) {
+                                               return KernelValue{sign, approx[0], d.exponent};
+                                             });
       });
+  last_ = {kernel.vertices, t, v};
+  return v;
 }
 
-double ExactSignsAtDoubles::kernel_secant(const IntegerKernel& kernel, double lo,
+int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) const {
+  return kernel_value_at(kernel, t).sign;
+}
+
+namespace {
+
+using Vec = std::array<double, 3>;
+double dot3(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec cross3(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec plus3(const Vec& a, const Vec& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+}  // namespace
+
+double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo,
                                           double hi) const {
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-  exact::DyadicTime a, b;
-  if (!exact::dyadic_time(lo, &a) || !exact::dyadic_time(hi, &b)) return kNone;
-  // One scale for both ends (the finer one's), so that the values are comparable; a time whose
-  // numerator would not fit 64 bits at that scale gives no guess.
-  const unsigned k = std::max(a.exponent, b.exponent);
-  auto numerator = [k](const exact::DyadicTime& d, std::uint64_t* out) {
-    const unsigned up = k - d.exponent;
-    if (d.numerator != 0 && (up >= 64 || (d.numerator >> (63 - up)) != 0)) return false;
-    *out = d.numerator << up;
-    return true;
+  if (!(lo >= 0 && lo <= 1)) return kNone;
+  const KernelValue v = kernel_value_at(kernel, lo);
+  if (v.sign == 0) return kNone;
+  // Plain arithmetic from here (a guess): the coordinates divided by 2^(E + L) (magnitudes at
+  // most 1), the differences and their changes over the step at lo, and g'(lo) in those units.
+  const int shift = q_.common_exponent + q_.bits;
+  auto coordinate = [&](int end, int vertex, int axis) {
+    const exact::Dyadic& x = q_.coords[end][vertex][axis];
+    return std::ldexp(static_cast<double>(x.mantissa), x.exponent - shift);
   };
-  std::uint64_t ts[2] = {0, 0};
-  if (!numerator(a, &ts[0]) || !numerator(b, &ts[1])) return kNone;
-  const auto values = with_stage_integers(
-      exact::separation_difference_bits(q_.bits, k), [&](auto ints) {
-        return kernel_values<decltype(ints)>(kernel, ts, k,
-                                             [](int, const auto& approx) { return approx; });
-      });
-  const exact::Approximation& va = values[0];
-  const exact::Approximation& vb = values[1];
-  const long e = std::max(va.exponent, vb.exponent);
-  const double x = std::ldexp(va.mantissa, static_cast<int>(std::max(va.exponent - e, -2000L)));
-  const double y = std::ldexp(vb.mantissa, static_cast<int>(std::max(vb.exponent - e, -2000L)));
-  if (x == y) return kNone;
-  return lo + (hi - lo) * (x / (x - y));
+  Vec d[3], step[3];
+  for (int j = 0; j < 3; ++j)
+    for (int c = 0; c < 3; ++c) {
+      const int o = kernel.vertices->origin[j], e = kernel.vertices->end[j];
+      const double d0 = coordinate(0, e, c) - coordinate(0, o, c);
+      step[j][c] = (coordinate(1, e, c) - coordinate(1, o, c)) - d0;
+      d[j][c] = d0 + lo * step[j][c];
+    }
+  const exact::Dyadic& dx = q_.delta;
+  const double delta = std::ldexp(static_cast<double>(dx.mantissa), dx.exponent - shift);
+  const double delta2 = delta * delta;
+  double slope = 0;
+  int degree = 0;
+  if (kernel.capsule) {  // c = (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
+    const Vec &w = d[0], &e = d[1], &w1 = step[0], &e1 = step[1];
+    const double ee = dot3(e, e), we = dot3(w, e);
+    slope = 2 * dot3(w, w1) * ee + 2 * dot3(w, w) * dot3(e, e1) -
+            2 * we * (dot3(w1, e) + dot3(w, e1)) - 2 * delta2 * dot3(e, e1);
+    degree = 4;
+  } else {  // g = (W.m)^2 - delta^2 (m.m), m = U x V
+    const Vec m = cross3(d[0], d[1]);
+    const Vec m1 = plus3(cross3(step[0], d[1]), cross3(d[0], step[1]));
+    const double wm = dot3(d[2], m);
+    slope = 2 * wm * (dot3(step[2], m) + dot3(d[2], m1)) - 2 * delta2 * dot3(m, m1);
+    degree = 6;
+  }
+  // g(lo) in the same units: the integer value is 2^(d(k - E)) g(lo), the unit 2^(E + L).
+  const double value =
+      std::ldexp(v.value.mantissa,
+                 static_cast<int>(std::max(-4000L, std::min(4000L, v.value.exponent -
+                                                                        degree * (static_cast<long>(v.k) + q_.bits)))));
+  const double guess = lo - value / slope;
+  return std::isfinite(guess) && guess > lo && guess < hi ? guess : kNone;
 }
 
 int ExactSignsAtDoubles::vertex_face_sign(int k, double t) const {
@@ -253,13 +292,13 @@ int ExactSignsAtDoubles::edge_edge_sign(int k, double t) const {
 
 double ExactSignsAtDoubles::vertex_face_secant(int k, double lo, double hi) const {
   const IntegerKernel kernel = vertex_face_kernel(k);
-  if (kernel.vertices) return kernel_secant(kernel, lo, hi);
+  if (kernel.vertices) return kernel_newton(kernel, lo, hi);
   return secant(MakeVertexFace{}, k, lo, hi);
 }
 
 double ExactSignsAtDoubles::edge_edge_secant(int k, double lo, double hi) const {
   const IntegerKernel kernel = edge_edge_kernel(k);
-  if (kernel.vertices) return kernel_secant(kernel, lo, hi);
+  if (kernel.vertices) return kernel_newton(kernel, lo, hi);
   return secant(MakeEdgeEdge{}, k, lo, hi);
 }
 

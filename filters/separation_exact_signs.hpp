@@ -36,8 +36,9 @@ class ExactSignsAtDoubles {
   int edge_edge_sign(int k, double t) const;
 
   /// A guess, in plain arithmetic and never a decision, of the root of polynomial k in
-  /// (lo, hi), 0 < lo < hi: the secant through its exact values at lo and hi. NaN when the
-  /// values do not differ.
+  /// (lo, hi), 0 < lo < hi: for polynomial 0 and the capsules a Newton step from lo with the
+  /// exact value there; for the others the secant through its exact values at lo and hi. NaN
+  /// when there is none in (lo, hi) (the others: when the values do not differ).
   double vertex_face_secant(int k, double lo, double hi) const;
   double edge_edge_secant(int k, double lo, double hi) const;
 
@@ -63,8 +64,18 @@ class ExactSignsAtDoubles {
   };
   static IntegerKernel vertex_face_kernel(int k);
   static IntegerKernel edge_edge_kernel(int k);
+  /// A kernel's exact sign at t and its value's leading bits (the integer value, 2^(d(k - E))
+  /// times the polynomial of degree d at t = T 2^-k).
+  struct KernelValue {
+    int sign = 0;
+    exact::Approximation value;
+    unsigned k = 0;
+  };
+  KernelValue kernel_value_at(const IntegerKernel& kernel, double t) const;
   int kernel_sign(const IntegerKernel& kernel, double t) const;
-  double kernel_secant(const IntegerKernel& kernel, double lo, double hi) const;
+  /// A Newton step from lo: g(lo) exact (its leading bits), g'(lo) in plain arithmetic; NaN
+  /// when it leaves (lo, hi).
+  double kernel_newton(const IntegerKernel& kernel, double lo, double hi) const;
   /// The differences of a kernel in FixedInt (formed when first needed, the last kernel's
   /// kept; none when the coordinates need more than the widest fixed width).
   const exact::StoredStepDifferences* fixed_differences(const exact::DifferenceVertices& v) const;
@@ -77,6 +88,13 @@ class ExactSignsAtDoubles {
   mutable std::optional<Gmp> gmp_;
   mutable std::optional<exact::StoredStepDifferences> fixed_differences_;
   mutable const exact::DifferenceVertices* fixed_differences_of_ = nullptr;
+  /// The last kernel value computed (a Newton step from the last probe reuses it).
+  struct LastValue {
+    const exact::DifferenceVertices* vertices = nullptr;
+    double t = 0;
+    KernelValue value;
+  };
+  mutable LastValue last_;
 };
 
 }  // namespace exactccd::filters::separation
