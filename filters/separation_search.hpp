@@ -325,8 +325,8 @@ class FirstWithinSearch {
   /// or hi to t. The probes: secant steps through the middles of g's interval values (at most
   /// kGuidedSteps, the first slope from g''s enclosure), else bisection in the order of
   /// doubles; where the interval cannot tell, two probes about its uncertainty away on either
-  /// side, then exact signs at doubles (a secant through exact values, and its neighbour on r's
-  /// side), to the tightest pair of doubles (or toi_width).
+  /// side, then exact signs at doubles (at a point guessed from exact values, and its
+  /// neighbour on r's side), to the tightest pair of doubles (or toi_width).
   /// PROOF: proofs/min_separation.md#interval-search
   Step tighten(int k, double lo, double hi, int s_lo) {
     constexpr int kGuidedSteps = 16;
@@ -381,15 +381,15 @@ class FirstWithinSearch {
         }
         if (root) break;
         exact_phase = true;
-        if (!predicates::middle_double(lo, hi, &mid)) break;
+        continue;
       }
-    // Near r the interval cannot tell: a point from the secant through g's exact values at
-      // the ends (a guess: its exact sign decides), and its neighbour on r's side, so that a
-      // good guess closes the bracket to adjacent doubles at once.
+      // Near r the interval cannot tell: a point guessed from g's exact values (exact_.secant;
+      // its exact sign decides) and its neighbour on r's side, so that a good guess closes the
+      // bracket to adjacent doubles at once.
       exact_used_ = true;
       if (lo > 0) {
-        const double guess = exact_.secant(k, lo, hi);
-        if (guess > lo && guess < hi) mid = guess;
+        const double exact_guess = exact_.secant(k, lo, hi);
+        if (exact_guess > lo && exact_guess < hi) mid = exact_guess;
       }
       const int s = exact_.sign(k, mid);
       if (s == 0) {
