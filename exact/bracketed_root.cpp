@@ -3,6 +3,8 @@
 #include "exact/bracketed_root.hpp"
 
 #include <algorithm>
+#include <climits>
+#include <cmath>
 #include <utility>
 #include <vector>
 #include <cstdint>
@@ -163,6 +165,56 @@ std::optional<std::vector<DyadicBracket>> split_at_critical_points(const MpzPoly
   return std::nullopt;
 }
 
+namespace {
+
+/// A double strictly inside (lo, hi) near a critical point of p (a root of p', or the real
+/// part of its complex pair) that lies in [lo, hi], from p's rounded coefficients; false when
+/// there is none. Two roots closer than the interval (or a complex pair near it) straddle that
+/// point, which halving reaches one bit of their distance per step. Guidance only: any double
+/// inside is a correct split (Lemma 10).
+bool critical_split_point(const SmallPolynomial& p, double lo, double hi, double* m) {
+  if (p.degree() < 2) return false;
+  Approximation c[4];
+  p.approximate_coefficients(c);
+  long scale = LONG_MIN;
+  for (const Approximation& ci : c)
+    if (ci.mantissa != 0) scale = std::max(scale, ci.exponent);
+  double a[4];
+  for (int i = 0; i < 4; ++i)  // p ~ 2^scale sum a_i t^i; tiny terms may vanish
+    a[i] = c[i].mantissa == 0 ? 0.0
+                              : std::ldexp(c[i].mantissa, static_cast<int>(std::max(
+                                                               -1100L, c[i].exponent - scale)));
+  const double A = 3 * a[3], B = 2 * a[2], C = a[1];  // p' ~ A t^2 + B t + C
+  double candidates[2];
+  int count = 0;
+  if (A == 0) {
+    if (B != 0) candidates[count++] = -C / B;
+  } else {
+    const double discriminant = B * B - 4 * A * C;
+    if (!(discriminant > 0)) {
+      candidates[count++] = -B / (2 * A);  // a double critical point, or a complex pair's
+    } else {
+      const double q = -0.5 * (B + std::copysign(std::sqrt(discriminant), B));
+      candidates[count++] = q / A;
+      if (q != 0) candidates[count++] = C / q;
+    }
+  }
+  const double middle = lo + (hi - lo) / 2;
+  bool found = false;
+  for (int i = 0; i < count; ++i) {
+    double x = candidates[i];
+    if (!(x >= lo && x <= hi)) continue;  // NaN included
+    if (x == lo) x = std::nextafter(lo, hi);
+    if (x == hi) x = std::nextafter(hi, lo);
+    if (!(lo < x && x < hi)) continue;
+    if (!found || std::fabs(x - middle) < std::fabs(*m - middle)) *m = x;
+    found = true;
+  }
+  return found;
+}
+
+}  // namespace
+
 bool split_point(double lo, double hi, double* m) {
   double middle;  // of the doubles strictly inside, in bit order
   if (!predicates::middle_double(lo, hi, &middle)) return false;
@@ -193,12 +245,19 @@ std::pair<double, double> BracketedRoot::enclosure(double width) const {
 
 int BracketedRoot::sign_of(const SmallPolynomial& g) {
   if (g.is_zero()) return 0;
-  if (fine_) return sign_in_dyadic_bracket(to_mpz_polynomial(*p_), to_mpz_polynomial(g), *fine_);
+  int sign = 0;
+  if (fine_) {
+    if (g.sign_at_roots_of(*p_, &sign)) return sign;
+    return sign_in_dyadic_bracket(to_mpz_polynomial(*p_), to_mpz_polynomial(g), *fine_);
+  }
   for (int step = 0;; ++step) {
     if (is_exact()) return g.sign_at(lo_);
     int s[4];
     const int n = g.bernstein_signs(lo_, hi_, s);
     if (one_strict_sign(s, n)) return s[0];  // g has that sign on all of [lo, hi]
+    // Degenerate contacts: g is often a multiple of p (h = 0), which no bracket can decide.
+    // PROOF: proofs/exact_ccd.md#constant-remainder
+    if (step == 0 && g.sign_at_roots_of(*p_, &sign)) return sign;
     if (step < 2) {
       if (!refine()) break;
     } else if (step == 2) {  // straight to adjacent doubles: Newton-guided, a few signs
@@ -219,9 +278,21 @@ RootIterator::RootIterator(const SmallPolynomial& p, double t_max,
                            SmallPolynomial* square_free_storage)
     : p_(&p), storage_(square_free_storage) {
   if (p.degree() < 1) return;  // constants: no root (the zero polynomial is not passed)
-  if (p.sign_at(t_max) == 0) push({t_max, t_max, Kind::point});
+  if (p.degree() == 2) {
+    // Descartes' rule alone would bisect down to one ulp around a double root, or around the
+    // minimum of a quadratic without real roots that nearly touches zero.
+    // PROOF: proofs/exact_ccd.md#quadratic-discriminant
+    const int discriminant = p.quadratic_discriminant_sign();
+    if (discriminant < 0) return;  // no real root
+    if (discriminant == 0) {       // the same root, simple, as the only root of a line
+      square_free_ = true;
+      *storage_ = p.double_root_factor();
+      p_ = storage_;
+    }
+  }
+  if (p_->sign_at(t_max) == 0) push({t_max, t_max, Kind::point});
   push({0.0, t_max, Kind::interval});
-  if (p.sign_at(0.0) == 0) push({0.0, 0.0, Kind::point});
+  if (p_->sign_at(0.0) == 0) push({0.0, 0.0, Kind::point});
 }
 
 std::optional<BracketedRoot> RootIterator::next() {
@@ -249,6 +320,9 @@ std::optional<BracketedRoot> RootIterator::next() {
       isolate_beyond_doubles(it);
       continue;
     }
+    // Near a critical point first, a few times per iterator (a poor guess peels off little).
+    if (guided_splits_ < kMaxGuidedSplits && critical_split_point(*p_, it.lo, it.hi, &m))
+      ++guided_splits_;
     const int sm = p_->sign_at(m);
     push({m, it.hi, Kind::interval});
     if (sm == 0) push({m, m, Kind::point});

@@ -72,6 +72,7 @@ class BracketedRoot {
 
   /// The exact sign of g(r); may narrow the bracket. Throws UnresolvedAtDoubles past the
   /// step cap. PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
+  /// PROOF: proofs/exact_ccd.md#constant-remainder
   int sign_of(const SmallPolynomial& g);
 
  private:
@@ -86,13 +87,16 @@ class BracketedRoot {
 bool earlier(BracketedRoot& r, BracketedRoot& b);
 
 /// The roots of a non-zero polynomial p in [0, t_max] (t_max a double in (0, 1]), in
-/// ascending order, each once. Descartes' rule on Bernstein coefficients over intervals with
-/// double ends: no sign variation, no root inside; one, exactly one (simple); more, split at a
-/// double. An interval without a double inside that still shows two variations holds a
-/// multiple root or several roots within one ulp: p is replaced by its square-free part (the
-/// same roots, simple) in *square_free_storage, and if that is not enough the interval's roots
-/// are isolated on dyadic rationals (GMP). Both p and the storage must outlive the roots.
+/// ascending order, each once. A quadratic is first screened by its discriminant (negative: no
+/// root; zero: the double root's line instead of p). Descartes' rule on Bernstein coefficients
+/// over intervals with double ends: no sign variation, no root inside; one, exactly one
+/// (simple); more, split at a double (the first few times near a critical point of p, from its
+/// rounded coefficients). An interval without a double inside that still shows two variations
+/// holds a multiple root or several roots within one ulp: p is replaced by its square-free part
+/// (the same roots, simple) in *square_free_storage, and if that is not enough the interval's
+/// roots are isolated on dyadic rationals (GMP). Both p and the storage must outlive the roots.
 /// PROOF: proofs/exact_ccd.md#descartes-at-doubles
+/// PROOF: proofs/exact_ccd.md#quadratic-discriminant
 class RootIterator {
  public:
   RootIterator(const SmallPolynomial& p, double t_max, SmallPolynomial* square_free_storage);
@@ -109,6 +113,9 @@ class RootIterator {
   void isolate_beyond_doubles(const Item& it);
 
   static constexpr int kMaxItems = 192;
+  /// Splits at a double near a critical point of p before plain halving (guidance only).
+  static constexpr int kMaxGuidedSplits = 8;
+  int guided_splits_ = 0;
   const SmallPolynomial* p_;
   SmallPolynomial* storage_;
   bool square_free_ = false;

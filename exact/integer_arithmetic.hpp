@@ -122,11 +122,20 @@ inline long bit_length(const mpz_class& x) {
 template <int N>
 mpz_class to_mpz(const FixedInt<N>& x) {
   const FixedInt<N> m = x.magnitude();
-  std::uint64_t limbs[N];
-  for (int i = 0; i < N; ++i) limbs[i] = m.limb(i);
+  int n = N;  // significant limbs: the wide stored coefficients are mostly leading zeros
+  while (n > 0 && m.limb(n - 1) == 0) --n;
   mpz_class z;
-  mpz_import(z.get_mpz_t(), N, -1, sizeof limbs[0], 0, 0, limbs);
-  if (x.is_negative()) z = -z;
+  if (n == 0) return z;
+  if constexpr (GMP_NUMB_BITS == 64 && sizeof(mp_limb_t) == 8) {
+    mp_limb_t* d = mpz_limbs_write(z.get_mpz_t(), n);
+    for (int i = 0; i < n; ++i) d[i] = m.limb(i);
+    mpz_limbs_finish(z.get_mpz_t(), x.is_negative() ? -n : n);
+  } else {
+    std::uint64_t limbs[N];
+    for (int i = 0; i < n; ++i) limbs[i] = m.limb(i);
+    mpz_import(z.get_mpz_t(), static_cast<std::size_t>(n), -1, sizeof limbs[0], 0, 0, limbs);
+    if (x.is_negative()) z = -z;
+  }
   return z;
 }
 

@@ -9,6 +9,31 @@ Polynomial::Polynomial(std::vector<Rational> c) : c_(std::move(c)) { trim(); }
 
 void Polynomial::trim() {
   while (!c_.empty() && sgn(c_.back()) == 0) c_.pop_back();
+  integer_ = true;
+  for (const Rational& x : c_) integer_ = integer_ && x.get_den() == 1;
+}
+
+// PROOF: proofs/exact_ccd.md#lemma-root-isolation (integer signs)
+int Polynomial::sign_at(const Rational& t) const {
+  if (!integer_ || c_.size() <= 1) return sgn(evaluate(t));
+  // t = a / b, b > 0: b^d p(t) = sum_i c_i a^i b^(d - i) (Horner in a, powers of b), exact
+  // integers whose sign is p(t)'s. A power-of-two b (a double t) is a shift.
+  const mpz_class& a = t.get_num();
+  const mpz_class& b = t.get_den();
+  const std::size_t shift = mpz_scan1(b.get_mpz_t(), 0);
+  const bool dyadic = mpz_sizeinbase(b.get_mpz_t(), 2) == shift + 1;
+  mpz_class r = c_.back().get_num(), b_power = 1, term;
+  for (std::size_t i = c_.size() - 1; i-- > 0;) {
+    r *= a;
+    if (dyadic) {
+      mpz_mul_2exp(term.get_mpz_t(), c_[i].get_num_mpz_t(), shift * (c_.size() - 1 - i));
+    } else {
+      b_power *= b;
+      term = c_[i].get_num() * b_power;
+    }
+    r += term;
+  }
+  return sgn(r);
 }
 
 Rational Polynomial::evaluate(const Rational& t) const {
@@ -81,6 +106,25 @@ Polynomial gcd(Polynomial a, Polynomial b) {
     b = r.monic();  // keeps coefficient growth in check
   }
   return a.monic();
+}
+
+Polynomial primitive_part(const Polynomial& p) {
+  if (p.is_zero()) return p;
+  mpz_class lcm = 1, content = 0;
+  for (const Rational& x : p.coefficients()) mpz_lcm(lcm.get_mpz_t(), lcm.get_mpz_t(), x.get_den_mpz_t());
+  std::vector<mpz_class> n;
+  n.reserve(p.coefficients().size());
+  for (const Rational& x : p.coefficients()) {
+    n.push_back(x.get_num() * (lcm / x.get_den()));
+    mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), n.back().get_mpz_t());
+  }
+  std::vector<Rational> c;
+  c.reserve(n.size());
+  for (mpz_class& x : n) {
+    mpz_divexact(x.get_mpz_t(), x.get_mpz_t(), content.get_mpz_t());
+    c.emplace_back(x);
+  }
+  return Polynomial(std::move(c));
 }
 
 Polynomial square_free_part(const Polynomial& p) {

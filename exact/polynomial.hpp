@@ -25,7 +25,9 @@ class Polynomial {
   const Rational& leading() const { return c_.back(); }
 
   Rational evaluate(const Rational& t) const;
-  int sign_at(const Rational& t) const { return sgn(evaluate(t)); }
+  /// The exact sign of p(t); in integer arithmetic when every coefficient is an integer
+  /// (no normalising gcds), else by evaluate.
+  int sign_at(const Rational& t) const;
 
   Polynomial derivative() const;
   /// This polynomial divided by its leading coefficient (zero stays zero).
@@ -43,9 +45,14 @@ class Polynomial {
  private:
   void trim();
   std::vector<Rational> c_;
+  bool integer_ = true;  // every coefficient an integer
 };
 
 /// p / gcd(p, p'): same roots, all simple. p must be non-zero.
 Polynomial square_free_part(const Polynomial& p);
+
+/// The positive multiple of p with coprime integer coefficients (zero stays zero): the same
+/// roots and the same signs everywhere, integer evaluations.
+Polynomial primitive_part(const Polynomial& p);
 
 }  // namespace exactccd::exact

@@ -6,14 +6,16 @@ namespace exactccd::exact {
 
 SturmSequence::SturmSequence(const Polynomial& p) {
   if (p.is_zero()) throw std::domain_error("exactccd: Sturm sequence of the zero polynomial");
-  seq_.push_back(p);
+  // Each element a positive multiple of the classical one (rem(x A, y B) = x rem(A, B) for
+  // x, y > 0): the same signs everywhere, integer coefficients for cheap evaluations.
+  seq_.push_back(primitive_part(p));
   if (p.degree() == 0) return;
-  seq_.push_back(p.derivative());
+  seq_.push_back(primitive_part(p.derivative()));
   for (;;) {
     Polynomial r;
     divide(seq_[seq_.size() - 2], seq_.back(), nullptr, &r);
     if (r.is_zero()) break;  // p square-free: the last element is a non-zero constant
-    seq_.push_back(-r);
+    seq_.push_back(primitive_part(-r));
   }
 }
 
@@ -92,7 +94,7 @@ std::vector<AlgebraicTime> real_roots_in(const Polynomial& p, const Rational& a,
   std::vector<AlgebraicTime> out;
   if (p.is_zero()) throw std::domain_error("exactccd: roots of the zero polynomial");
   if (p.degree() == 0) return out;
-  const Polynomial f = square_free_part(p);
+  const Polynomial f = primitive_part(square_free_part(p));  // integer: cheap signs
   if (f.degree() == 1) {  // the root is rational: no isolation needed
     const Rational root = -f.coefficients()[0] / f.coefficients()[1];
     if (cmp(a, root) <= 0 && cmp(root, b) <= 0) out.push_back(AlgebraicTime::rational(root));

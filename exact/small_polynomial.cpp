@@ -297,6 +297,71 @@ int SmallPolynomial::bernstein_signs(double a, double b, int (&signs)[4]) const 
   return degree_ + 1;
 }
 
+// ---- quadratics: the discriminant -------------------------------------------------------------
+// PROOF: proofs/exact_ccd.md#quadratic-discriminant
+
+int SmallPolynomial::quadratic_discriminant_sign() const {
+  if (degree_ != 2) throw std::logic_error("exactccd: discriminant of a non-quadratic");
+  // |c1^2| < 2^(2b), |4 c2 c0| < 2^(2b+2): the difference is below 2^(2b+3).
+  const int limbs = in_gmp_ ? 0 : fixed_limbs_for(2 * bits_ + 3);
+  if (limbs == 0) {
+    ++g_gmp_steps;
+    const std::array<mpz_class, 4> m = mpz_coefficients();
+    return sgn(mpz_class(m[1] * m[1] - 4 * m[2] * m[0]));
+  }
+  return with_limbs(limbs, [&](auto n) {
+    constexpr int N = decltype(n)::value;
+    const FixedInt<N> c0 = fixed_[0].resized<N>(), c1 = fixed_[1].resized<N>(),
+                      c2 = fixed_[2].resized<N>();
+    FixedInt<N> four_c2 = c2;
+    multiply_by(four_c2, 4u);
+    return (c1 * c1 - four_c2 * c0).sign();
+  });
+}
+
+SmallPolynomial SmallPolynomial::double_root_factor() const {
+  if (degree_ != 2) throw std::logic_error("exactccd: double root of a non-quadratic");
+  // |2 c2| < 2^(b+1), |c1| < 2^b.
+  if (in_gmp_ || fixed_limbs_for(bits_ + 1) == 0) {
+    const std::array<mpz_class, 4> m = mpz_coefficients();
+    const mpz_class c[2] = {m[1], mpz_class(2 * m[2])};
+    return from_mpz(c, 2);
+  }
+  Stored c[2] = {fixed_[1], fixed_[2]};
+  c[1] += fixed_[2];
+  return from_fixed(c, 2, bits_ + 1);
+}
+
+// ---- the sign at the roots of a divisor, in fixed size ----------------------------------------
+// PROOF: proofs/exact_ccd.md#constant-remainder
+
+bool SmallPolynomial::sign_at_roots_of(const SmallPolynomial& p, int* sign) const {
+  const int dg = degree_, dp = p.degree_;
+  if (dp < 1 || dg < dp || in_gmp_ || p.in_gmp_) return false;
+  const int n = dg - dp + 1;  // elimination steps, each multiplying by lc(p)
+  const int limbs = fixed_limbs_for(bits_ + n * (p.bits_ + 1));
+  if (limbs == 0) return false;
+  return with_limbs(limbs, [&](auto w) {
+    constexpr int N = decltype(w)::value;
+    FixedInt<N> a[4] = {fixed_[0].resized<N>(), fixed_[1].resized<N>(), fixed_[2].resized<N>(),
+                        fixed_[3].resized<N>()};
+    const FixedInt<N> b[4] = {p.fixed_[0].resized<N>(), p.fixed_[1].resized<N>(),
+                              p.fixed_[2].resized<N>(), p.fixed_[3].resized<N>()};
+    const FixedInt<N>& lc = b[dp];
+    for (int k = dg; k >= dp; --k) {  // lc a - a_k t^(k - dp) b: the t^k term cancels
+      const FixedInt<N> lead = a[k];
+      for (int i = 0; i < k; ++i) a[i] *= lc;
+      for (int i = 0; i < dp; ++i) a[i + k - dp] -= lead * b[i];
+      a[k] = 0;
+    }
+    for (int i = 1; i < dp; ++i)
+      if (a[i].sign() != 0) return false;  // h of degree >= 1
+    const int epsilon = lc.sign() < 0 && n % 2 == 1 ? -1 : 1;
+    *sign = epsilon * a[0].sign();
+    return true;
+  });
+}
+
 // ---- GMP steps ---------------------------------------------------------------------------------
 
 namespace {

@@ -58,6 +58,22 @@ class SmallPolynomial final : public CubicAtDoubles {
 
   std::array<mpz_class, 4> mpz_coefficients() const;
 
+  /// The sign of this polynomial g at every root of p (deg g >= deg p >= 1) when the
+  /// pseudo-remainder h = prem(g, p) is a constant (zero when p divides g): sign(lc(p))^n
+  /// sign(h), n = deg g - deg p + 1. Computed in the FixedInt that the bound
+  /// bits(g) + n (bits(p) + 1) selects; false when h is not constant, the degrees do not
+  /// allow it, or the bound exceeds the fixed widths (then ask sign_at_root_by_remainders).
+  /// PROOF: proofs/exact_ccd.md#constant-remainder
+  bool sign_at_roots_of(const SmallPolynomial& p, int* sign) const;
+
+  /// For degree 2 (c2 t^2 + c1 t + c0): the exact sign of the discriminant c1^2 - 4 c2 c0, in
+  /// the FixedInt its bound 2 bits() + 3 selects (GMP beyond). Negative: no real root; zero: a
+  /// double root. PROOF: proofs/exact_ccd.md#quadratic-discriminant
+  int quadratic_discriminant_sign() const;
+  /// For degree 2 with a zero discriminant: 2 c2 t + c1, whose only root is p's double root
+  /// -c1 / (2 c2) (p = (2 c2 t + c1)^2 / (4 c2)). PROOF: proofs/exact_ccd.md#quadratic-discriminant
+  SmallPolynomial double_root_factor() const;
+
   // CubicAtDoubles (guided_bisection): exact sign at a double t in [0, 1], rounded values.
   int sign_at(double t, Approximation* value) const override;
   void approximate_coefficients(Approximation (&c)[4]) const override;

@@ -148,6 +148,51 @@ TEST(Polynomial, GcdWithCommonFactors) {
   EXPECT_TRUE(gcd(Polynomial(), Polynomial()).is_zero());
 }
 
+TEST(Polynomial, PrimitivePartIsAPositiveIntegerMultiple) {
+  // (-4/3, 2/9, 0, 8/15) -> lcm 45: (-60, 10, 0, 24) -> content 2: (-30, 5, 0, 12).
+  expect_poly_eq(primitive_part(P({q(-4, 3), q(2, 9), 0, q(8, 15)})), P({-30, 5, 0, 12}));
+  expect_poly_eq(primitive_part(P({q(-1, 2)})), P({1}) * P({-1}));  // the sign is kept
+  EXPECT_TRUE(primitive_part(Polynomial()).is_zero());
+}
+
+/// sign_at (integer arithmetic for integer coefficients, shifts for dyadic times) against the
+/// sign of the rational Horner value, on random polynomials of degree 0-7 with integer and
+/// rational coefficients of up to 300 bits, at dyadic, non-dyadic, negative and huge times
+/// and at roots.
+TEST(Polynomial, SignAtEqualsTheSignOfTheRationalValue) {
+  gmp_randclass rng(gmp_randinit_default);
+  rng.seed(20261124);
+  int zeros = 0, checks = 0, nonzero = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int degree = trial % 8;
+    const bool integer = trial % 3 != 0;
+    std::vector<Rational> c;
+    for (int i = 0; i <= degree; ++i) {
+      mpz_class n = rng.get_z_bits(1 + trial % 300) - rng.get_z_bits(1 + trial % 300);
+      c.emplace_back(n, integer ? mpz_class(1) : mpz_class(rng.get_z_bits(40) + 1));
+      c.back().canonicalize();
+    }
+    Polynomial p(c);
+    const int shift = static_cast<int>(mpz_class(rng.get_z_range(200)).get_si());
+    Rational dyadic(rng.get_z_bits(64) - rng.get_z_bits(64));
+    dyadic *= pow2(-shift);
+    Rational general(rng.get_z_bits(50) - rng.get_z_bits(50), rng.get_z_bits(50) + 1);
+    general.canonicalize();
+    for (const Rational& t : std::vector<Rational>{dyadic, general, 0, pow2(400), -pow2(-300)}) {
+      EXPECT_EQ(p.sign_at(t), sgn(p.evaluate(t))) << "trial " << trial;
+      ++checks;
+    }
+    // At a root: p (t - r) vanishes at r (p non-zero), in rational and in integer form.
+    if (p.is_zero()) continue;
+    ++nonzero;
+    zeros += (p * P({-general, 1})).sign_at(general) == 0;
+    zeros += primitive_part(p * P({-dyadic, 1})).sign_at(dyadic) == 0;
+  }
+  EXPECT_EQ(zeros, 2 * nonzero);
+  EXPECT_GT(nonzero, 2900);
+  EXPECT_EQ(checks, 15000);
+}
+
 TEST(Polynomial, SquareFreePart) {
   // (t - 1/3)^2 (t - 1/2) -> (t - 1/3)(t - 1/2) = t^2 - 5/6 t + 1/6.
   const Polynomial p = linear(q(1, 3)) * linear(q(1, 3)) * linear(q(1, 2));

@@ -6,6 +6,8 @@
 // PROOF: proofs/exact_ccd.md#descartes-at-doubles
 // PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
 // PROOF: proofs/exact_ccd.md#sign-at-a-root-by-remainders
+// PROOF: proofs/exact_ccd.md#quadratic-discriminant
+// PROOF: proofs/exact_ccd.md#constant-remainder
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +18,7 @@
 #include "core/predicates/fp_environment.hpp"
 #include "exact/bracketed_root.hpp"
 #include "exact/integer_cubic.hpp"
+#include "exact/root_isolation.hpp"
 #include "exact/small_polynomial.hpp"
 #include "test_scale.hpp"
 
@@ -419,6 +422,203 @@ TEST_F(SmallPolynomialTest, SignAtRootByRemaindersMatchesSturmTarski) {
     }
   }
   EXPECT_GT(compared, 1000);
+}
+
+/// Quadratics whose discriminant is zero, or within one of zero, or random, with coefficients
+/// of `bits` bits (every FixedInt width of the discriminant, and GMP beyond): c2 (k t - m)^2
+/// [+ delta]. Roots in and out of [0, 1], c2 of either sign.
+std::array<mpz_class, 4> adversarial_quadratic(std::mt19937_64& rng, int bits, int kind) {
+  const int part = std::max(1, bits / 3);
+  mpz_class a = random_integer(rng, part), k = random_integer(rng, part);
+  mpz_class m = random_integer(rng, static_cast<int>(rng() % (part + 1)));
+  if (a == 0) a = 1;
+  if (k == 0) k = 1;
+  if (rng() % 2 == 0) m = abs(k) - 1 - (m % 4);  // root m / k just below 1 (or beyond 0)
+  std::array<mpz_class, 4> c;
+  c[2] = a * k * k;
+  c[1] = -2 * a * k * m;
+  c[0] = a * m * m;
+  switch (kind) {
+    case 0: break;                        // double root m / k
+    case 1: c[0] += sgn(a); break;        // no real root, minimum a hair above zero
+    case 2: c[0] -= sgn(a); break;        // two roots a hair apart
+    default: c = random_coefficients(rng, 2, bits);
+  }
+  if (c[2] == 0) c[2] = 1;
+  return c;
+}
+
+// The discriminant's sign in its FixedInt width (or GMP) against GMP, and the double root's
+// linear factor against the identity 4 c2 p = (2 c2 t + c1)^2; 40- to 1,100-bit coefficients.
+TEST_F(SmallPolynomialTest, QuadraticDiscriminantMatchesGmp) {
+  std::mt19937_64 rng(0xd15c);
+  const int widths[] = {8, 40, 62, 100, 150, 300, 500, 700, 1100};
+  const int n = static_cast<int>(test::scaled_count(20000));
+  int zero = 0;
+  for (int trial = 0; trial < n; ++trial) {
+    const int bits = widths[trial % 9];
+    const auto c = adversarial_quadratic(rng, bits, static_cast<int>(rng() % 4));
+    const SmallPolynomial p = SmallPolynomial::from_mpz(c.data(), 3);
+    ASSERT_EQ(p.degree(), 2);
+    const mpz_class discriminant = c[1] * c[1] - 4 * c[2] * c[0];
+    ASSERT_EQ(p.quadratic_discriminant_sign(), sgn(discriminant))
+        << bits << " bits: " << c[2] << " t^2 + " << c[1] << " t + " << c[0];
+    if (discriminant != 0) continue;
+    ++zero;
+    const MpzPolynomial f = to_mpz_polynomial(p.double_root_factor());
+    ASSERT_EQ(f.degree, 1);
+    EXPECT_EQ(f.c[1] * f.c[1], 4 * c[2] * c[2]);
+    EXPECT_EQ(2 * f.c[1] * f.c[0], 4 * c[2] * c[1]);
+    EXPECT_EQ(f.c[0] * f.c[0], 4 * c[2] * c[0]);
+  }
+  EXPECT_GT(zero, n / 8);
+}
+
+// RootIterator on quadratics (double roots, no real root with the minimum a hair above zero,
+// two roots a hair apart, random) against the rational path's root isolation (Sturm
+// sequences): the same roots in [0, T], in order, each bracket holding its root.
+TEST_F(SmallPolynomialTest, RootIteratorOnQuadraticsMatchesRationalRoots) {
+  std::mt19937_64 rng(0x9ad2);
+  const int widths[] = {6, 20, 40, 62, 100, 200, 400};
+  const double t_maxes[] = {1.0, 0.5, 0.75};
+  const int n = static_cast<int>(test::scaled_count(3000));
+  int with_roots_found = 0;
+  for (int trial = 0; trial < n; ++trial) {
+    const int bits = widths[trial % 7];
+    const double t_max = t_maxes[rng() % 3];
+    const auto c = adversarial_quadratic(rng, bits, static_cast<int>(rng() % 4));
+    const SmallPolynomial p = SmallPolynomial::from_mpz(c.data(), 3);
+    const std::vector<AlgebraicTime> expected =
+        real_roots_in(Polynomial({Q(c[0]), Q(c[1]), Q(c[2])}), Q(0), Q(t_max));
+    SmallPolynomial square_free;
+    RootIterator it(p, t_max, &square_free);
+    std::vector<BracketedRoot> found;
+    while (auto r = it.next()) found.push_back(*r);
+    ASSERT_EQ(found.size(), expected.size())
+        << bits << " bits: " << c[2] << " t^2 + " << c[1] << " t + " << c[0] << ", T = " << t_max;
+    with_roots_found += !found.empty();
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      AlgebraicTime root = expected[i];
+      if (found[i].is_exact()) {
+        EXPECT_EQ(root.compare(Q(found[i].lo())), 0);
+      } else {
+        EXPECT_GT(root.compare(Q(found[i].lo())), 0);
+        EXPECT_LT(root.compare(Q(found[i].hi())), 0);
+      }
+    }
+  }
+  EXPECT_GT(with_roots_found, n / 4);
+}
+
+// Cubics with the same adversarial quadratic factors (a double root, a complex pair a hair off
+// the real axis, two roots a hair apart) times a line with a root in or near [0, 1]: where the
+// iterator splits near a critical point of p instead of halving. Against the rational path's
+// Sturm isolation, as above.
+TEST_F(SmallPolynomialTest, RootIteratorOnCubicsWithCloseRootsMatchesRationalRoots) {
+  std::mt19937_64 rng(0xc0b1);
+  const int widths[] = {6, 20, 40, 62, 100, 200};
+  const int n = static_cast<int>(test::scaled_count(3000));
+  int several = 0;
+  for (int trial = 0; trial < n; ++trial) {
+    const int bits = widths[trial % 6];
+    const double t_max = rng() % 2 ? 1.0 : 0.75;
+    const auto q = adversarial_quadratic(rng, bits, static_cast<int>(rng() % 4));
+    mpz_class k = abs(random_integer(rng, 1 + static_cast<int>(rng() % 30)));
+    if (k == 0) k = 1;
+    const mpz_class m = random_integer(rng, static_cast<int>(mpz_sizeinbase(k.get_mpz_t(), 2)));
+    std::array<mpz_class, 4> c;  // q (k t - m)
+    for (int i = 0; i <= 2; ++i) {
+      c[static_cast<std::size_t>(i + 1)] += q[static_cast<std::size_t>(i)] * k;
+      c[static_cast<std::size_t>(i)] -= q[static_cast<std::size_t>(i)] * m;
+    }
+    const SmallPolynomial p = SmallPolynomial::from_mpz(c.data(), 4);
+    std::vector<AlgebraicTime> expected = real_roots_in(
+        Polynomial({Q(c[0]), Q(c[1]), Q(c[2]), Q(c[3])}), Q(0), Q(t_max));
+    SmallPolynomial square_free;
+    RootIterator it(p, t_max, &square_free);
+    std::vector<BracketedRoot> found;
+    while (auto r = it.next()) found.push_back(*r);
+    ASSERT_EQ(found.size(), expected.size())
+        << bits << " bits: " << c[3] << " t^3 + " << c[2] << " t^2 + " << c[1] << " t + " << c[0];
+    several += found.size() >= 2;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      if (found[i].is_exact()) {
+        EXPECT_EQ(expected[i].compare(Q(found[i].lo())), 0);
+      } else {
+        EXPECT_GT(expected[i].compare(Q(found[i].lo())), 0);
+        EXPECT_LT(expected[i].compare(Q(found[i].hi())), 0);
+      }
+    }
+  }
+  EXPECT_GT(several, n / 10);
+}
+
+/// A rational in (-1/2, 3/2) with a denominator of up to `bits` bits.
+Q random_rational(std::mt19937_64& rng, int bits) {
+  mpz_class den = abs(random_integer(rng, 1 + static_cast<int>(rng() % bits)));
+  if (den == 0) den = 1;
+  const mpz_class num = random_integer(rng, static_cast<int>(mpz_sizeinbase(den.get_mpz_t(), 2)));
+  Q q(num, den);
+  q.canonicalize();
+  return q + Q(1, 2);
+}
+
+// The sign at the roots of p from a constant pseudo-remainder, in fixed size: g = p u + c with
+// c = 0 (g(r) = 0 at every root r) or a constant of either sign, p with rational roots
+// (repeated ones too) and lc(p) of either sign, coefficients of 2 to 1,100 bits; against the
+// rational value of g at each root. A remainder of degree >= 1 (c of degree < deg p) must be
+// declined.
+TEST_F(SmallPolynomialTest, ConstantRemainderSignMatchesRationalValues) {
+  std::mt19937_64 rng(0xc0de);
+  const int root_bits[] = {1, 4, 16, 40, 64, 100, 180};
+  const int n = static_cast<int>(test::scaled_count(20000));
+  int decided = 0, zero = 0;
+  for (int trial = 0; trial < n; ++trial) {
+    const int dp = 1 + static_cast<int>(rng() % 3);
+    const int dg = dp + static_cast<int>(rng() % static_cast<unsigned>(4 - dp));
+    const int bits = root_bits[trial % 7];
+    std::vector<Q> roots;
+    for (int i = 0; i < dp; ++i)
+      roots.push_back(i > 0 && rng() % 4 == 0 ? roots.back() : random_rational(rng, bits));
+    const long scale = (rng() % 2 ? 1 : -1) * static_cast<long>(1 + rng() % 1000);
+    const MpzPolynomial p = to_mpz_polynomial(with_roots(roots, scale));
+    // g = p u + c, deg u = dg - dp.
+    std::array<mpz_class, 4> g{};
+    std::array<mpz_class, 4> u{};
+    for (int i = 0; i <= dg - dp; ++i)
+      u[static_cast<std::size_t>(i)] = random_integer(rng, 1 + static_cast<int>(rng() % (3 * bits)));
+    if (u[static_cast<std::size_t>(dg - dp)] == 0) u[static_cast<std::size_t>(dg - dp)] = 1;
+    for (int i = 0; i <= dp; ++i)
+      for (int j = 0; j <= dg - dp; ++j)
+        g[static_cast<std::size_t>(i + j)] += p.c[static_cast<std::size_t>(i)] * u[static_cast<std::size_t>(j)];
+    const int kind = static_cast<int>(rng() % 3);  // 0: c = 0, 1: constant, 2: degree >= 1
+    if (kind == 1) g[0] += random_integer(rng, 1 + static_cast<int>(rng() % (3 * bits)));
+    if (kind == 2 && dp >= 2) {
+      g[0] += random_integer(rng, 8);
+      g[1] += 1 + abs(random_integer(rng, 8));
+    }
+    const SmallPolynomial gs = SmallPolynomial::from_mpz(g.data(), 4);
+    const SmallPolynomial ps = SmallPolynomial::from_mpz(p.c.data(), 4);
+    int sign = 2;
+    const bool answered = gs.sign_at_roots_of(ps, &sign);
+    if (kind == 2 && dp >= 2) {
+      EXPECT_FALSE(answered) << "a remainder of degree >= 1 was taken for a constant";
+      continue;
+    }
+    // The fixed-size bound: b_g + n (b_p + 1) within 16 limbs, else declined.
+    const bool fits = fixed_limbs_for(gs.bits() + (dg - dp + 1) * (ps.bits() + 1)) != 0;
+    EXPECT_EQ(answered, fits) << "dp " << dp << " dg " << dg << " bits " << gs.bits() << ", "
+                              << ps.bits();
+    if (!answered) continue;
+    ++decided;
+    zero += sign == 0;
+    const RationalPolynomial gr = rational(g, dg);
+    for (const Q& r : roots)
+      ASSERT_EQ(sign, sgn(gr.at(r))) << "dp " << dp << " dg " << dg << " kind " << kind
+                                     << " root " << r << " lc(p) " << p.c[static_cast<std::size_t>(dp)];
+  }
+  EXPECT_GT(decided, n / 2);
+  EXPECT_GT(zero, n / 8);
 }
 
 TEST_F(SmallPolynomialTest, GcdAndSquareFreePart) {
