@@ -1,4 +1,5 @@
 // PROOF: proofs/min_separation.md#interval-search
+// PROOF: proofs/min_separation.md#fixed-width-signs
 #include "filters/separation_exact_signs.hpp"
 
 #include <algorithm>
@@ -6,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include "core/predicates/separation.hpp"
 
@@ -25,17 +28,6 @@ void split(double d, std::int64_t* mantissa, int* exponent) {
   *exponent = e - 53;
 }
 
-/// d 2^-e_min as an integer (d's exponent >= e_min).
-mpz_class scaled_integer(double d, int e_min) {
-  if (d == 0) return 0;
-  std::int64_t m = 0;
-  int e = 0;
-  split(d, &m, &e);
-  mpz_class r(static_cast<long>(m));
-  r <<= static_cast<mp_bitcnt_t>(e - e_min);
-  return r;
-}
-
 Point point(const std::array<mpz_class, 3>& x) {
   return {FixedPoly<mpz_class, 0>{{x[0]}}, FixedPoly<mpz_class, 0>{{x[1]}},
           FixedPoly<mpz_class, 0>{{x[2]}}};
@@ -50,32 +42,30 @@ long ulp_exponent(double t) {
   return e;
 }
 
+thread_local std::uint64_t g_gmp_evaluations = 0;
+
 }  // namespace
+
+std::uint64_t gmp_evaluations_in_this_thread() noexcept { return g_gmp_evaluations; }
 
 ExactSignsAtDoubles::ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*, 4>& t0,
                                          const std::array<const Eigen::Vector3d*, 4>& t1,
-                                         double delta) {
-  int e_min = INT_MAX;
-  auto lower = [&e_min](double d) {
-    if (d == 0) return;
-    std::int64_t m = 0;
-    int e = 0;
-    split(d, &m, &e);
-    e_min = std::min(e_min, e);
-  };
-  for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c) {
-      lower((*t0[i])[c]);
-      lower((*t1[i])[c]);
-    }
-  lower(delta);
-  if (e_min == INT_MAX) e_min = 0;  // all zero
-  for (int i = 0; i < 4; ++i)
-    for (int c = 0; c < 3; ++c) {
-      x0_[i][c] = scaled_integer((*t0[i])[c], e_min);
-      dx_[i][c] = scaled_integer((*t1[i])[c], e_min) - x0_[i][c];
-    }
-  delta_ = scaled_integer(delta, e_min);
+                                         double delta)
+    : q_(exact::separation_integers(t0, t1, delta)) {}
+
+auto ExactSignsAtDoubles::gmp() const -> const Gmp& {
+  if (!gmp_) {
+    Gmp g;
+    const int e = q_.common_exponent;
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 3; ++c) {
+        g.x0[i][c] = exact::separation_integer<mpz_class>(q_.coords[0][i][c], e, 0);
+        g.dx[i][c] = exact::separation_integer<mpz_class>(q_.coords[1][i][c], e, 0) - g.x0[i][c];
+      }
+    g.delta = exact::separation_integer<mpz_class>(q_.delta, e, 0);
+    gmp_.emplace(std::move(g));
+  }
+  return *gmp_;
 }
 
 void ExactSignsAtDoubles::at(double t, long shift, std::array<Position, 4>* positions,
@@ -87,14 +77,16 @@ void ExactSignsAtDoubles::at(double t, long shift, std::array<Position, 4>* posi
   const mpz_class mz(static_cast<long>(m));
   const mp_bitcnt_t up = static_cast<mp_bitcnt_t>(shift);
   const mp_bitcnt_t up_m = t == 0 ? 0 : static_cast<mp_bitcnt_t>(shift + e);
+  const Gmp& g = gmp();
   for (int i = 0; i < 4; ++i)
     for (int c = 0; c < 3; ++c)
-      (*positions)[i][c] = (x0_[i][c] << up) + ((mz * dx_[i][c]) << up_m);
-  *delta = delta_ << up;
+      (*positions)[i][c] = (g.x0[i][c] << up) + ((mz * g.dx[i][c]) << up_m);
+  *delta = g.delta << up;
 }
 
 template <class Make>
 mpz_class ExactSignsAtDoubles::value(const Make& make, int k, double t, long shift) const {
+  ++g_gmp_evaluations;
   std::array<Position, 4> x;
   mpz_class d;
   at(t, shift, &x, &d);
@@ -138,19 +130,175 @@ struct MakeEdgeEdge {
 
 }  // namespace
 
+namespace {
+
+/// f(Ints) for the staged integer types that the differences' bit bound selects:
+/// FixedInt widths up to kMaxDifferenceLimbs, GMP beyond (counted).
+template <class F>
+auto with_stage_integers(long difference_bits, F&& f) {
+  switch (exact::fixed_limbs_for(difference_bits)) {
+    case 1: return f(exact::FixedStageIntegers<1>{});
+    case 2: return f(exact::FixedStageIntegers<2>{});
+    case 3: return f(exact::FixedStageIntegers<3>{});
+    default: ++g_gmp_evaluations; return f(exact::GmpStageIntegers{});
+  }
+  static_assert(exact::kMaxDifferenceLimbs == 3, "extend the cases above");
+}
+
+}  // namespace
+
+auto ExactSignsAtDoubles::vertex_face_kernel(int k) -> IntegerKernel {
+  if (k == 0) return {&exact::kVertexFaceRegion, false};
+  if (k == 7 || k == 11 || k == 15) return {&exact::kVertexFaceCapsules[(k - 7) / 4], true};
+  return {};
+}
+
+auto ExactSignsAtDoubles::edge_edge_kernel(int k) -> IntegerKernel {
+  if (k == 0) return {&exact::kEdgeEdgeRegion, false};
+  if (k == 11 || k == 14 || k == 17 || k == 20) return {&exact::kEdgeEdgeCapsules[(k - 11) / 3], true};
+  return {};
+}
+
+const exact::StoredStepDifferences* ExactSignsAtDoubles::fixed_differences(
+    const exact::DifferenceVertices& v) const {
+  if (q_.bits + 2 > 64 * exact::kMaxDifferenceLimbs - 1) return nullptr;
+  if (fixed_differences_of_ != &v) {
+    fixed_differences_.emplace(
+        exact::step_differences<exact::FixedInt<exact::kMaxDifferenceLimbs>>(q_, v));
+    fixed_differences_of_ = &v;
+  }
+  return &*fixed_differences_;
+}
+
+template <class Ints, class F, std::size_t N>
+auto ExactSignsAtDoubles::kernel_values(const IntegerKernel& kernel,
+                                        const std::uint64_t (&ts)[N], unsigned k,
+                                        F&& f) const {
+  auto each = [&](const auto& differences) {
+    std::array<exact::Approximation, N> out{};
+    int sign = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+      if (kernel.capsule) {
+        const auto v = exact::capsule_value<Ints>(differences, ts[i], k);
+        sign = exact::sign_of(v);
+        out[i] = exact::approximate(v);
+      } else {
+        const auto v = exact::face_like_value<Ints>(differences, ts[i], k);
+        sign = exact::sign_of(v);
+        out[i] = exact::approximate(v);
+      }
+    }
+    return f(sign, out);
+  };
+  if constexpr (std::is_same_v<typename Ints::Difference, mpz_class>) {
+    return each(exact::step_differences<mpz_class>(q_, *kernel.vertices));
+  } else {
+    // A fixed width was selected: B + 2 <= 191, so the stored differences exist.
+    return each(*fixed_differences(*kernel.vertices));
+  }
+}
+
+auto ExactSignsAtDoubles::kernel_value_at(const IntegerKernel& kernel, double t) const
+    -> KernelValue {
+  if (last_.vertices == kernel.vertices && last_.t == t) return last_.value;
+  exact::DyadicTime d;
+  exact::dyadic_time(t, &d);  // the callers pass t in [0, 1]
+  const std::uint64_t ts[1] = {d.numerator};
+  const KernelValue v = with_stage_integers(
+      exact::separation_difference_bits(q_.bits, d.exponent), [&](auto ints) {
+        return kernel_values<decltype(ints)>(kernel, ts, d.exponent,
+                                             [&](int sign, const auto& approx) {
+                                               return KernelValue{sign, approx[0], d.exponent};
+                                             });
+      });
+  last_ = {kernel.vertices, t, v};
+  return v;
+}
+
+int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) const {
+  return kernel_value_at(kernel, t).sign;
+}
+
+namespace {
+
+using Vec = std::array<double, 3>;
+double dot3(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec cross3(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec plus3(const Vec& a, const Vec& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+
+}  // namespace
+
+double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo,
+                                          double hi) const {
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  if (!(lo >= 0 && lo <= 1)) return kNone;
+  const KernelValue v = kernel_value_at(kernel, lo);
+  if (v.sign == 0) return kNone;
+  // Plain arithmetic from here (a guess): the coordinates divided by 2^(E + L) (magnitudes at
+  // most 1), the differences and their changes over the step at lo, and g'(lo) in those units.
+  const int shift = q_.common_exponent + q_.bits;
+  auto coordinate = [&](int end, int vertex, int axis) {
+    const exact::Dyadic& x = q_.coords[end][vertex][axis];
+    return std::ldexp(static_cast<double>(x.mantissa), x.exponent - shift);
+  };
+  Vec d[3], step[3];
+  for (int j = 0; j < 3; ++j)
+    for (int c = 0; c < 3; ++c) {
+      const int o = kernel.vertices->origin[j], e = kernel.vertices->end[j];
+      const double d0 = coordinate(0, e, c) - coordinate(0, o, c);
+      step[j][c] = (coordinate(1, e, c) - coordinate(1, o, c)) - d0;
+      d[j][c] = d0 + lo * step[j][c];
+    }
+  const exact::Dyadic& dx = q_.delta;
+  const double delta = std::ldexp(static_cast<double>(dx.mantissa), dx.exponent - shift);
+  const double delta2 = delta * delta;
+  double slope = 0;
+  int degree = 0;
+  if (kernel.capsule) {  // c = (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
+    const Vec &w = d[0], &e = d[1], &w1 = step[0], &e1 = step[1];
+    const double ee = dot3(e, e), we = dot3(w, e);
+    slope = 2 * dot3(w, w1) * ee + 2 * dot3(w, w) * dot3(e, e1) -
+            2 * we * (dot3(w1, e) + dot3(w, e1)) - 2 * delta2 * dot3(e, e1);
+    degree = 4;
+  } else {  // g = (W.m)^2 - delta^2 (m.m), m = U x V
+    const Vec m = cross3(d[0], d[1]);
+    const Vec m1 = plus3(cross3(step[0], d[1]), cross3(d[0], step[1]));
+    const double wm = dot3(d[2], m);
+    slope = 2 * wm * (dot3(step[2], m) + dot3(d[2], m1)) - 2 * delta2 * dot3(m, m1);
+    degree = 6;
+  }
+  // g(lo) in the same units: the integer value is 2^(d(k - E)) g(lo), the unit 2^(E + L).
+  const double value =
+      std::ldexp(v.value.mantissa,
+                 static_cast<int>(std::max(-4000L, std::min(4000L, v.value.exponent -
+                                                                        degree * (static_cast<long>(v.k) + q_.bits)))));
+  const double guess = lo - value / slope;
+  return std::isfinite(guess) && guess > lo && guess < hi ? guess : kNone;
+}
+
 int ExactSignsAtDoubles::vertex_face_sign(int k, double t) const {
+  const IntegerKernel kernel = vertex_face_kernel(k);
+  if (kernel.vertices && t >= 0 && t <= 1) return kernel_sign(kernel, t);
   return sgn(value(MakeVertexFace{}, k, t, -ulp_exponent(t)));
 }
 
 int ExactSignsAtDoubles::edge_edge_sign(int k, double t) const {
+  const IntegerKernel kernel = edge_edge_kernel(k);
+  if (kernel.vertices && t >= 0 && t <= 1) return kernel_sign(kernel, t);
   return sgn(value(MakeEdgeEdge{}, k, t, -ulp_exponent(t)));
 }
 
 double ExactSignsAtDoubles::vertex_face_secant(int k, double lo, double hi) const {
+  const IntegerKernel kernel = vertex_face_kernel(k);
+  if (kernel.vertices) return kernel_newton(kernel, lo, hi);
   return secant(MakeVertexFace{}, k, lo, hi);
 }
 
 double ExactSignsAtDoubles::edge_edge_secant(int k, double lo, double hi) const {
+  const IntegerKernel kernel = edge_edge_kernel(k);
+  if (kernel.vertices) return kernel_newton(kernel, lo, hi);
   return secant(MakeEdgeEdge{}, k, lo, hi);
 }
 

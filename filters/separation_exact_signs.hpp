@@ -2,20 +2,31 @@
 // arithmetic: the query and delta scaled by one power of two to integers, the positions at
 // t = m 2^e computed exactly as integers (scaled by 2^-e), and the one polynomial asked for
 // evaluated on them. Every region polynomial is homogeneous in the coordinates and delta, so
-// the common positive scale changes no sign. Allocates (GMP): used only where interval signs
-// cannot decide. PROOF: proofs/min_separation.md#interval-search
+// the common positive scale changes no sign. Polynomial 0 (the face or interior region) and
+// the capsules' sides, the ones the search tightens, run in fixed-width integers chosen from
+// proven bounds (exact/separation_integers.hpp: no allocation); the others, and these beyond
+// the widest fixed width, in GMP (allocates). PROOF: proofs/min_separation.md#interval-search
+// PROOF: proofs/min_separation.md#fixed-width-signs
 #pragma once
 
 #include <gmpxx.h>
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
+#include <optional>
+
+#include "exact/separation_integers.hpp"
 
 namespace exactccd::filters::separation {
 
+/// How many evaluations of the calling thread's ExactSignsAtDoubles ran in GMP: tells tests
+/// which queries stayed within the fixed widths.
+std::uint64_t gmp_evaluations_in_this_thread() noexcept;
+
 class ExactSignsAtDoubles {
  public:
-  /// The four moving vertices (x_t0, x_t1 each) and delta, all finite doubles.
+  /// The four moving vertices (x_t0, x_t1 each) and delta, all finite doubles. No allocation.
   ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*, 4>& t0,
                       const std::array<const Eigen::Vector3d*, 4>& t1, double delta);
 
@@ -25,22 +36,65 @@ class ExactSignsAtDoubles {
   int edge_edge_sign(int k, double t) const;
 
   /// A guess, in plain arithmetic and never a decision, of the root of polynomial k in
-  /// (lo, hi), 0 < lo < hi: the secant through its exact values at lo and hi. NaN when the
-  /// values do not differ.
+  /// (lo, hi), 0 < lo < hi: for polynomial 0 and the capsules a Newton step from lo with the
+  /// exact value there; for the others the secant through its exact values at lo and hi. NaN
+  /// when there is none in (lo, hi) (the others: when the values do not differ).
   double vertex_face_secant(int k, double lo, double hi) const;
   double edge_edge_secant(int k, double lo, double hi) const;
 
  private:
   using Position = std::array<mpz_class, 3>;
+  /// The query in GMP integers, for the polynomials other than 0 (formed when first needed).
+  struct Gmp {
+    std::array<Position, 4> x0, dx;  // integers: coordinates times 2^-E
+    mpz_class delta;
+  };
+  const Gmp& gmp() const;
   /// The positions at t and delta, all times 2^shift, exactly; shift >= -(t's ulp exponent).
   void at(double t, long shift, std::array<Position, 4>* positions, mpz_class* delta) const;
   template <class Make>
   mpz_class value(const Make& make, int k, double t, long shift) const;
   template <class Make>
   double secant(const Make& make, int k, double lo, double hi) const;
+  /// A polynomial computed from differences in fixed-width integers (proofs/min_separation.md
+  /// #fixed-width-signs): the face-like polynomial 0 or a capsule's side; none for the others.
+  struct IntegerKernel {
+    const exact::DifferenceVertices* vertices = nullptr;
+    bool capsule = false;
+  };
+  static IntegerKernel vertex_face_kernel(int k);
+  static IntegerKernel edge_edge_kernel(int k);
+  /// A kernel's exact sign at t and its value's leading bits (the integer value, 2^(d(k - E))
+  /// times the polynomial of degree d at t = T 2^-k).
+  struct KernelValue {
+    int sign = 0;
+    exact::Approximation value;
+    unsigned k = 0;
+  };
+  KernelValue kernel_value_at(const IntegerKernel& kernel, double t) const;
+  int kernel_sign(const IntegerKernel& kernel, double t) const;
+  /// A Newton step from lo: g(lo) exact (its leading bits), g'(lo) in plain arithmetic; NaN
+  /// when it leaves (lo, hi).
+  double kernel_newton(const IntegerKernel& kernel, double lo, double hi) const;
+  /// The differences of a kernel in FixedInt (formed when first needed, the last kernel's
+  /// kept; none when the coordinates need more than the widest fixed width).
+  const exact::StoredStepDifferences* fixed_differences(const exact::DifferenceVertices& v) const;
+  /// f(the kernel's value at T 2^-k, at each T of ts) in the integer types Ints.
+  template <class Ints, class F, std::size_t N>
+  auto kernel_values(const IntegerKernel& kernel, const std::uint64_t (&ts)[N], unsigned k,
+                     F&& f) const;
 
-  std::array<Position, 4> x0_, dx_;  // integers: coordinates times 2^-e_min
-  mpz_class delta_;
+  exact::SeparationIntegers q_;
+  mutable std::optional<Gmp> gmp_;
+  mutable std::optional<exact::StoredStepDifferences> fixed_differences_;
+  mutable const exact::DifferenceVertices* fixed_differences_of_ = nullptr;
+  /// The last kernel value computed (a Newton step from the last probe reuses it).
+  struct LastValue {
+    const exact::DifferenceVertices* vertices = nullptr;
+    double t = 0;
+    KernelValue value;
+  };
+  mutable LastValue last_;
 };
 
 }  // namespace exactccd::filters::separation

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 
 #include "core/predicates/double_bits.hpp"
@@ -57,6 +58,15 @@ EXACTCCD_CERTIFIED Interval enclosure_over(const Poly6& g, double lo, double hi)
     r = r + c[i] * (i % 2 ? Interval(-hk, hk) : Interval(0.0, hk));
   }
   return r;
+}
+
+/// The certified sign of g over [lo, hi] (constant there), or uncertain: interval Horner over
+/// the piece first (cheap, and enough where g is far from zero), the centred form where that
+/// cannot tell.
+EXACTCCD_CERTIFIED CertifiedSign sign_over(const Poly6& g, double lo, double hi) {
+  const CertifiedSign s = certified_sign(predicates::evaluate(g, Interval(lo, hi)));
+  if (s != CertifiedSign::uncertain) return s;
+  return certified_sign(enclosure_over(g, lo, hi));
 }
 
 EXACTCCD_CERTIFIED Poly6 derivative_of(const Poly6& g) {
@@ -170,25 +180,26 @@ class FirstWithinSearch {
     known_.fill(kUnknown);
     const auto& polys = table().poly;
     for (int k = 0; k < Separation::kCount; ++k) {
-      const CertifiedSign s = certified_sign(enclosure_over(polys[k], lo, hi));
+      const CertifiedSign s = sign_over(polys[k], lo, hi);
       if (s != CertifiedSign::uncertain) known_[k] = static_cast<signed char>(s);
     }
   }
 
   /// The signs of every region polynomial over [lo, hi]; *split when a finer piece may
-  /// decide what this one cannot.
+  /// decide what this one cannot. The signs are computed when first read: the optimistic test
+  /// often excludes a piece after a few of them.
   Step analyse(double lo, double hi, bool* split) {
     const auto& polys = table().poly;
+    constexpr signed char kNotYet = 3;
     std::array<signed char, Separation::kCount> sign;
-    int uncertain = 0, which = -1;
-    for (int k = 0; k < Separation::kCount; ++k) {
-      const CertifiedSign s = certified_sign(enclosure_over(polys[k], lo, hi));
-      sign[k] = static_cast<signed char>(s == CertifiedSign::uncertain ? kUnknown : int(s));
-      if (s == CertifiedSign::uncertain) {
-        ++uncertain;
-        which = k;
+    sign.fill(kNotYet);
+    auto sign_of = [&](int k) {
+      if (sign[k] == kNotYet) {
+        const CertifiedSign s = sign_over(polys[k], lo, hi);
+        sign[k] = static_cast<signed char>(s == CertifiedSign::uncertain ? kUnknown : int(s));
       }
-    }
+      return static_cast<int>(sign[k]);
+    };
     if (lo == 0.0 && cleared_ == 0.0) {  // not within at lo: lo is cleared, or t = 0 is tested
       const int at_zero = within_at(0.0);
       if (at_zero == 0) return Step::give_up;
@@ -200,12 +211,20 @@ class FirstWithinSearch {
     // Optimistic: an uncertain non-strict condition reads as satisfied (sign 0), an uncertain
     // strict one as positive. Not within even so: not within anywhere in the piece.
     const bool possible = Separation::within([&](int k) {
-      if (sign[k] != kUnknown) return static_cast<int>(sign[k]);
+      const int s = sign_of(k);
+      if (s != kUnknown) return s;
       return k < Separation::kNonStrictCount ? 0 : 1;
     });
     if (!possible) {
       cleared_ = hi;
       return Step::excluded;
+    }
+    int uncertain = 0, which = -1;
+    for (int k = 0; k < Separation::kCount; ++k) {
+      if (sign_of(k) == kUnknown) {
+        ++uncertain;
+        which = k;
+      }
     }
     if (uncertain > 1) {
       const Step s = conditions_turning_on(lo, hi, sign);
@@ -217,7 +236,7 @@ class FirstWithinSearch {
     }
     // One polynomial g's sign is uncertain over the piece; every other sign is constant.
     const Poly6& g = polys[which];
-    const CertifiedSign slope = certified_sign(enclosure_over(derivative_of(g), lo, hi));
+    const CertifiedSign slope = sign_over(derivative_of(g), lo, hi);
     if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero) {
       *split = true;
       return Step::give_up;
@@ -261,7 +280,7 @@ class FirstWithinSearch {
     for (int k = 0; k < Separation::kCount; ++k) {
       if (sign[k] != kUnknown) continue;
       if (k >= Separation::kNonStrictCount) return Step::give_up;
-      const CertifiedSign slope = certified_sign(enclosure_over(derivative_of(polys[k]), lo, hi));
+      const CertifiedSign slope = sign_over(derivative_of(polys[k]), lo, hi);
       if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero ||
           static_cast<int>(slope) != Separation::condition(k))
         return Step::give_up;
@@ -301,35 +320,76 @@ class FirstWithinSearch {
     return exact_.sign(k, t);
   }
 
-  /// The first contact is the root r in (lo, hi) of polynomial k, of sign s_lo at lo:
-  /// bisection in the order of doubles with certified signs, exact ones at doubles where the
-  /// interval cannot tell, to the tightest pair of doubles (or toi_width).
+  /// The first contact is the root r in (lo, hi) of polynomial k, of sign s_lo at lo, g
+  /// strictly monotone on [lo, hi]: every probe t in (lo, hi) whose sign is certified moves lo
+  /// or hi to t. The probes: secant steps through the middles of g's interval values (at most
+  /// kGuidedSteps, the first slope from g''s enclosure), else bisection in the order of
+  /// doubles; where the interval cannot tell, two probes about its uncertainty away on either
+  /// side, then exact signs at doubles (at a point guessed from exact values, and its
+  /// neighbour on r's side), to the tightest pair of doubles (or toi_width).
+  /// PROOF: proofs/min_separation.md#interval-search
   Step tighten(int k, double lo, double hi, int s_lo) {
+    constexpr int kGuidedSteps = 16;
     const Poly6& g = table().poly[k];
     bool exact_phase = false;  // the interval signs have failed once: exact signs from here
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    double slope = kNone;                   // a guess of g' near r
+    double guess = kNone;                   // the next probe the guesses suggest
+    double t_prev = kNone, v_prev = kNone;  // the previous probe and its value's middle
+    int guided = 0;
+    // A certified sign at t in (lo, hi) moves an end; true when t is the root itself.
+    auto classify = [&](CertifiedSign s, double t) {
+      if (s == CertifiedSign::zero) {
+        lo = hi = t;
+        return true;
+      }
+      (static_cast<int>(s) == s_lo ? lo : hi) = t;
+      return false;
+    };
     for (;;) {
       if (options_.toi_width > 0 && hi - lo <= options_.toi_width) break;  // rounded up
       double mid = 0;
       if (!predicates::middle_double(lo, hi, &mid)) break;
       if (!exact_phase) {
-        const CertifiedSign s = certified_sign(predicates::evaluate(g, Interval(mid)));
+        const bool use_guess = guided < kGuidedSteps && guess > lo && guess < hi;
+        guided += use_guess;
+        const double t = use_guess ? guess : mid;
+        const Interval v = predicates::evaluate(g, Interval(t));
+        const double v_mid = 0.5 * (v.inf() + v.sup());
+        const double secant = (v_mid - v_prev) / (t - t_prev);  // NaN without a previous probe
+        if (std::isfinite(secant) && secant != 0) {
+          slope = secant;
+        } else if (std::isnan(slope)) {
+          slope = predicates::evaluate(derivative_of(g), Interval(t)).sup();
+        }
+        const CertifiedSign s = certified_sign(v);
         if (s != CertifiedSign::uncertain) {
-          if (s == CertifiedSign::zero) {
-            lo = hi = mid;
-            break;
-          }
-          (static_cast<int>(s) == s_lo ? lo : hi) = mid;
+          if (classify(s, t)) break;
+          t_prev = t;
+          v_prev = v_mid;
+          guess = t - v_mid / slope;
           continue;
         }
+        // Within the interval's uncertainty of r: probes at twice its estimated radius on
+        // either side bracket r tightly when their signs are certified.
+        const double radius = 2 * (v.sup() - v.inf()) / std::fabs(slope);
+        bool root = false;
+        for (const double probe : {t - radius, t + radius}) {
+          if (root || !(probe > lo && probe < hi)) continue;
+          const CertifiedSign sp = certified_sign(predicates::evaluate(g, Interval(probe)));
+          if (sp != CertifiedSign::uncertain) root = classify(sp, probe);
+        }
+        if (root) break;
         exact_phase = true;
+        continue;
       }
-      // Near r the interval cannot tell: a point from the secant through g's exact values at
-      // the ends (a guess: its exact sign decides), and its neighbour on r's side, so that a
-      // good guess closes the bracket to adjacent doubles at once.
+      // Near r the interval cannot tell: a point guessed from g's exact values (exact_.secant;
+      // its exact sign decides) and its neighbour on r's side, so that a good guess closes the
+      // bracket to adjacent doubles at once.
       exact_used_ = true;
       if (lo > 0) {
-        const double guess = exact_.secant(k, lo, hi);
-        if (guess > lo && guess < hi) mid = guess;
+        const double exact_guess = exact_.secant(k, lo, hi);
+        if (exact_guess > lo && exact_guess < hi) mid = exact_guess;
       }
       const int s = exact_.sign(k, mid);
       if (s == 0) {

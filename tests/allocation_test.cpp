@@ -27,6 +27,7 @@
 #include "exact/small_polynomial.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rigid.hpp"
+#include "filters/separation_exact_signs.hpp"
 #include "tests/sample_double_queries.hpp"
 #include "tests/test_scale.hpp"
 
@@ -228,25 +229,7 @@ TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnSampleQueries) {
   EXPECT_GT(a.of(Stage::culling) + a.of(Stage::filter), 1000u);
 }
 
-TEST(Allocation, MinimumSeparationCullingAndFilterDoNotAllocate) {
-  // Minimum separation: culling with delta and the interval search (stage filter: never within
-  // delta, or a first contact whose every sign intervals certified) allocate nothing; exact
-  // signs at doubles (exact_at_double) and the exact stage may.
-  StageAllocations a;
-  const auto& all = sample_double_queries();
-  for (std::size_t i = 0; i < all.size(); i += subset_stride()) {
-    for (const double delta : {1.5e-7, 1.5e-5, 1.5e-3}) {
-      CcdOptions options;
-      options.min_separation = delta;
-      std::uint64_t count = 0;
-      const CcdResult res = decide_counting(all[i], options, &count);
-      a.record(all[i], res, count);
-    }
-  }
-  expect_no_allocation_in_float_stages(a, "sample, minimum separation");
-  EXPECT_GT(a.of(Stage::culling), 100u);
-  EXPECT_GT(a.of(Stage::filter), 100u);
-}
+
 
 /// Queries decided at double times whose exact computations all stayed within the fixed widths
 /// (no GMP computation counted during the call) make no allocation; GMP computations are seen
@@ -275,6 +258,40 @@ void decide_at_double_times(const DoubleQuery& q, const CcdOptions& options, AtD
   std::uint64_t count = 0;
   const CcdResult r = decide_counting(q, options, &count);
   a->record(q, r, count, exact::gmp_computations_in_this_thread() != gmp_before);
+}
+
+TEST(Allocation, MinimumSeparationCullingAndFilterDoNotAllocate) {
+  // Minimum separation: culling with delta and the interval search (stage filter: never within
+  // delta, or a first contact whose every sign intervals certified) allocate nothing; so do
+  // exact signs at doubles (exact_at_double) that all ran in the fixed widths (region
+  // polynomial 0, proofs/min_separation.md#fixed-width-signs); GMP evaluations and the exact
+  // stage may.
+  StageAllocations a;
+  AtDoubleTimes at_doubles;
+  const auto& all = sample_double_queries();
+  for (std::size_t i = 0; i < all.size(); i += subset_stride()) {
+    for (const double delta : {1.5e-7, 1.5e-5, 1.5e-3}) {
+      CcdOptions options;
+      options.min_separation = delta;
+      const std::uint64_t gmp_before = filters::separation::gmp_evaluations_in_this_thread();
+      std::uint64_t count = 0;
+      const CcdResult res = decide_counting(all[i], options, &count);
+      a.record(all[i], res, count);
+      at_doubles.record(
+          all[i], res, count,
+          filters::separation::gmp_evaluations_in_this_thread() != gmp_before);
+    }
+  }
+  expect_no_allocation_in_float_stages(a, "sample, minimum separation");
+  EXPECT_GT(a.of(Stage::culling), 100u);
+  EXPECT_GT(a.of(Stage::filter), 100u);
+  std::printf("minimum separation at double times: %llu queries within the fixed widths, %llu "
+              "with GMP evaluations (%llu of them allocating)\n",
+              static_cast<unsigned long long>(at_doubles.fixed),
+              static_cast<unsigned long long>(at_doubles.gmp),
+              static_cast<unsigned long long>(at_doubles.gmp_allocating));
+  for (const auto& o : at_doubles.offenders) ADD_FAILURE() << o;
+  EXPECT_GT(at_doubles.fixed, at_least(scaled_count(300), 3));
 }
 
 TEST(Allocation, ExactStagesAtDoubleTimesDoNotAllocateWithinTheFixedWidths) {
