@@ -265,43 +265,51 @@ EXACTCCD_CERTIFIED Eigen::Vector3d midpoint_guess(const Eigen::Vector3d& x0,
   return 0.5 * (x0 + x1);
 }
 
-/// Certainly more than delta apart over [0, 1] along a guess made at t = 1/2 (the axes are the
-/// culling's); t0, t1 = the four vertices at t = 0 and t = 1, the first N1 of them the first
-/// primitive. Needs a RoundingGuard.
-template <std::size_t N1, class Guess>
-EXACTCCD_CERTIFIED bool apart_over_whole_step(const InputVertices<4>& t0,
-                                              const InputVertices<4>& t1, double delta,
-                                              Guess guess) {
-  constexpr std::size_t N2 = 4 - N1;
+/// The test along s over [0, 1]: t0, t1 = the four vertices at t = 0 and t = 1, the first N1
+/// of them the first primitive (on s's positive side). Needs a RoundingGuard.
+template <std::size_t N1>
+struct WholeStepGaps {
+  static constexpr std::size_t N2 = 4 - N1;
   InputVertices<N1> first0, first1;
   InputVertices<N2> second0, second1;
-  for (std::size_t i = 0; i < N1; ++i) first0[i] = t0[i], first1[i] = t1[i];
-  for (std::size_t i = 0; i < N2; ++i) second0[i] = t0[N1 + i], second1[i] = t1[N1 + i];
-  const double delta2 = delta * delta;  // rounded upwards
-  for (const Eigen::Vector3d& s :
-       guess(midpoint_guess(*t0[0], *t1[0]), midpoint_guess(*t0[1], *t1[1]),
-             midpoint_guess(*t0[2], *t1[2]), midpoint_guess(*t0[3], *t1[3])))
-    if (usable(s) && gap_exceeds(std::min(instant_gap(s, first0, second0),
-                                          instant_gap(s, first1, second1)),
-                                 s, delta2))
-      return true;
-  return false;
-}
+  double delta2;  // delta^2 rounded upwards
 
-/// Vertex-face over the whole step: {p, a, b, c} at t = 0 and t = 1.
+  WholeStepGaps(const InputVertices<4>& t0, const InputVertices<4>& t1, double delta)
+      : delta2(delta * delta) {
+    for (std::size_t i = 0; i < N1; ++i) first0[i] = t0[i], first1[i] = t1[i];
+    for (std::size_t i = 0; i < N2; ++i) second0[i] = t0[N1 + i], second1[i] = t1[N1 + i];
+  }
+  bool apart_along(const Eigen::Vector3d& s) const {
+    return usable(s) && gap_exceeds(std::min(instant_gap(s, first0, second0),
+                                             instant_gap(s, first1, second1)),
+                                    s, delta2);
+  }
+};
+
+/// Vertex-face over the whole step [0, 1] (the axes are the culling's): {p, a, b, c} at t = 0
+/// and t = 1, the guesses made at t = 1/2, the normal only when the closest points fail.
 EXACTCCD_CERTIFIED bool vertex_face_apart_over_whole_step(const InputVertices<4>& t0,
                                                           const InputVertices<4>& t1,
                                                           double delta) {
-  return apart_over_whole_step<1>(
-      t0, t1, delta, [](const auto&... x) { return vertex_face_guesses(x...); });
+  const WholeStepGaps<1> gaps(t0, t1, delta);
+  const Eigen::Vector3d p = midpoint_guess(*t0[0], *t1[0]), a = midpoint_guess(*t0[1], *t1[1]),
+                        b = midpoint_guess(*t0[2], *t1[2]), c = midpoint_guess(*t0[3], *t1[3]);
+  return gaps.apart_along(p - closest_on_triangle(p, a, b, c)) ||
+         gaps.apart_along(oriented((b - a).cross(c - a), p - a));
 }
 
-/// Edge-edge over the whole step: {a0, a1, b0, b1} at t = 0 and t = 1.
+/// Edge-edge over the whole step: {a0, a1, b0, b1} at t = 0 and t = 1, as above.
 EXACTCCD_CERTIFIED bool edge_edge_apart_over_whole_step(const InputVertices<4>& t0,
                                                         const InputVertices<4>& t1,
                                                         double delta) {
-  return apart_over_whole_step<2>(
-      t0, t1, delta, [](const auto&... x) { return edge_edge_guesses(x...); });
+  const WholeStepGaps<2> gaps(t0, t1, delta);
+  const Eigen::Vector3d a0 = midpoint_guess(*t0[0], *t1[0]), a1 = midpoint_guess(*t0[1], *t1[1]),
+                        b0 = midpoint_guess(*t0[2], *t1[2]), b1 = midpoint_guess(*t0[3], *t1[3]);
+  const auto [ca, cb] = closest_on_segments(a0, a1, b0, b1);
+  const Eigen::Vector3d between = ca - cb;
+  return gaps.apart_along(between) ||
+         gaps.apart_along(
+             oriented((a1 - a0).cross(b1 - b0), between.isZero(0.0) ? a0 - b0 : between));
 }
 
 }  // namespace exactccd::filters::separation
