@@ -157,7 +157,6 @@ bool descartes_root_free_dyadic(const Polynomial& p, const mpz_class& A, const m
   const auto& c = p.coefficients();
   const std::size_t n = c.size();
   if (n == 0 || !p.has_integer_coefficients()) return false;
-  const int d = static_cast<int>(n) - 1;
   // R(y) = 2^(K d) p((A + W y) 2^-K), W = B - A: scale, Taylor shift by A, scale by W^i.
   std::vector<mpz_class> r(n);
   for (std::size_t i = 0; i < n; ++i)
@@ -170,21 +169,7 @@ bool descartes_root_free_dyadic(const Polynomial& p, const mpz_class& A, const m
     w *= W;
     r[i] *= w;
   }
-  // S(x) = sum_i R_i x^i (1 + x)^(d - i): its positive roots are R's roots in (0, 1).
-  std::vector<mpz_class> s(n);
-  for (int i = 0; i <= d; ++i) {
-    if (sgn(r[i]) == 0) continue;
-    mpz_class binomial = 1;  // C(d - i, k)
-    for (int k = 0; k <= d - i; ++k) {
-      s[i + k] += r[i] * binomial;
-      binomial = binomial * (d - i - k) / (k + 1);
-    }
-  }
-  if (sgn(s.front()) == 0 || sgn(s.back()) == 0) return false;  // p(a) = 0 or p(b) = 0
-  const int first = sgn(s.front());
-  for (const mpz_class& x : s)
-    if (sgn(x) == -first) return false;
-  return true;
+  return no_root_on_unit_interval(r);
 }
 
 Polynomial square_free_part(const Polynomial& p) {

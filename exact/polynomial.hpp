@@ -62,6 +62,30 @@ Polynomial primitive_part(const Polynomial& p);
 /// so that where b vanishes, a has the sign of *sign times r.
 Polynomial pseudo_remainder(const Polynomial& a, const Polynomial& b, int* sign);
 
+/// Descartes' rule of signs on [0, 1] for R(y) = sum_i r_i y^i (integer or rational r): true
+/// when R(0), R(1) are non-zero and S(x) = sum_i r_i x^i (1 + x)^(d - i), whose positive roots
+/// are R's roots in (0, 1), has no sign variation: then R has no root in [0, 1].
+/// PROOF: proofs/min_separation.md#root-free-polynomials
+template <class T>
+bool no_root_on_unit_interval(const std::vector<T>& r) {
+  const int d = static_cast<int>(r.size()) - 1;
+  if (d < 0) return false;
+  std::vector<T> s(r.size());
+  for (int i = 0; i <= d; ++i) {
+    if (sgn(r[i]) == 0) continue;
+    long binomial = 1;  // C(d - i, k)
+    for (int k = 0; k <= d - i; ++k) {
+      s[i + k] += r[i] * binomial;
+      binomial = binomial * (d - i - k) / (k + 1);
+    }
+  }
+  if (sgn(s.front()) == 0 || sgn(s.back()) == 0) return false;  // R(0) = 0 or R(1) = 0
+  const int first = sgn(s.front());
+  for (const T& x : s)
+    if (sgn(x) == -first) return false;
+  return true;
+}
+
 /// Whether p (integer coefficients, non-zero) certainly has no root in [a, b], a < b dyadic
 /// (A 2^-K, B 2^-K): p(a), p(b) non-zero and no sign variation in the coefficients of
 /// (1 + x)^d p(a + (b - a) x / (1 + x)) (Descartes' rule of signs), all in integers. False

@@ -73,21 +73,7 @@ bool certainly_root_free(const Polynomial& p, const Rational& a, const Rational&
     wi *= w;
     c[i] *= wi;
   }
-  // q(x) = sum_i c_i x^i (1 + x)^(d - i)
-  std::vector<Rational> q(static_cast<std::size_t>(d) + 1);
-  for (int i = 0; i <= d; ++i) {
-    if (sgn(c[i]) == 0) continue;
-    long binomial = 1;  // C(d - i, k)
-    for (int k = 0; k <= d - i; ++k) {
-      q[i + k] += c[i] * binomial;
-      binomial = binomial * (d - i - k) / (k + 1);
-    }
-  }
-  if (sgn(q.front()) == 0 || sgn(q.back()) == 0) return false;  // p(a) = 0 or p(b) = 0
-  const int s = sgn(q.front());
-  for (const Rational& x : q)
-    if (sgn(x) == -s) return false;
-  return true;
+  return no_root_on_unit_interval(c);
 }
 
 std::vector<AlgebraicTime> real_roots_in(const Polynomial& p, const Rational& a,
