@@ -136,7 +136,8 @@ double random_double(std::mt19937_64& rng, int e) {
 TEST(SeparationIntegers, RandomQueriesEveryWidthEqualGmpAndRationals) {
   std::mt19937_64 rng(11);
   int seen[4] = {0, 0, 0, 0};  // GMP, widths 1 to 3
-  const auto n = static_cast<int>(test::scaled_count(400));
+  // A floor: every width must be reached at any EXACTCCD_TEST_SCALE.
+  const auto n = static_cast<int>(test::at_least(test::scaled_count(400), 200));
   for (int i = 0; i < n; ++i) {
     // Coordinates of exponents in [-60 - spread, -60], delta small; motions small or not.
     const int spread = static_cast<int>(rng() % 160);

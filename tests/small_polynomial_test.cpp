@@ -481,7 +481,8 @@ TEST_F(SmallPolynomialTest, RootIteratorOnQuadraticsMatchesRationalRoots) {
   std::mt19937_64 rng(0x9ad2);
   const int widths[] = {6, 20, 40, 62, 100, 200, 400};
   const double t_maxes[] = {1.0, 0.5, 0.75};
-  const int n = static_cast<int>(test::scaled_count(3000));
+  // A floor: the share checked below needs a few hundred draws at any EXACTCCD_TEST_SCALE.
+  const int n = static_cast<int>(test::at_least(test::scaled_count(3000), 600));
   int with_roots_found = 0;
   for (int trial = 0; trial < n; ++trial) {
     const int bits = widths[trial % 7];
@@ -517,7 +518,8 @@ TEST_F(SmallPolynomialTest, RootIteratorOnQuadraticsMatchesRationalRoots) {
 TEST_F(SmallPolynomialTest, RootIteratorOnCubicsWithCloseRootsMatchesRationalRoots) {
   std::mt19937_64 rng(0xc0b1);
   const int widths[] = {6, 20, 40, 62, 100, 200};
-  const int n = static_cast<int>(test::scaled_count(3000));
+  // A floor: the share checked below needs a few hundred draws at any EXACTCCD_TEST_SCALE.
+  const int n = static_cast<int>(test::at_least(test::scaled_count(3000), 600));
   int several = 0;
   for (int trial = 0; trial < n; ++trial) {
     const int bits = widths[trial % 6];
