@@ -72,12 +72,20 @@ void AlgebraicTime::refine_once() {
 int AlgebraicTime::sign_of(const Polynomial& g) {
   if (g.is_zero()) return 0;
   if (rational_) return g.sign_at(lo_);
-  if (f_.has_integer_coefficients()) {
-    if (const int s = integer_sign_of(g); s != kUndecided) return s;
-  }
-  // g(t) = rho(t) for rho = g mod f, since f(t) = 0: degree below deg f.
+  // g(t) = sign rho(t) with deg rho < deg f, since f(t) = 0: for an integer f the primitive
+  // pseudo-remainder (integers, no normalising gcd; proofs (b')), else the rational remainder.
+  int sign = 1;
   Polynomial rho;
-  divide(g, f_, nullptr, &rho);
+  if (f_.has_integer_coefficients()) {
+    const Polynomial G = primitive_part(g);  // a positive multiple: the same sign at t
+    rho = G.degree() < f_.degree() ? G : primitive_part(pseudo_remainder(G, f_, &sign));
+  } else {
+    divide(g, f_, nullptr, &rho);
+  }
+  return sign * reduced_sign_of(rho);
+}
+
+int AlgebraicTime::reduced_sign_of(const Polynomial& rho) {
   if (rho.degree() <= 0) return rho.is_zero() ? 0 : sgn(rho.leading());
   if (rho.degree() == 1) {
     // rho = c1 t + c0 has the sign of c1 (t - q), q = -c0 / c1.
@@ -86,18 +94,8 @@ int AlgebraicTime::sign_of(const Polynomial& g) {
   }
   bool zero_checked = false;
   for (;;) {
-    // rho keeps the sign of rho(lo) on [lo, hi] when |rho(lo)| > sum_k |rho^(k)(lo)/k!| w^k.
-    // PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time
-    const Polynomial shifted = rho.taylor_shift(lo_);
-    const auto& d = shifted.coefficients();
-    const Rational w = hi_ - lo_;
-    Rational bound = 0, wk = 1;
-    for (std::size_t k = 1; k < d.size(); ++k) {
-      wk *= w;
-      bound += abs(d[k]) * wk;
-    }
-    const Rational rho_lo = d.empty() ? Rational(0) : d[0];
-    if (cmp(abs(rho_lo), bound) > 0) return sgn(rho_lo);
+    if (rational_) return rho.sign_at(lo_);
+    if (const int s = sign_if_root_free(rho); s != 0) return s;
     if (!zero_checked) {
       // rho(t) = 0 iff gcd(f, rho) vanishes at t; the gcd divides the square-free f, so its
       // only possible root in (lo, hi) is t, simple, and shows as a sign change.
@@ -105,48 +103,35 @@ int AlgebraicTime::sign_of(const Polynomial& g) {
       if (h.degree() >= 1 && h.sign_at(lo_) != h.sign_at(hi_)) return 0;
       zero_checked = true;
     }
-    // Halve the interval's width before the next (costlier) Taylor test: across binades one
+    // Halve the interval's width before the next (costlier) test: across binades one
     // bit-order split may shrink the width very little.
-    const Rational target = w / 2;
+    const Rational target = (hi_ - lo_) / 2;
     while (!rational_ && cmp(hi_ - lo_, target) > 0) refine_once();
-    if (rational_) return rho.sign_at(lo_);
   }
 }
 
-int AlgebraicTime::integer_sign_of(const Polynomial& g) {
-  // PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time (b'), all in integers.
-  const Polynomial G = primitive_part(g);  // a positive multiple: the same sign at t
-  if (G.degree() < f_.degree()) return reduced_sign_of(G, 1);
-  int sign = 1;
-  const Polynomial rho = primitive_part(pseudo_remainder(G, f_, &sign));  // sets sign first
-  return reduced_sign_of(rho, sign);
-}
-
-int AlgebraicTime::reduced_sign_of(const Polynomial& rho, int sign) {
-  if (rho.degree() <= 0) return rho.is_zero() ? 0 : sign * sgn(rho.leading());
-  if (rho.degree() == 1) {
-    const Rational q = -rho.coefficients()[0] / rho.coefficients()[1];
-    return sign * sgn(rho.coefficients()[1]) * compare(q);
-  }
-  bool zero_checked = false;
-  for (;;) {
-    if (rational_) return sign * rho.sign_at(lo_);
-    const long kl = dyadic_exponent(lo_), kh = dyadic_exponent(hi_);
-    if (kl < 0 || kh < 0) return kUndecided;  // not dyadic: the rational procedure
+int AlgebraicTime::sign_if_root_free(const Polynomial& rho) const {
+  // PROOF: proofs/exact_ccd.md#lemma-sign-at-algebraic-time
+  const long kl = dyadic_exponent(lo_), kh = dyadic_exponent(hi_);
+  if (rho.has_integer_coefficients() && kl >= 0 && kh >= 0) {
+    // Descartes' rule on the dyadic interval, in integers (b').
     const auto K = static_cast<unsigned long>(std::max(kl, kh));
     mpz_class A, B;
     mpz_mul_2exp(A.get_mpz_t(), lo_.get_num_mpz_t(), K - static_cast<unsigned long>(kl));
     mpz_mul_2exp(B.get_mpz_t(), hi_.get_num_mpz_t(), K - static_cast<unsigned long>(kh));
-    // No root of rho in [lo, hi]: rho keeps its sign at lo over it, t included.
-    if (descartes_root_free_dyadic(rho, A, B, K)) return sign * rho.sign_at(lo_);
-    if (!zero_checked) {  // as in the rational procedure: rho(t) = 0 iff gcd(f, rho)(t) = 0
-      const Polynomial h = gcd(f_, rho);
-      if (h.degree() >= 1 && h.sign_at(lo_) != h.sign_at(hi_)) return 0;
-      zero_checked = true;
-    }
-    const Rational target = (hi_ - lo_) / 2;
-    while (!rational_ && cmp(hi_ - lo_, target) > 0) refine_once();
+    return descartes_root_free_dyadic(rho, A, B, K) ? rho.sign_at(lo_) : 0;
   }
+  // rho keeps the sign of rho(lo) on [lo, hi] when |rho(lo)| > sum_k |rho^(k)(lo)/k!| w^k.
+  const Polynomial shifted = rho.taylor_shift(lo_);
+  const auto& d = shifted.coefficients();
+  const Rational w = hi_ - lo_;
+  Rational bound = 0, wk = 1;
+  for (std::size_t k = 1; k < d.size(); ++k) {
+    wk *= w;
+    bound += abs(d[k]) * wk;
+  }
+  const Rational rho_lo = d.empty() ? Rational(0) : d[0];
+  return cmp(abs(rho_lo), bound) > 0 ? sgn(rho_lo) : 0;
 }
 
 int AlgebraicTime::compare(const Rational& q) {

@@ -55,12 +55,12 @@ class AlgebraicTime {
     return r;
   }
   void set_rational(Rational value);
-  /// sign_of for f with integer coefficients, in integers (pseudo-remainder, Descartes'
-  /// rule on the dyadic isolating interval); kUndecided where the interval is not dyadic.
-  static constexpr int kUndecided = 2;
-  int integer_sign_of(const Polynomial& g);
-  /// The sign at this time of g = sign * rho, rho of degree below deg f.
-  int reduced_sign_of(const Polynomial& rho, int sign);
+  /// The sign at this time of rho, of degree below deg f: refines until rho is certainly
+  /// root-free on the isolating interval, or the zero test holds.
+  int reduced_sign_of(const Polynomial& rho);
+  /// rho's sign on all of [lo, hi] when certainly root-free there, else 0: Descartes' rule in
+  /// integers (integer rho, dyadic ends), else the rational Taylor bound.
+  int sign_if_root_free(const Polynomial& rho) const;
 
   Polynomial f_;
   Rational lo_, hi_;

@@ -20,13 +20,13 @@ int Polynomial::sign_at(const Rational& t) const {
   // integers whose sign is p(t)'s. A power-of-two b (a double t) is a shift.
   const mpz_class& a = t.get_num();
   const mpz_class& b = t.get_den();
-  const std::size_t shift = mpz_scan1(b.get_mpz_t(), 0);
-  const bool dyadic = mpz_sizeinbase(b.get_mpz_t(), 2) == shift + 1;
+  const long shift = dyadic_exponent(t);
   mpz_class r = c_.back().get_num(), b_power = 1, term;
   for (std::size_t i = c_.size() - 1; i-- > 0;) {
     r *= a;
-    if (dyadic) {
-      mpz_mul_2exp(term.get_mpz_t(), c_[i].get_num_mpz_t(), shift * (c_.size() - 1 - i));
+    if (shift >= 0) {
+      mpz_mul_2exp(term.get_mpz_t(), c_[i].get_num_mpz_t(),
+                   static_cast<unsigned long>(shift) * (c_.size() - 1 - i));
     } else {
       b_power *= b;
       term = c_[i].get_num() * b_power;
