@@ -108,22 +108,29 @@ EXACTCCD_CERTIFIED Eigen::Vector3d oriented(const Eigen::Vector3d& s,
 }
 
 /// Direction guesses in plain arithmetic (never a decision), each oriented with the first
-/// primitive (the vertex, the edge a) on its positive side: the vector between the closest
-/// points, and the triangle's normal or the edges' cross product.
-EXACTCCD_CERTIFIED std::array<Eigen::Vector3d, 2> vertex_face_guesses(const Eigen::Vector3d& p,
-                                                                   const Eigen::Vector3d& a,
-                                                                   const Eigen::Vector3d& b,
-                                                                   const Eigen::Vector3d& c) {
-  return {p - closest_on_triangle(p, a, b, c), oriented((b - a).cross(c - a), p - a)};
+/// primitive (the vertex, the edge a) on its positive side, tried in turn by `apart_along`
+/// until one separates: the vector between the closest points, then (only then computed) the
+/// triangle's normal or the edges' cross product.
+template <class ApartAlong>
+EXACTCCD_CERTIFIED bool vertex_face_guesses_separate(const Eigen::Vector3d& p,
+                                                     const Eigen::Vector3d& a,
+                                                     const Eigen::Vector3d& b,
+                                                     const Eigen::Vector3d& c,
+                                                     ApartAlong&& apart_along) {
+  return apart_along(p - closest_on_triangle(p, a, b, c)) ||
+         apart_along(oriented((b - a).cross(c - a), p - a));
 }
 
-EXACTCCD_CERTIFIED std::array<Eigen::Vector3d, 2> edge_edge_guesses(const Eigen::Vector3d& a0,
-                                                                 const Eigen::Vector3d& a1,
-                                                                 const Eigen::Vector3d& b0,
-                                                                 const Eigen::Vector3d& b1) {
+template <class ApartAlong>
+EXACTCCD_CERTIFIED bool edge_edge_guesses_separate(const Eigen::Vector3d& a0,
+                                                   const Eigen::Vector3d& a1,
+                                                   const Eigen::Vector3d& b0,
+                                                   const Eigen::Vector3d& b1,
+                                                   ApartAlong&& apart_along) {
   const auto [ca, cb] = closest_on_segments(a0, a1, b0, b1);
   const Eigen::Vector3d between = ca - cb;
-  return {between, oriented((a1 - a0).cross(b1 - b0), between.isZero(0.0) ? a0 - b0 : between)};
+  return apart_along(between) ||
+         apart_along(oriented((a1 - a0).cross(b1 - b0), between.isZero(0.0) ? a0 - b0 : between));
 }
 
 /// True when gap (a lower bound of the gap along s, at every time of the piece) certainly
@@ -210,10 +217,9 @@ struct VertexFaceMotion {
                                   {v[1].at(hi), v[2].at(hi), v[3].at(hi)}};
     if (axes && apart_on_an_axis(ends, delta)) return true;
     const double mid = 0.5 * (T.inf() + T.sup());
-    for (const Eigen::Vector3d& s : vertex_face_guesses(v[0].guess_at(mid), v[1].guess_at(mid),
-                                                        v[2].guess_at(mid), v[3].guess_at(mid)))
-      if (apart_along(s, ends, delta2.sup())) return true;
-    return false;
+    return vertex_face_guesses_separate(
+        v[0].guess_at(mid), v[1].guess_at(mid), v[2].guess_at(mid), v[3].guess_at(mid),
+        [&](const Eigen::Vector3d& s) { return apart_along(s, ends, delta2.sup()); });
   }
 };
 
@@ -229,10 +235,9 @@ struct EdgeEdgeMotion {
                                   {v[2].at(hi), v[3].at(hi)}};
     if (axes && apart_on_an_axis(ends, delta)) return true;
     const double mid = 0.5 * (T.inf() + T.sup());
-    for (const Eigen::Vector3d& s : edge_edge_guesses(v[0].guess_at(mid), v[1].guess_at(mid),
-                                                      v[2].guess_at(mid), v[3].guess_at(mid)))
-      if (apart_along(s, ends, delta2.sup())) return true;
-    return false;
+    return edge_edge_guesses_separate(
+        v[0].guess_at(mid), v[1].guess_at(mid), v[2].guess_at(mid), v[3].guess_at(mid),
+        [&](const Eigen::Vector3d& s) { return apart_along(s, ends, delta2.sup()); });
   }
 };
 
@@ -286,30 +291,32 @@ struct WholeStepGaps {
   }
 };
 
-/// Vertex-face over the whole step [0, 1] (the axes are the culling's): {p, a, b, c} at t = 0
-/// and t = 1, the guesses made at t = 1/2, the normal only when the closest points fail.
+/// Separated over the whole step [0, 1] (the axes are the culling's) along a guess made at
+/// t = 1/2: {p, a, b, c} or {a0, a1, b0, b1} at t = 0 and t = 1.
+template <std::size_t N1, class GuessesSeparate>
+EXACTCCD_CERTIFIED bool apart_over_whole_step(const InputVertices<4>& t0,
+                                              const InputVertices<4>& t1, double delta,
+                                              GuessesSeparate guesses_separate) {
+  const WholeStepGaps<N1> gaps(t0, t1, delta);
+  return guesses_separate(midpoint_guess(*t0[0], *t1[0]), midpoint_guess(*t0[1], *t1[1]),
+                          midpoint_guess(*t0[2], *t1[2]), midpoint_guess(*t0[3], *t1[3]),
+                          [&](const Eigen::Vector3d& s) { return gaps.apart_along(s); });
+}
+
 EXACTCCD_CERTIFIED bool vertex_face_apart_over_whole_step(const InputVertices<4>& t0,
                                                           const InputVertices<4>& t1,
                                                           double delta) {
-  const WholeStepGaps<1> gaps(t0, t1, delta);
-  const Eigen::Vector3d p = midpoint_guess(*t0[0], *t1[0]), a = midpoint_guess(*t0[1], *t1[1]),
-                        b = midpoint_guess(*t0[2], *t1[2]), c = midpoint_guess(*t0[3], *t1[3]);
-  return gaps.apart_along(p - closest_on_triangle(p, a, b, c)) ||
-         gaps.apart_along(oriented((b - a).cross(c - a), p - a));
+  return apart_over_whole_step<1>(t0, t1, delta, [](const auto&... x) {
+    return vertex_face_guesses_separate(x...);
+  });
 }
 
-/// Edge-edge over the whole step: {a0, a1, b0, b1} at t = 0 and t = 1, as above.
 EXACTCCD_CERTIFIED bool edge_edge_apart_over_whole_step(const InputVertices<4>& t0,
                                                         const InputVertices<4>& t1,
                                                         double delta) {
-  const WholeStepGaps<2> gaps(t0, t1, delta);
-  const Eigen::Vector3d a0 = midpoint_guess(*t0[0], *t1[0]), a1 = midpoint_guess(*t0[1], *t1[1]),
-                        b0 = midpoint_guess(*t0[2], *t1[2]), b1 = midpoint_guess(*t0[3], *t1[3]);
-  const auto [ca, cb] = closest_on_segments(a0, a1, b0, b1);
-  const Eigen::Vector3d between = ca - cb;
-  return gaps.apart_along(between) ||
-         gaps.apart_along(
-             oriented((a1 - a0).cross(b1 - b0), between.isZero(0.0) ? a0 - b0 : between));
+  return apart_over_whole_step<2>(t0, t1, delta, [](const auto&... x) {
+    return edge_edge_guesses_separate(x...);
+  });
 }
 
 }  // namespace exactccd::filters::separation
