@@ -21,6 +21,7 @@
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"
+#include "result_text.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd::test {
@@ -118,14 +119,6 @@ inline CcdResult double_api_ccd(const RationalQuery& q, const CcdOptions& option
     return vertex_face_ccd(VertexFaceQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]},
                            options);
   return edge_edge_ccd(EdgeEdgeQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}, options);
-}
-
-/// A result in one line, TOIs in hexadecimal (exact).
-inline std::string describe_result(const CcdResult& r) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "collides %d [%a, %a] by %s", r.collides ? 1 : 0, r.toi_lo,
-                r.toi_hi, to_string(r.decided_by));
-  return buffer;
 }
 
 /// The same verdict and TOI enclosure, bit for bit (the stage may differ).

@@ -21,6 +21,7 @@
 #include <system_error>
 
 #include "exactccd/ccd.hpp"
+#include "../result_text.hpp"
 
 namespace exactccd::fuzz {
 
@@ -98,12 +99,7 @@ inline std::string describe(QueryType type, const Points& v, const CcdOptions& o
   return s + buf;
 }
 
-inline std::string describe(const CcdResult& r) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "collides %d toi [%a, %a] by %s", r.collides ? 1 : 0, r.toi_lo,
-                r.toi_hi, to_string(r.decided_by));
-  return buf;
-}
+inline std::string describe(const CcdResult& r) { return test::describe_result(r); }
 
 /// Whether the API rejects the options or the coordinates with std::invalid_argument, as
 /// ccd.hpp says it must for non-finite coordinates, t_max outside (0, 1], and a negative or
