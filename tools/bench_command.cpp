@@ -27,7 +27,6 @@ using namespace exactccd::oracle;
 
 namespace {
 
-
 // The queries of one data set as the double API takes them, with their truth.
 struct Dataset {
   std::string label;
