@@ -229,8 +229,6 @@ TEST(Allocation, CullingAndFilterStagesDoNotAllocateOnSampleQueries) {
   EXPECT_GT(a.of(Stage::culling) + a.of(Stage::filter), 1000u);
 }
 
-
-
 /// Queries decided at double times whose exact computations all stayed within the fixed widths
 /// (no GMP computation counted during the call) make no allocation; GMP computations are seen
 /// allocating.
