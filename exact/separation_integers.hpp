@@ -77,6 +77,23 @@ inline constexpr DifferenceVertices kVertexFaceCapsules[3] = {
 inline constexpr DifferenceVertices kEdgeEdgeCapsules[4] = {
     capsule_vertices(0, 2, 3), capsule_vertices(1, 2, 3), capsule_vertices(2, 0, 1),
     capsule_vertices(3, 0, 1)};
+/// The end sphere |p - v|^2 - delta^2: W = p - v (the other differences repeat it).
+/// Vertex-face: p against a, b, c (polynomials 4, 8, 12); edge-edge: a0b0, a0b1, a1b0, a1b1
+/// (polynomials 5-8).
+constexpr DifferenceVertices sphere_vertices(int p, int v) { return {{v, v, v}, {p, p, p}}; }
+inline constexpr DifferenceVertices kVertexFaceSpheres[3] = {
+    sphere_vertices(0, 1), sphere_vertices(0, 2), sphere_vertices(0, 3)};
+inline constexpr DifferenceVertices kEdgeEdgeSpheres[4] = {
+    sphere_vertices(0, 2), sphere_vertices(0, 3), sphere_vertices(1, 2), sphere_vertices(1, 3)};
+/// A side's projection (p - x).(y - x) from the capsule's differences W = p - x, E = y - x:
+/// capsule_vertices(p, x, y) for the projection from x, capsule_vertices(p, y, x) from y.
+/// Vertex-face edge i (x, y = its first and second vertex): polynomials 5 + 4i, 6 + 4i;
+/// edge-edge endpoint i: 9 + 3i, 10 + 3i.
+inline constexpr DifferenceVertices kVertexFaceProjectionsFromY[3] = {
+    capsule_vertices(0, 2, 1), capsule_vertices(0, 3, 2), capsule_vertices(0, 1, 3)};
+inline constexpr DifferenceVertices kEdgeEdgeProjectionsFromY[4] = {
+    capsule_vertices(0, 3, 2), capsule_vertices(1, 3, 2), capsule_vertices(2, 1, 0),
+    capsule_vertices(3, 1, 0)};
 
 /// The integer types of the stages: differences (and 2^k delta); products of two (cross
 /// products, dot products of differences, squared delta); the dot product W.m; products of
@@ -223,6 +240,31 @@ typename Ints::Norm capsule_value(const StepDifferences<Int>& in, std::uint64_t 
   add_product(v, ww, ee);
   sub_product(v, we, we);
   sub_product(v, delta2, ee);
+  return v;
+}
+
+/// 2^(2(k - E)) s(t) at t = T 2^-k for an end sphere's s = |W|^2 - delta^2 (differences from
+/// sphere_vertices).
+template <class Ints, class Int>
+typename Ints::Cross sphere_value(const StepDifferences<Int>& in, std::uint64_t T, unsigned k) {
+  using D = typename Ints::Difference;
+  D d[3][3];
+  differences_at(in, T, k, d);
+  typename Ints::Cross v(0);
+  for (int c = 0; c < 3; ++c) add_product(v, d[0][c], d[0][c]);
+  v -= squared_delta<Ints>(in, k);
+  return v;
+}
+
+/// 2^(2(k - E)) W.E at t = T 2^-k (a side's projection; differences from capsule_vertices).
+template <class Ints, class Int>
+typename Ints::Cross projection_value(const StepDifferences<Int>& in, std::uint64_t T,
+                                      unsigned k) {
+  using D = typename Ints::Difference;
+  D d[3][3];
+  differences_at(in, T, k, d);
+  typename Ints::Cross v(0);
+  for (int c = 0; c < 3; ++c) add_product(v, d[0][c], d[1][c]);
   return v;
 }
 

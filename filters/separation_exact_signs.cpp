@@ -132,6 +132,49 @@ struct MakeEdgeEdge {
 
 namespace {
 
+/// An interval enclosing z 2^-shift, z an integer whose bit length is at most shift (the
+/// enclosure lies in [-1, 1]); below 2^-1000 in magnitude, [0, 2^-1000] on z's side of 0.
+Interval enclosure(const mpz_class& z, long shift) {
+  if (sgn(z) == 0) return Interval(0);
+  long e = 0;
+  const double d = mpz_get_d_2exp(&e, z.get_mpz_t());  // z = (d + r) 2^e, 0.5 <= |d| < 1,
+                                                        // d truncated: r on d's side, |r| < ulp
+  const bool exact = mpz_sizeinbase(z.get_mpz_t(), 2) - mpz_scan1(z.get_mpz_t(), 0) <= 53;
+  double lo = d, hi = d;
+  if (!exact) (d > 0 ? hi : lo) = std::nextafter(d, d > 0 ? 1.0 : -1.0);
+  const long x = e - shift;  // <= 0
+  if (x < -1000) return d > 0 ? Interval(0, 0x1p-1000) : Interval(-0x1p-1000, 0);
+  return Interval(std::ldexp(lo, static_cast<int>(x)), std::ldexp(hi, static_cast<int>(x)));
+}
+
+}  // namespace
+
+template <class Make>
+void ExactSignsAtDoubles::coefficients(const Make& make, CoefficientTable* out) const {
+  ++g_gmp_evaluations;
+  // The moving vertices x0 + t dx as integer polynomials (times 2^-E, as delta): every region
+  // polynomial is homogeneous in them and delta, so this scale changes no sign either.
+  using Moving = Vec3<FixedPoly<mpz_class, 1>>;
+  const Gmp& g = gmp();
+  auto moving = [&g](int i) {
+    auto axis = [&](int c) { return FixedPoly<mpz_class, 1>{{g.x0[i][c], g.dx[i][c]}}; };
+    return Moving{axis(0), axis(1), axis(2)};
+  };
+  const std::array<Moving, 4> x{moving(0), moving(1), moving(2), moving(3)};
+  const mpz_class d2 = g.delta * g.delta;
+  int k = 0;
+  make(x[0], x[1], x[2], x[3], d2).for_each_polynomial([&](const auto& p) {
+    constexpr int D = std::decay_t<decltype(p)>::degree;
+    long bits = 0;  // the polynomial's largest coefficient bit length: its scale 2^-bits
+    for (int i = 0; i <= D; ++i)
+      bits = std::max(bits, static_cast<long>(mpz_sizeinbase(p.c[i].get_mpz_t(), 2)));
+    for (int i = 0; i <= 6; ++i) (*out)[k].c[i] = i <= D ? enclosure(p.c[i], bits) : Interval(0);
+    ++k;
+  });
+}
+
+namespace {
+
 /// f(Ints) for the staged integer types that the differences' bit bound selects:
 /// FixedInt widths up to kMaxDifferenceLimbs, GMP beyond (counted).
 template <class F>
@@ -148,15 +191,27 @@ auto with_stage_integers(long difference_bits, F&& f) {
 }  // namespace
 
 auto ExactSignsAtDoubles::vertex_face_kernel(int k) -> IntegerKernel {
-  if (k == 0) return {&exact::kVertexFaceRegion, false};
-  if (k == 7 || k == 11 || k == 15) return {&exact::kVertexFaceCapsules[(k - 7) / 4], true};
-  return {};
+  if (k == 0) return {&exact::kVertexFaceRegion, KernelKind::face_like};
+  if (k < 4 || k >= 16) return {};
+  const int edge = (k - 4) / 4;  // 4 + 4i the sphere, 5 + 4i and 6 + 4i the projections
+  switch ((k - 4) % 4) {
+    case 0: return {&exact::kVertexFaceSpheres[edge], KernelKind::sphere};
+    case 1: return {&exact::kVertexFaceCapsules[edge], KernelKind::projection};
+    case 2: return {&exact::kVertexFaceProjectionsFromY[edge], KernelKind::projection};
+    default: return {&exact::kVertexFaceCapsules[edge], KernelKind::capsule};
+  }
 }
 
 auto ExactSignsAtDoubles::edge_edge_kernel(int k) -> IntegerKernel {
-  if (k == 0) return {&exact::kEdgeEdgeRegion, false};
-  if (k == 11 || k == 14 || k == 17 || k == 20) return {&exact::kEdgeEdgeCapsules[(k - 11) / 3], true};
-  return {};
+  if (k == 0) return {&exact::kEdgeEdgeRegion, KernelKind::face_like};
+  if (k >= 5 && k <= 8) return {&exact::kEdgeEdgeSpheres[k - 5], KernelKind::sphere};
+  if (k < 9 || k >= 21) return {};
+  const int endpoint = (k - 9) / 3;  // 9 + 3i and 10 + 3i the projections, 11 + 3i the capsule
+  switch ((k - 9) % 3) {
+    case 0: return {&exact::kEdgeEdgeCapsules[endpoint], KernelKind::projection};
+    case 1: return {&exact::kEdgeEdgeProjectionsFromY[endpoint], KernelKind::projection};
+    default: return {&exact::kEdgeEdgeCapsules[endpoint], KernelKind::capsule};
+  }
 }
 
 const exact::StoredStepDifferences* ExactSignsAtDoubles::fixed_differences(
@@ -178,14 +233,17 @@ auto ExactSignsAtDoubles::kernel_values(const IntegerKernel& kernel,
     std::array<exact::Approximation, N> out{};
     int sign = 0;
     for (std::size_t i = 0; i < N; ++i) {
-      if (kernel.capsule) {
-        const auto v = exact::capsule_value<Ints>(differences, ts[i], k);
+      auto take = [&](const auto& v) {
         sign = exact::sign_of(v);
         out[i] = exact::approximate(v);
-      } else {
-        const auto v = exact::face_like_value<Ints>(differences, ts[i], k);
-        sign = exact::sign_of(v);
-        out[i] = exact::approximate(v);
+      };
+      switch (kernel.kind) {
+        case KernelKind::face_like: take(exact::face_like_value<Ints>(differences, ts[i], k)); break;
+        case KernelKind::capsule: take(exact::capsule_value<Ints>(differences, ts[i], k)); break;
+        case KernelKind::sphere: take(exact::sphere_value<Ints>(differences, ts[i], k)); break;
+        case KernelKind::projection:
+          take(exact::projection_value<Ints>(differences, ts[i], k));
+          break;
       }
     }
     return f(sign, out);
@@ -256,18 +314,31 @@ double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo
   const double delta2 = delta * delta;
   double slope = 0;
   int degree = 0;
-  if (kernel.capsule) {  // c = (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
-    const Vec &w = d[0], &e = d[1], &w1 = step[0], &e1 = step[1];
-    const double ee = dot3(e, e), we = dot3(w, e);
-    slope = 2 * dot3(w, w1) * ee + 2 * dot3(w, w) * dot3(e, e1) -
-            2 * we * (dot3(w1, e) + dot3(w, e1)) - 2 * delta2 * dot3(e, e1);
-    degree = 4;
-  } else {  // g = (W.m)^2 - delta^2 (m.m), m = U x V
-    const Vec m = cross3(d[0], d[1]);
-    const Vec m1 = plus3(cross3(step[0], d[1]), cross3(d[0], step[1]));
-    const double wm = dot3(d[2], m);
-    slope = 2 * wm * (dot3(step[2], m) + dot3(d[2], m1)) - 2 * delta2 * dot3(m, m1);
-    degree = 6;
+  const Vec &w = d[0], &e = d[1], &w1 = step[0], &e1 = step[1];
+  switch (kernel.kind) {
+    case KernelKind::capsule: {  // c = (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
+      const double ee = dot3(e, e), we = dot3(w, e);
+      slope = 2 * dot3(w, w1) * ee + 2 * dot3(w, w) * dot3(e, e1) -
+              2 * we * (dot3(w1, e) + dot3(w, e1)) - 2 * delta2 * dot3(e, e1);
+      degree = 4;
+      break;
+    }
+    case KernelKind::face_like: {  // g = (W.m)^2 - delta^2 (m.m), m = U x V
+      const Vec m = cross3(d[0], d[1]);
+      const Vec m1 = plus3(cross3(step[0], d[1]), cross3(d[0], step[1]));
+      const double wm = dot3(d[2], m);
+      slope = 2 * wm * (dot3(step[2], m) + dot3(d[2], m1)) - 2 * delta2 * dot3(m, m1);
+      degree = 6;
+      break;
+    }
+    case KernelKind::sphere:  // s = w.w - delta^2
+      slope = 2 * dot3(w, w1);
+      degree = 2;
+      break;
+    case KernelKind::projection:  // w.e
+      slope = dot3(w1, e) + dot3(w, e1);
+      degree = 2;
+      break;
   }
   // g(lo) in the same units: the integer value is 2^(d(k - E)) g(lo), the unit 2^(E + L).
   const double value =
@@ -294,6 +365,14 @@ double ExactSignsAtDoubles::vertex_face_secant(int k, double lo, double hi) cons
   const IntegerKernel kernel = vertex_face_kernel(k);
   if (kernel.vertices) return kernel_newton(kernel, lo, hi);
   return secant(MakeVertexFace{}, k, lo, hi);
+}
+
+void ExactSignsAtDoubles::vertex_face_coefficients(CoefficientTable* out) const {
+  coefficients(MakeVertexFace{}, out);
+}
+
+void ExactSignsAtDoubles::edge_edge_coefficients(CoefficientTable* out) const {
+  coefficients(MakeEdgeEdge{}, out);
 }
 
 double ExactSignsAtDoubles::edge_edge_secant(int k, double lo, double hi) const {

@@ -2,10 +2,10 @@
 // arithmetic: the query and delta scaled by one power of two to integers, the positions at
 // t = m 2^e computed exactly as integers (scaled by 2^-e), and the one polynomial asked for
 // evaluated on them. Every region polynomial is homogeneous in the coordinates and delta, so
-// the common positive scale changes no sign. Polynomial 0 (the face or interior region) and
-// the capsules' sides, the ones the search tightens, run in fixed-width integers chosen from
-// proven bounds (exact/separation_integers.hpp: no allocation); the others, and these beyond
-// the widest fixed width, in GMP (allocates). PROOF: proofs/min_separation.md#interval-search
+// the common positive scale changes no sign. Polynomial 0 (the face or interior region), the
+// capsules' sides, the end spheres and the sides' projections, the ones the search tightens,
+// run in fixed-width integers chosen from proven bounds (exact/separation_integers.hpp: no
+// allocation); the others, and these beyond the widest fixed width, in GMP (allocates). PROOF: proofs/min_separation.md#interval-search
 // PROOF: proofs/min_separation.md#fixed-width-signs
 #pragma once
 
@@ -16,13 +16,20 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/predicates/motion.hpp"
 #include "exact/separation_integers.hpp"
+#include "filters/interval.hpp"
+#include "filters/separation_filter.hpp"
 
 namespace exactccd::filters::separation {
 
 /// How many evaluations of the calling thread's ExactSignsAtDoubles ran in GMP: tells tests
 /// which queries stayed within the fixed widths.
 std::uint64_t gmp_evaluations_in_this_thread() noexcept;
+
+/// Every region polynomial of a separation (its numbering), padded to degree 6.
+using CoefficientTable =
+    std::array<predicates::FixedPoly<Interval, 6>, kMaxSeparationPolynomials>;
 
 class ExactSignsAtDoubles {
  public:
@@ -42,6 +49,15 @@ class ExactSignsAtDoubles {
   double vertex_face_secant(int k, double lo, double hi) const;
   double edge_edge_secant(int k, double lo, double hi) const;
 
+  /// Every region polynomial from its exact integer coefficients, each polynomial times its
+  /// own positive power of two (no sign changes) and each coefficient rounded outwards once.
+  /// Where a polynomial is tiny against the products of the coordinates (nearly parallel
+  /// edges, a vertex sliding on a face), its enclosure computed in intervals from the
+  /// coordinates is as wide as those products, and this one is not. GMP (allocates).
+  /// PROOF: proofs/min_separation.md#exact-coefficients
+  void vertex_face_coefficients(CoefficientTable* out) const;
+  void edge_edge_coefficients(CoefficientTable* out) const;
+
  private:
   using Position = std::array<mpz_class, 3>;
   /// The query in GMP integers, for the polynomials other than 0 (formed when first needed).
@@ -56,11 +72,15 @@ class ExactSignsAtDoubles {
   mpz_class value(const Make& make, int k, double t, long shift) const;
   template <class Make>
   double secant(const Make& make, int k, double lo, double hi) const;
+  template <class Make>
+  void coefficients(const Make& make, CoefficientTable* out) const;
   /// A polynomial computed from differences in fixed-width integers (proofs/min_separation.md
-  /// #fixed-width-signs): the face-like polynomial 0 or a capsule's side; none for the others.
+  /// #fixed-width-signs): the face-like polynomial 0, a capsule's side, an end sphere or a
+  /// side's projection; none for the others (edge-edge 1-4, vertex-face 1-3 and the strict).
+  enum class KernelKind : std::uint8_t { face_like, capsule, sphere, projection };
   struct IntegerKernel {
     const exact::DifferenceVertices* vertices = nullptr;
-    bool capsule = false;
+    KernelKind kind = KernelKind::face_like;
   };
   static IntegerKernel vertex_face_kernel(int k);
   static IntegerKernel edge_edge_kernel(int k);

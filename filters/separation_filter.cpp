@@ -46,20 +46,46 @@ predicates::MovingPoint<Interval> moving(const Eigen::Vector3d& x0, const Eigen:
 
 template <class Motion, class Separation>
 SeparationOutcome first_within(const Motion& m, const Separation& s,
-                               const separation::ExactAtDoubles& exact,
+                               const separation::SignsAtDoubles& exact,
                                const CcdOptions& options) {
   return separation::FirstWithinSearch<Motion, Separation>(m, s, exact, options).run();
 }
 
 using Vertices = std::array<const Eigen::Vector3d*, 4>;
 
+/// The certified sign of region polynomial k at the double t from the vertices' interval
+/// positions at t: the polynomial's factored form (differences, cross and dot products of
+/// positions), whose enclosure is as wide as the positions' (a few ulps) where the expanded
+/// coefficients' is as wide as their largest terms'. PROOF: proofs/min_separation.md#factored-form
+template <class Motion, class Make>
+struct FactoredSigns {
+  const Motion& m;
+  const Make& make;
+  const Interval& delta2;
+
+  CertifiedSign operator()(int k, double t) const {
+    const Interval ti(t);
+    auto at = [&](int i) {
+      const std::array<Interval, 3> x = m.v[i].at(ti);
+      using Constant = predicates::FixedPoly<Interval, 0>;
+      return Vec3<Constant>{Constant{{x[0]}}, Constant{{x[1]}}, Constant{{x[2]}}};
+    };
+    Interval v(0);
+    make(at(0), at(1), at(2), at(3), delta2)
+        .for_each_polynomial([&v](const auto& g) { v = g.c[0]; }, k);
+    return certified_sign(v);
+  }
+};
+
 /// The search over [0, t_max] for the four moving vertices (t0, t1) of one query type: `make`
 /// builds its separation, `sign` and `secant` are ExactSignsAtDoubles' members for that type
 /// (the integer query built only when first asked).
-template <class Motion, class WholeStep, class Make, class Sign, class Secant>
+template <class Motion, class WholeStep, class Make, class Sign, class Secant,
+          class Coefficients>
 SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
                                     const CcdOptions& options, WholeStep apart_over_whole_step,
-                                    Make make, Sign sign, Secant secant) {
+                                    Make make, Sign sign, Secant secant,
+                                    Coefficients coefficients) {
   using separation::MovingVertex;
   const RoundingGuard upward;
   // Most pairs that pass culling are decided here, from the input doubles alone.
@@ -79,9 +105,14 @@ SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
     if (!integer) integer.emplace(t0, t1, options.min_separation);
     return *integer;
   };
-  const separation::ExactAtDoubles exact{
+  const FactoredSigns<Motion, Make> factored{m, make, delta2};
+  // Each function captures at most two references: std::function stores them without
+  // allocating.
+  const separation::SignsAtDoubles exact{
+      [&factored](int k, double t) { return factored(k, t); },
       [&](int k, double t) { return (exact_signs().*sign)(k, t); },
-      [&](int k, double lo, double hi) { return (exact_signs().*secant)(k, lo, hi); }};
+      [&](int k, double lo, double hi) { return (exact_signs().*secant)(k, lo, hi); },
+      [&](separation::CoefficientTable* out) { (exact_signs().*coefficients)(out); }};
   return first_within(m, s, exact, options);
 }
 
@@ -104,7 +135,8 @@ SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
       separation::vertex_face_apart_over_whole_step,
       [](const auto&... x) { return predicates::vertex_face_separation(x...); },
       &separation::ExactSignsAtDoubles::vertex_face_sign,
-      &separation::ExactSignsAtDoubles::vertex_face_secant);
+      &separation::ExactSignsAtDoubles::vertex_face_secant,
+      &separation::ExactSignsAtDoubles::vertex_face_coefficients);
 }
 
 SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
@@ -113,7 +145,8 @@ SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdO
       options, separation::edge_edge_apart_over_whole_step,
       [](const auto&... x) { return predicates::edge_edge_separation(x...); },
       &separation::ExactSignsAtDoubles::edge_edge_sign,
-      &separation::ExactSignsAtDoubles::edge_edge_secant);
+      &separation::ExactSignsAtDoubles::edge_edge_secant,
+      &separation::ExactSignsAtDoubles::edge_edge_coefficients);
 }
 
 }  // namespace exactccd::filters

@@ -28,7 +28,8 @@ struct SeparationOutcome {
   SeparationVerdict verdict = SeparationVerdict::uncertain;
   /// When contact: toi_lo <= t* <= toi_hi, the tightest pair of doubles (or toi_width).
   double toi_lo = 0.0, toi_hi = 0.0;
-  /// Exact signs at double times were needed to tighten the TOI.
+  /// Exact integer arithmetic was needed (signs at double times, or the region polynomials'
+  /// exact coefficients) for the verdict or the TOI.
   bool exact_used = false;
   /// When uncertain: never within delta on [0, cleared_until] (certified when > 0).
   double cleared_until = 0.0;

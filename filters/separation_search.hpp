@@ -12,11 +12,14 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <cstdio>
+#include <cstdlib>
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/motion.hpp"
 #include "exactccd/types.hpp"
 #include "filters/interval.hpp"
+#include "filters/separation_exact_signs.hpp"
 #include "filters/separation_filter.hpp"
 
 namespace exactccd::filters::separation {
@@ -28,8 +31,9 @@ using Poly6 = FixedPoly<Interval, 6>;
 /// to degree 6.
 template <class Separation>
 struct PolynomialTable {
-  std::array<Poly6, Separation::kCount> poly;
+  CoefficientTable poly;
 
+  PolynomialTable() = default;
   explicit PolynomialTable(const Separation& s) {
     int k = 0;
     s.for_each_polynomial([this, &k](const auto& g) {
@@ -80,12 +84,18 @@ EXACTCCD_CERTIFIED Poly6 derivative_of(const Poly6& g) {
 constexpr int kDirectionDepth = 6;
 constexpr int kMaxDepth = 40;
 
-/// Exact arithmetic at double times, asked only where interval signs cannot tell: the exact
-/// sign of region polynomial k at the double t, and a secant guess (never a decision) of its
-/// root in (lo, hi) from its exact values there.
-struct ExactAtDoubles {
+/// What the search asks where the enclosures of its table cannot tell: the certified sign of
+/// region polynomial k at the double t from interval positions of the vertices at t (the
+/// polynomial in its factored form, far tighter near a root than its expanded coefficients:
+/// a vertex at distance delta from a corner is a small difference of large squares there);
+/// then exact arithmetic: the exact sign of polynomial k at t, a secant guess (never a
+/// decision) of its root in (lo, hi) from its exact values there, and every region
+/// polynomial enclosed from its exact coefficients (ExactSignsAtDoubles::*_coefficients).
+struct SignsAtDoubles {
+  std::function<CertifiedSign(int k, double t)> factored;
   std::function<int(int k, double t)> sign;
   std::function<double(int k, double lo, double hi)> secant;
+  std::function<void(CoefficientTable*)> coefficients;
 };
 
 /// Every piece before the current one is certainly never within delta (`cleared_` is its
@@ -99,22 +109,29 @@ class FirstWithinSearch {
  public:
   enum class Step : std::uint8_t { excluded, found, give_up };
 
-  FirstWithinSearch(const Motion& m, const Separation& s, const ExactAtDoubles& exact,
+  FirstWithinSearch(const Motion& m, const Separation& s, const SignsAtDoubles& exact,
                     const CcdOptions& options)
       : m_(m), separation_(s), exact_(exact), options_(options),
         delta2_(Interval(options.min_separation) * options.min_separation) {}
 
   SeparationOutcome run() {
     SeparationOutcome out;
-    const Step s = search(0.0, options_.t_max, 0);
+    Step s = search(0.0, options_.t_max, 0);
+    if (s == Step::give_up && sharpen()) {
+      // The enclosures computed from the coordinates could not tell: the rest of the step
+      // again with the exact coefficients' (the same polynomials up to positive scales, so
+      // every sign already read holds). PROOF: proofs/min_separation.md#exact-coefficients
+      bracket_ = false;
+      s = search(cleared_, options_.t_max, 0);
+    }
     out.cleared_until = cleared_;
+    out.exact_used = exact_used_;
     if (s == Step::excluded) {
       out.verdict = SeparationVerdict::never_within;
     } else if (s == Step::found) {
       out.verdict = SeparationVerdict::contact;
       out.toi_lo = toi_lo_;
       out.toi_hi = toi_hi_;
-      out.exact_used = exact_used_;
     } else if (bracket_ && cleared_ == bracket_lo_) {
       out.bracketed = true;
       out.cleared_until = bracket_lo_;
@@ -150,6 +167,15 @@ class FirstWithinSearch {
     return search(mid, hi, depth + 1);
   }
 
+  /// Replaces the table by the exact coefficients' enclosures; false when it already is.
+  bool sharpen() {
+    if (sharp_ || !exact_.coefficients) return false;
+    if (!table_) table_.emplace();
+    exact_.coefficients(&table_->poly);  // in place: references into the table stay valid
+    exact_used_ = sharp_ = true;
+    return true;
+  }
+
   const PolynomialTable<Separation>& table() {
     if (!table_) table_.emplace(separation_);
     return *table_;
@@ -157,10 +183,9 @@ class FirstWithinSearch {
 
   /// The predicate at the double t with certified signs: +1 within, -1 not, 0 uncertain.
   int within_at(double t) {
-    const auto& polys = table().poly;
     bool uncertain = false;
     const bool within = Separation::within([&](int k) {
-      const CertifiedSign s = certified_sign(predicates::evaluate(polys[k], Interval(t)));
+      const CertifiedSign s = interval_sign_at(k, t);
       if (s != CertifiedSign::uncertain) return static_cast<int>(s);
       uncertain = true;
       return 0;
@@ -231,6 +256,7 @@ class FirstWithinSearch {
       if (s != Step::give_up) return s;
     }
     if (uncertain != 1 || which >= Separation::kNonStrictCount) {
+      if (std::getenv("SEPDBG") && hi - lo < 1e-9) { std::fprintf(stderr, "giveup [%.17g,%.17g] unc:", lo, hi); for (int k = 0; k < Separation::kCount; ++k) if (sign_of(k)==kUnknown) std::fprintf(stderr, " %d", k); std::fprintf(stderr, " | signs:"); for (int k = 0; k < Separation::kCount; ++k) std::fprintf(stderr, "%d,", sign[k]); std::fprintf(stderr, "\n"); }
       *split = true;
       return Step::give_up;
     }
@@ -238,6 +264,7 @@ class FirstWithinSearch {
     const Poly6& g = polys[which];
     const CertifiedSign slope = sign_over(derivative_of(g), lo, hi);
     if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero) {
+      if (std::getenv("SEPDBG") && hi - lo < 1e-9) std::fprintf(stderr, "slope-unc [%.17g,%.17g] k=%d\n", lo, hi, which);
       *split = true;
       return Step::give_up;
     }
@@ -312,9 +339,17 @@ class FirstWithinSearch {
     return Step::found;
   }
 
+  /// The certified sign of polynomial k at the double t: the table's enclosure, else the
+  /// factored form's.
+  CertifiedSign interval_sign_at(int k, double t) {
+    const CertifiedSign s = certified_sign(predicates::evaluate(table().poly[k], Interval(t)));
+    if (s != CertifiedSign::uncertain || !exact_.factored) return s;
+    return exact_.factored(k, t);
+  }
+
   /// The sign of polynomial k at the double t: certified by intervals, else exact.
   int sign_at(int k, double t) {
-    const CertifiedSign s = certified_sign(predicates::evaluate(table().poly[k], Interval(t)));
+    const CertifiedSign s = interval_sign_at(k, t);
     if (s != CertifiedSign::uncertain) return static_cast<int>(s);
     exact_used_ = true;
     return exact_.sign(k, t);
@@ -362,7 +397,8 @@ class FirstWithinSearch {
         } else if (std::isnan(slope)) {
           slope = predicates::evaluate(derivative_of(g), Interval(t)).sup();
         }
-        const CertifiedSign s = certified_sign(v);
+        CertifiedSign s = certified_sign(v);
+        if (s == CertifiedSign::uncertain && exact_.factored) s = exact_.factored(k, t);
         if (s != CertifiedSign::uncertain) {
           if (classify(s, t)) break;
           t_prev = t;
@@ -376,7 +412,7 @@ class FirstWithinSearch {
         bool root = false;
         for (const double probe : {t - radius, t + radius}) {
           if (root || !(probe > lo && probe < hi)) continue;
-          const CertifiedSign sp = certified_sign(predicates::evaluate(g, Interval(probe)));
+          const CertifiedSign sp = interval_sign_at(k, probe);
           if (sp != CertifiedSign::uncertain) root = classify(sp, probe);
         }
         if (root) break;
@@ -391,7 +427,7 @@ class FirstWithinSearch {
         const double exact_guess = exact_.secant(k, lo, hi);
         if (exact_guess > lo && exact_guess < hi) mid = exact_guess;
       }
-      const int s = exact_.sign(k, mid);
+      const int s = sign_at(k, mid);
       if (s == 0) {
         lo = hi = mid;
         break;
@@ -399,7 +435,7 @@ class FirstWithinSearch {
       (s == s_lo ? lo : hi) = mid;
       const double next = s == s_lo ? std::nextafter(mid, hi) : std::nextafter(mid, lo);
       if (next > lo && next < hi) {
-        const int s_next = exact_.sign(k, next);
+        const int s_next = sign_at(k, next);
         if (s_next == 0) {
           lo = hi = next;
           break;
@@ -414,10 +450,11 @@ class FirstWithinSearch {
 
   const Motion& m_;
   const Separation& separation_;
-  const ExactAtDoubles& exact_;
+  const SignsAtDoubles& exact_;
   const CcdOptions& options_;
   const Interval delta2_;
   std::optional<PolynomialTable<Separation>> table_;
+  bool sharp_ = false;  // the table holds the exact coefficients' enclosures
   bool bracket_ = false;
   double bracket_lo_ = 0.0, bracket_hi_ = 0.0;
   std::array<signed char, kMaxSeparationPolynomials> known_{};

@@ -1,5 +1,6 @@
-// The fixed-width exact values at double times of the minimum-separation region polynomial 0
-// and of the capsules' sides (exact/separation_integers.hpp) against GMP and the rationals:
+// The fixed-width exact values at double times of the minimum-separation region polynomial 0,
+// the capsules' sides, the end spheres and the sides' projections
+// (exact/separation_integers.hpp) against GMP and the rationals:
 //  - every FixedInt width at least the one its bound selects gives the same integer as the same
 //    kernel in GMP, and that integer is 2^(d(k-E)) times the polynomial of
 //    core/predicates/separation.hpp (degree d) evaluated over the rationals at the same time;
@@ -64,26 +65,69 @@ SeparationIntegers integers_of(const Case& c) {
                                     {&c.t1[0], &c.t1[1], &c.t1[2], &c.t1[3]}, c.delta);
 }
 
-/// A kernel: the polynomial it computes and its vertices.
+/// A kernel: the polynomial it computes, its vertices and its kind (degree in the
+/// coordinates: 6 face-like, 4 capsule, 2 sphere and projection).
+enum class Kind { face_like, capsule, sphere, projection };
 struct Kernel {
   bool vertex_face;
   int poly;
   const DifferenceVertices* vertices;
-  bool capsule;
+  Kind kind;
 };
 
+// Written out against core/predicates/separation.hpp's numbering, not derived from the
+// library's own mapping (ExactSignsAtDoubles::*_kernel), so that a wrong pointer there fails.
 const Kernel kKernels[] = {
-    {true, 0, &exact::kVertexFaceRegion, false},  {true, 7, &exact::kVertexFaceCapsules[0], true},
-    {true, 11, &exact::kVertexFaceCapsules[1], true}, {true, 15, &exact::kVertexFaceCapsules[2], true},
-    {false, 0, &exact::kEdgeEdgeRegion, false},   {false, 11, &exact::kEdgeEdgeCapsules[0], true},
-    {false, 14, &exact::kEdgeEdgeCapsules[1], true}, {false, 17, &exact::kEdgeEdgeCapsules[2], true},
-    {false, 20, &exact::kEdgeEdgeCapsules[3], true}};
+    {true, 0, &exact::kVertexFaceRegion, Kind::face_like},
+    {true, 4, &exact::kVertexFaceSpheres[0], Kind::sphere},
+    {true, 5, &exact::kVertexFaceCapsules[0], Kind::projection},
+    {true, 6, &exact::kVertexFaceProjectionsFromY[0], Kind::projection},
+    {true, 7, &exact::kVertexFaceCapsules[0], Kind::capsule},
+    {true, 8, &exact::kVertexFaceSpheres[1], Kind::sphere},
+    {true, 9, &exact::kVertexFaceCapsules[1], Kind::projection},
+    {true, 10, &exact::kVertexFaceProjectionsFromY[1], Kind::projection},
+    {true, 11, &exact::kVertexFaceCapsules[1], Kind::capsule},
+    {true, 12, &exact::kVertexFaceSpheres[2], Kind::sphere},
+    {true, 13, &exact::kVertexFaceCapsules[2], Kind::projection},
+    {true, 14, &exact::kVertexFaceProjectionsFromY[2], Kind::projection},
+    {true, 15, &exact::kVertexFaceCapsules[2], Kind::capsule},
+    {false, 0, &exact::kEdgeEdgeRegion, Kind::face_like},
+    {false, 5, &exact::kEdgeEdgeSpheres[0], Kind::sphere},
+    {false, 6, &exact::kEdgeEdgeSpheres[1], Kind::sphere},
+    {false, 7, &exact::kEdgeEdgeSpheres[2], Kind::sphere},
+    {false, 8, &exact::kEdgeEdgeSpheres[3], Kind::sphere},
+    {false, 9, &exact::kEdgeEdgeCapsules[0], Kind::projection},
+    {false, 10, &exact::kEdgeEdgeProjectionsFromY[0], Kind::projection},
+    {false, 11, &exact::kEdgeEdgeCapsules[0], Kind::capsule},
+    {false, 12, &exact::kEdgeEdgeCapsules[1], Kind::projection},
+    {false, 13, &exact::kEdgeEdgeProjectionsFromY[1], Kind::projection},
+    {false, 14, &exact::kEdgeEdgeCapsules[1], Kind::capsule},
+    {false, 15, &exact::kEdgeEdgeCapsules[2], Kind::projection},
+    {false, 16, &exact::kEdgeEdgeProjectionsFromY[2], Kind::projection},
+    {false, 17, &exact::kEdgeEdgeCapsules[2], Kind::capsule},
+    {false, 18, &exact::kEdgeEdgeCapsules[3], Kind::projection},
+    {false, 19, &exact::kEdgeEdgeProjectionsFromY[3], Kind::projection},
+    {false, 20, &exact::kEdgeEdgeCapsules[3], Kind::capsule}};
+
+long degree_of(Kind kind) {
+  switch (kind) {
+    case Kind::face_like: return 6;
+    case Kind::capsule: return 4;
+    default: return 2;
+  }
+}
 
 template <class Ints>
 mpz_class kernel_value(const Kernel& kernel, const SeparationIntegers& q, std::uint64_t T,
                        unsigned k) {
-  if (kernel.capsule) return exact::to_mpz(exact::capsule_value<Ints>(q, *kernel.vertices, T, k));
-  return exact::to_mpz(exact::face_like_value<Ints>(q, *kernel.vertices, T, k));
+  const auto differences =
+      exact::step_differences<typename Ints::Difference>(q, *kernel.vertices);
+  switch (kernel.kind) {
+    case Kind::face_like: return exact::to_mpz(exact::face_like_value<Ints>(differences, T, k));
+    case Kind::capsule: return exact::to_mpz(exact::capsule_value<Ints>(differences, T, k));
+    case Kind::sphere: return exact::to_mpz(exact::sphere_value<Ints>(differences, T, k));
+    default: return exact::to_mpz(exact::projection_value<Ints>(differences, T, k));
+  }
 }
 
 /// Checks the case at t in every width that its bound admits; returns the width selected
@@ -101,7 +145,7 @@ int check(const Case& c, double t, const char* what) {
     const mpz_class gmp = kernel_value<exact::GmpStageIntegers>(kernel, q, T, k);
     // The reference: 2^(deg (k - E)) g(t) over the rationals.
     mpq_class expected = rational_value(c, kernel.vertex_face, kernel.poly, t);
-    const long scale = (kernel.capsule ? 4L : 6L) * (static_cast<long>(k) - q.common_exponent);
+    const long scale = degree_of(kernel.kind) * (static_cast<long>(k) - q.common_exponent);
     if (scale >= 0)
       mpq_mul_2exp(expected.get_mpq_t(), expected.get_mpq_t(), static_cast<mp_bitcnt_t>(scale));
     else

@@ -209,7 +209,7 @@ CcdResult min_separation_ccd(const Query& q, const CcdOptions& options, Culled c
   const filters::SeparationOutcome f = filter(q, options);
   switch (f.verdict) {
     case filters::SeparationVerdict::never_within:
-      r.decided_by = Stage::filter;
+      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
       return r;
     case filters::SeparationVerdict::contact:
       r.collides = true;
