@@ -2,7 +2,8 @@
 // "the two convex hulls are more than delta apart along a direction" for the axes and for
 // directions guessed at the interval's middle (closest points, the normal), read at the
 // interval's two ends (the gap along a fixed direction is concave in t); over the whole step
-// from the input doubles alone, over a piece from interval positions. Needs a RoundingGuard.
+// from the input doubles alone, rounding to nearest with a proven error bound; over a piece
+// from interval positions, which needs a RoundingGuard.
 // PROOF: proofs/min_separation.md#separating-directions
 #pragma once
 
@@ -242,26 +243,22 @@ struct EdgeEdgeMotion {
 };
 
 // ---- The whole step [0, 1], which contains [0, t_max]: the positions at its ends are the
-// input doubles themselves, so no interval is needed; upper bounds come from plain products
-// and sums rounded upwards (each >= its exact value). PROOF: proofs/min_separation.md#whole-step
+// input doubles themselves, so no interval is needed. Computed rounding to nearest, with the
+// error bound of proofs/min_separation.md#whole-step: most queries that culling leaves end
+// here, and setting a rounding mode would cost them as much as the test.
 
 template <std::size_t N>
 using InputVertices = std::array<const Eigen::Vector3d*, N>;
 
-/// An upper bound of s.x.
-EXACTCCD_CERTIFIED double dot_upper(const Eigen::Vector3d& s, const Eigen::Vector3d& x) {
-  return (s[0] * x[0] + s[1] * x[1]) + s[2] * x[2];
-}
+/// s.x rounded to nearest, r = (s0 x0 + s1 x1) + s2 x2, and a = (|s0 x0| + |s1 x1|) + |s2 x2|
+/// from the same products: |r - s.x| <= 2^-51 a + 2^-1070 (Lemma W).
+struct NearestDot {
+  double r, a;
+};
 
-/// A lower bound, at one instant, of min s.x - max s.y >= -(max (-s).x + max s.y).
-template <std::size_t N1, std::size_t N2>
-EXACTCCD_CERTIFIED double instant_gap(const Eigen::Vector3d& s, const InputVertices<N1>& first,
-                                      const InputVertices<N2>& second) {
-  const Eigen::Vector3d n = -s;
-  double up1 = dot_upper(n, *first[0]), up2 = dot_upper(s, *second[0]);
-  for (std::size_t i = 1; i < N1; ++i) up1 = std::max(up1, dot_upper(n, *first[i]));
-  for (std::size_t i = 1; i < N2; ++i) up2 = std::max(up2, dot_upper(s, *second[i]));
-  return -(up1 + up2);
+EXACTCCD_CERTIFIED NearestDot nearest_dot(const Eigen::Vector3d& s, const Eigen::Vector3d& x) {
+  const double p0 = s[0] * x[0], p1 = s[1] * x[1], p2 = s[2] * x[2];
+  return {(p0 + p1) + p2, (std::fabs(p0) + std::fabs(p1)) + std::fabs(p2)};
 }
 
 /// Plain midpoint of a vertex's motion (a guess only).
@@ -271,23 +268,52 @@ EXACTCCD_CERTIFIED Eigen::Vector3d midpoint_guess(const Eigen::Vector3d& x0,
 }
 
 /// The test along s over [0, 1]: t0, t1 = the four vertices at t = 0 and t = 1, the first N1
-/// of them the first primitive (on s's positive side). Needs a RoundingGuard.
+/// of them the first primitive (on s's positive side). Rounding to nearest (the caller's mode
+/// is set to it by the library's entry).
 template <std::size_t N1>
 struct WholeStepGaps {
   static constexpr std::size_t N2 = 4 - N1;
   InputVertices<N1> first0, first1;
   InputVertices<N2> second0, second1;
-  double delta2;  // delta^2 rounded upwards
+  double delta;
 
   WholeStepGaps(const InputVertices<4>& t0, const InputVertices<4>& t1, double delta)
-      : delta2(delta * delta) {
+      : delta(delta) {
     for (std::size_t i = 0; i < N1; ++i) first0[i] = t0[i], first1[i] = t1[i];
     for (std::size_t i = 0; i < N2; ++i) second0[i] = t0[N1 + i], second1[i] = t1[N1 + i];
   }
-  bool apart_along(const Eigen::Vector3d& s) const {
-    return usable(s) && gap_exceeds(std::min(instant_gap(s, first0, second0),
-                                             instant_gap(s, first1, second1)),
-                                    s, delta2);
+
+  /// At both ends, min over the first of s.x - max over the second of s.y certainly exceeds
+  /// delta |s|: -c > ((d + 2^-50 a) + 2^-1067)(1 + 2^-47), all rounded to nearest, with
+  /// c = max (-s).x + max s.y from nearest_dot, a the largest absolute sum and d = delta
+  /// sqrt(|s|^2), s first scaled by a power of two when |s|^2 leaves [2^-1000, 2^1000]; false
+  /// (nothing claimed) when a value is not finite. PROOF: proofs/min_separation.md#whole-step
+  bool apart_along(Eigen::Vector3d s) const {
+    double n2 = (s[0] * s[0] + s[1] * s[1]) + s[2] * s[2];
+    if (!(n2 >= 0x1p-1000 && n2 <= 0x1p+1000)) {  // a direction's scale is free: 1 <= |s|^2 < 12
+      if (!usable(s)) return false;
+      int e = 0;
+      std::frexp(s.cwiseAbs().maxCoeff(), &e);
+      for (int k = 0; k < 3; ++k) s[k] = std::ldexp(s[k], 1 - e);
+      n2 = (s[0] * s[0] + s[1] * s[1]) + s[2] * s[2];
+    }
+    const double d = delta * std::sqrt(n2);
+    const Eigen::Vector3d n = -s;
+    double a = 0.0;
+    auto largest = [&a](const Eigen::Vector3d& direction, const auto& points) {
+      double r = -std::numeric_limits<double>::infinity();
+      for (const Eigen::Vector3d* x : points) {
+        const NearestDot dot = nearest_dot(direction, *x);
+        r = std::max(r, dot.r);
+        a = std::max(a, dot.a);
+      }
+      return r;
+    };
+    const double c0 = largest(n, first0) + largest(s, second0);
+    const double c1 = largest(n, first1) + largest(s, second1);
+    if (!(a <= std::numeric_limits<double>::max())) return false;
+    const double bound = ((d + 0x1p-50 * a) + 0x1p-1067) * (1 + 0x1p-47);
+    return std::isfinite(c0) && std::isfinite(c1) && -c0 > bound && -c1 > bound;
   }
 };
 

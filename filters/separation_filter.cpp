@@ -79,22 +79,14 @@ struct FactoredSigns {
 
 /// The search over [0, t_max] for the four moving vertices (t0, t1) of one query type: `make`
 /// builds its separation, `sign` and `secant` are ExactSignsAtDoubles' members for that type
-/// (the integer query built only when first asked).
-template <class Motion, class WholeStep, class Make, class Sign, class Secant,
-          class Coefficients>
-SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
-                                    const CcdOptions& options, WholeStep apart_over_whole_step,
-                                    Make make, Sign sign, Secant secant,
-                                    Coefficients coefficients) {
+/// (the integer query built only when first asked). Not inlined: its frame (the polynomial
+/// table, the integer query) is large, and most queries never get here.
+template <class Motion, class Make, class Sign, class Secant, class Coefficients>
+[[gnu::noinline]] SeparationOutcome search_for_first_within(
+    const Vertices& t0, const Vertices& t1, const CcdOptions& options, Make make, Sign sign,
+    Secant secant, Coefficients coefficients) {
   using separation::MovingVertex;
   const RoundingGuard upward;
-  // Most pairs that pass culling are decided here, from the input doubles alone.
-  if (apart_over_whole_step(t0, t1, options.min_separation)) {
-    SeparationOutcome out;
-    out.verdict = SeparationVerdict::never_within;
-    out.cleared_until = options.t_max;
-    return out;
-  }
   const Motion m{{MovingVertex(*t0[0], *t1[0]), MovingVertex(*t0[1], *t1[1]),
                   MovingVertex(*t0[2], *t1[2]), MovingVertex(*t0[3], *t1[3])}};
   const Interval delta2 = Interval(options.min_separation) * options.min_separation;
@@ -114,6 +106,24 @@ SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
       [&](int k, double lo, double hi) { return (exact_signs().*secant)(k, lo, hi); },
       [&](separation::CoefficientTable* out) { (exact_signs().*coefficients)(out); }};
   return first_within(m, s, exact, options);
+}
+
+/// The whole-step test, then the search.
+template <class Motion, class WholeStep, class Make, class Sign, class Secant,
+          class Coefficients>
+SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
+                                    const CcdOptions& options, WholeStep apart_over_whole_step,
+                                    Make make, Sign sign, Secant secant,
+                                    Coefficients coefficients) {
+  // Most pairs that pass culling are decided here, from the input doubles alone, rounding to
+  // nearest as the library's entry has set.
+  if (apart_over_whole_step(t0, t1, options.min_separation)) {
+    SeparationOutcome out;
+    out.verdict = SeparationVerdict::never_within;
+    out.cleared_until = options.t_max;
+    return out;
+  }
+  return search_for_first_within<Motion>(t0, t1, options, make, sign, secant, coefficients);
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ struct SeparationOutcome {
 };
 
 /// The interval stages on finite input, options validated, delta = options.min_separation > 0.
-/// No heap allocation.
+/// Called rounding to nearest, without flush-to-zero (the library's entries set it; the
+/// whole-step test relies on it and the rest sets its own mode). No heap allocation.
 SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                 const CcdOptions& options);
 SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options);

@@ -145,10 +145,10 @@ class FirstWithinSearch {
   static constexpr int kUnknown = 2;
 
   Step search(double lo, double hi, int depth) {
-    if (depth <= kDirectionDepth &&
-        m_.apart_over(Interval(lo, hi), delta2_, options_.min_separation,
-                      // over all of [0, 1] the axes repeat the culling's boxes
-                      !(lo == 0.0 && hi == 1.0))) {
+    // All of [0, 1] has just failed the whole-step test (the same guesses from the input
+    // doubles) and culling (the axes): not tried again.
+    if (depth <= kDirectionDepth && !(lo == 0.0 && hi == 1.0) &&
+        m_.apart_over(Interval(lo, hi), delta2_, options_.min_separation, true)) {
       cleared_ = hi;
       return Step::excluded;
     }
