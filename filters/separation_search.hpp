@@ -143,8 +143,14 @@ class FirstWithinSearch {
 
  private:
   static constexpr int kUnknown = 2;
+  static constexpr signed char kNotYet = 3;
+  /// Signs of the region polynomials over a piece: -1, 0, +1 certain, kUnknown (uncertain
+  /// there), kNotYet (not computed).
+  using Signs = std::array<signed char, Separation::kCount>;
 
-  Step search(double lo, double hi, int depth) {
+  /// `inherited`: the certain signs over an enclosing piece, which hold over this one too
+  /// (none at the top).
+  Step search(double lo, double hi, int depth, const Signs* inherited = nullptr) {
     // All of [0, 1] has just failed the whole-step test (the same guesses from the input
     // doubles) and culling (the axes): not tried again.
     if (depth <= kDirectionDepth && !(lo == 0.0 && hi == 1.0) &&
@@ -152,9 +158,14 @@ class FirstWithinSearch {
       cleared_ = hi;
       return Step::excluded;
     }
+    Signs signs;
+    signs.fill(kNotYet);
+    if (inherited)
+      for (int k = 0; k < Separation::kCount; ++k)
+        if ((*inherited)[k] != kUnknown) signs[k] = (*inherited)[k];
     if (depth >= kDirectionDepth) {
       bool split = false;
-      const Step s = analyse(lo, hi, &split);
+      const Step s = analyse(lo, hi, &split, &signs);
       if (!split) return s;
     }
     const double mid = lo + 0.5 * (hi - lo);  // rounded upwards: in (lo, hi] or hi
@@ -162,9 +173,9 @@ class FirstWithinSearch {
       if (depth >= kDirectionDepth) bracket(lo, hi);
       return Step::give_up;
     }
-    const Step left = search(lo, mid, depth + 1);
+    const Step left = search(lo, mid, depth + 1, &signs);
     if (left != Step::excluded) return left;
-    return search(mid, hi, depth + 1);
+    return search(mid, hi, depth + 1, &signs);
   }
 
   /// Replaces the table by the exact coefficients' enclosures; false when it already is.
@@ -213,11 +224,10 @@ class FirstWithinSearch {
   /// The signs of every region polynomial over [lo, hi]; *split when a finer piece may
   /// decide what this one cannot. The signs are computed when first read: the optimistic test
   /// often excludes a piece after a few of them.
-  Step analyse(double lo, double hi, bool* split) {
+  /// `sign`: the signs known over the piece (inherited from enclosing pieces), completed here.
+  Step analyse(double lo, double hi, bool* split, Signs* signs) {
     const auto& polys = table().poly;
-    constexpr signed char kNotYet = 3;
-    std::array<signed char, Separation::kCount> sign;
-    sign.fill(kNotYet);
+    Signs& sign = *signs;
     auto sign_of = [&](int k) {
       if (sign[k] == kNotYet) {
         const CertifiedSign s = sign_over(polys[k], lo, hi);
