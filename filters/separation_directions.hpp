@@ -110,16 +110,19 @@ EXACTCCD_CERTIFIED Eigen::Vector3d oriented(const Eigen::Vector3d& s,
 
 /// Direction guesses in plain arithmetic (never a decision), each oriented with the first
 /// primitive (the vertex, the edge a) on its positive side, tried in turn by `apart_along`
-/// until one separates: the vector between the closest points, then (only then computed) the
-/// triangle's normal or the edges' cross product.
+/// until one separates: the vector between the closest points, then (only then computed, and
+/// only with `normal_too`: over the whole step, where it decides some pairs; over a piece of
+/// the search it rarely does and costs a second test) the triangle's normal or the edges'
+/// cross product.
 template <class ApartAlong>
 EXACTCCD_CERTIFIED bool vertex_face_guesses_separate(const Eigen::Vector3d& p,
                                                      const Eigen::Vector3d& a,
                                                      const Eigen::Vector3d& b,
                                                      const Eigen::Vector3d& c,
-                                                     ApartAlong&& apart_along) {
+                                                     ApartAlong&& apart_along,
+                                                     bool normal_too = true) {
   return apart_along(p - closest_on_triangle(p, a, b, c)) ||
-         apart_along(oriented((b - a).cross(c - a), p - a));
+         (normal_too && apart_along(oriented((b - a).cross(c - a), p - a)));
 }
 
 template <class ApartAlong>
@@ -127,11 +130,13 @@ EXACTCCD_CERTIFIED bool edge_edge_guesses_separate(const Eigen::Vector3d& a0,
                                                    const Eigen::Vector3d& a1,
                                                    const Eigen::Vector3d& b0,
                                                    const Eigen::Vector3d& b1,
-                                                   ApartAlong&& apart_along) {
+                                                   ApartAlong&& apart_along,
+                                                   bool normal_too = true) {
   const auto [ca, cb] = closest_on_segments(a0, a1, b0, b1);
   const Eigen::Vector3d between = ca - cb;
   return apart_along(between) ||
-         apart_along(oriented((a1 - a0).cross(b1 - b0), between.isZero(0.0) ? a0 - b0 : between));
+         (normal_too && apart_along(oriented((a1 - a0).cross(b1 - b0),
+                                             between.isZero(0.0) ? a0 - b0 : between)));
 }
 
 /// True when gap (a lower bound of the gap along s, at every time of the piece) certainly
@@ -220,7 +225,7 @@ struct VertexFaceMotion {
     const double mid = 0.5 * (T.inf() + T.sup());
     return vertex_face_guesses_separate(
         v[0].guess_at(mid), v[1].guess_at(mid), v[2].guess_at(mid), v[3].guess_at(mid),
-        [&](const Eigen::Vector3d& s) { return apart_along(s, ends, delta2.sup()); });
+        [&](const Eigen::Vector3d& s) { return apart_along(s, ends, delta2.sup()); }, false);
   }
 };
 
@@ -238,7 +243,7 @@ struct EdgeEdgeMotion {
     const double mid = 0.5 * (T.inf() + T.sup());
     return edge_edge_guesses_separate(
         v[0].guess_at(mid), v[1].guess_at(mid), v[2].guess_at(mid), v[3].guess_at(mid),
-        [&](const Eigen::Vector3d& s) { return apart_along(s, ends, delta2.sup()); });
+        [&](const Eigen::Vector3d& s) { return apart_along(s, ends, delta2.sup()); }, false);
   }
 };
 
