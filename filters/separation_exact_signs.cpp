@@ -288,30 +288,60 @@ Vec plus3(const Vec& a, const Vec& b) { return {a[0] + b[0], a[1] + b[1], a[2] +
 
 }  // namespace
 
+dd::DoubleDouble ExactSignsAtDoubles::dd_value(KernelKind kind,
+                                               const dd::DoubleDouble (&d)[3][3],
+                                               const dd::DoubleDouble& delta2) {
+  using Kind = KernelKind;
+  switch (kind) {
+    case Kind::capsule: {  // (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
+      const dd::DoubleDouble ee = dd::dot(d[1], d[1]), we = dd::dot(d[0], d[1]);
+      return (dd::dot(d[0], d[0]) * ee - we * we) - delta2 * ee;
+    }
+    case Kind::face_like: {  // (W.m)^2 - delta^2 (m.m), m = U x V
+      const dd::DoubleDouble m[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1],
+                                     d[0][2] * d[1][0] - d[0][0] * d[1][2],
+                                     d[0][0] * d[1][1] - d[0][1] * d[1][0]};
+      const dd::DoubleDouble wm = dd::dot(d[2], m);
+      return wm * wm - delta2 * dd::dot(m, m);
+    }
+    case Kind::sphere: return dd::dot(d[0], d[0]) - delta2;
+    case Kind::projection: return dd::dot(d[0], d[1]);
+  }
+  return {};
+}
+
 double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo,
                                           double hi) const {
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   if (!(lo >= 0 && lo <= 1)) return kNone;
-  const KernelValue v = kernel_value_at(kernel, lo);
-  if (v.sign == 0) return kNone;
-  // Plain arithmetic from here (a guess): the coordinates divided by 2^(E + L) (magnitudes at
+  // g(lo) exact when it has just been computed, else in double-double below.
+  const bool exact_known = last_.vertices == kernel.vertices && last_.t == lo;
+  const KernelValue v = exact_known ? last_.value : KernelValue{};
+  if (exact_known && v.sign == 0) return kNone;
+  // A guess from here, rounding to nearest: the coordinates divided by 2^(E + L) (magnitudes at
   // most 1), the differences and their changes over the step at lo, and g'(lo) in those units.
+  const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
   const int shift = q_.common_exponent + q_.bits;
   auto coordinate = [&](int end, int vertex, int axis) {
     const exact::Dyadic& x = q_.coords[end][vertex][axis];
     return std::ldexp(static_cast<double>(x.mantissa), x.exponent - shift);
   };
   Vec d[3], step[3];
+  dd::DoubleDouble dd_d[3][3];  // the differences at lo in double-double
   for (int j = 0; j < 3; ++j)
     for (int c = 0; c < 3; ++c) {
       const int o = kernel.vertices->origin[j], e = kernel.vertices->end[j];
-      const double d0 = coordinate(0, e, c) - coordinate(0, o, c);
-      step[j][c] = (coordinate(1, e, c) - coordinate(1, o, c)) - d0;
-      d[j][c] = d0 + lo * step[j][c];
+      const dd::DoubleDouble d0 = dd::difference(coordinate(0, e, c), coordinate(0, o, c));
+      const dd::DoubleDouble change =
+          dd::difference(coordinate(1, e, c), coordinate(1, o, c)) - d0;
+      dd_d[j][c] = d0 + dd::DoubleDouble{lo, 0.0} * change;
+      step[j][c] = change.hi;
+      d[j][c] = dd_d[j][c].hi;
     }
   const exact::Dyadic& dx = q_.delta;
   const double delta = std::ldexp(static_cast<double>(dx.mantissa), dx.exponent - shift);
   const double delta2 = delta * delta;
+  const dd::DoubleDouble dd_delta2 = dd::DoubleDouble{delta, 0.0} * dd::DoubleDouble{delta, 0.0};
   double slope = 0;
   int degree = 0;
   const Vec &w = d[0], &e = d[1], &w1 = step[0], &e1 = step[1];
@@ -341,10 +371,16 @@ double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo
       break;
   }
   // g(lo) in the same units: the integer value is 2^(d(k - E)) g(lo), the unit 2^(E + L).
-  const double value =
-      std::ldexp(v.value.mantissa,
-                 static_cast<int>(std::max(-4000L, std::min(4000L, v.value.exponent -
-                                                                        degree * (static_cast<long>(v.k) + q_.bits)))));
+  double value = 0;
+  if (exact_known) {
+    value = std::ldexp(v.value.mantissa,
+                       static_cast<int>(std::max(
+                           -4000L, std::min(4000L, v.value.exponent -
+                                                       degree * (static_cast<long>(v.k) + q_.bits)))));
+  } else {
+    value = dd_value(kernel.kind, dd_d, dd_delta2).hi;
+    if (value == 0) return kNone;
+  }
   const double guess = lo - value / slope;
   return std::isfinite(guess) && guess > lo && guess < hi ? guess : kNone;
 }

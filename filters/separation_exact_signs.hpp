@@ -18,6 +18,7 @@
 
 #include "core/predicates/motion.hpp"
 #include "exact/separation_integers.hpp"
+#include "filters/double_double.hpp"
 #include "filters/interval.hpp"
 #include "filters/separation_filter.hpp"
 
@@ -93,9 +94,12 @@ class ExactSignsAtDoubles {
   };
   KernelValue kernel_value_at(const IntegerKernel& kernel, double t) const;
   int kernel_sign(const IntegerKernel& kernel, double t) const;
-  /// A Newton step from lo: g(lo) exact (its leading bits), g'(lo) in plain arithmetic; NaN
-  /// when it leaves (lo, hi).
+  /// A Newton step from lo: g(lo) exact (its leading bits) when just computed, else in
+  /// double-double; g'(lo) in plain arithmetic; NaN when it leaves (lo, hi).
   double kernel_newton(const IntegerKernel& kernel, double lo, double hi) const;
+  /// A kernel's polynomial from its differences at a time in double-double (a guess's value).
+  static dd::DoubleDouble dd_value(KernelKind kind, const dd::DoubleDouble (&d)[3][3],
+                                   const dd::DoubleDouble& delta2);
   /// The differences of a kernel in FixedInt (formed when first needed, the last kernel's
   /// kept; none when the coordinates need more than the widest fixed width).
   const exact::StoredStepDifferences* fixed_differences(const exact::DifferenceVertices& v) const;
