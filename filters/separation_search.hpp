@@ -12,8 +12,6 @@
 #include <functional>
 #include <limits>
 #include <optional>
-#include <cstdio>
-#include <cstdlib>
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/motion.hpp"
@@ -266,7 +264,6 @@ class FirstWithinSearch {
       if (s != Step::give_up) return s;
     }
     if (uncertain != 1 || which >= Separation::kNonStrictCount) {
-      if (std::getenv("SEPDBG") && hi - lo < 1e-9) { std::fprintf(stderr, "giveup [%.17g,%.17g] unc:", lo, hi); for (int k = 0; k < Separation::kCount; ++k) if (sign_of(k)==kUnknown) std::fprintf(stderr, " %d", k); std::fprintf(stderr, " | signs:"); for (int k = 0; k < Separation::kCount; ++k) std::fprintf(stderr, "%d,", sign[k]); std::fprintf(stderr, "\n"); }
       *split = true;
       return Step::give_up;
     }
@@ -274,7 +271,6 @@ class FirstWithinSearch {
     const Poly6& g = polys[which];
     const CertifiedSign slope = sign_over(derivative_of(g), lo, hi);
     if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero) {
-      if (std::getenv("SEPDBG") && hi - lo < 1e-9) std::fprintf(stderr, "slope-unc [%.17g,%.17g] k=%d\n", lo, hi, which);
       *split = true;
       return Step::give_up;
     }
