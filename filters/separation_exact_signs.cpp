@@ -238,7 +238,9 @@ auto ExactSignsAtDoubles::kernel_values(const IntegerKernel& kernel,
         out[i] = exact::approximate(v);
       };
       switch (kernel.kind) {
-        case KernelKind::face_like: take(exact::face_like_value<Ints>(differences, ts[i], k)); break;
+        case KernelKind::face_like:
+          take(exact::face_like_value<Ints>(differences, ts[i], k));
+          break;
         case KernelKind::capsule: take(exact::capsule_value<Ints>(differences, ts[i], k)); break;
         case KernelKind::sphere: take(exact::sphere_value<Ints>(differences, ts[i], k)); break;
         case KernelKind::projection:
@@ -373,10 +375,8 @@ double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo
   // g(lo) in the same units: the integer value is 2^(d(k - E)) g(lo), the unit 2^(E + L).
   double value = 0;
   if (exact_known) {
-    value = std::ldexp(v.value.mantissa,
-                       static_cast<int>(std::max(
-                           -4000L, std::min(4000L, v.value.exponent -
-                                                       degree * (static_cast<long>(v.k) + q_.bits)))));
+    const long exponent = v.value.exponent - degree * (static_cast<long>(v.k) + q_.bits);
+    value = std::ldexp(v.value.mantissa, static_cast<int>(std::clamp(exponent, -4000L, 4000L)));
   } else {
     value = dd_value(kernel.kind, dd_d, dd_delta2).hi;
     if (value == 0) return kNone;

@@ -5,7 +5,8 @@
 // the common positive scale changes no sign. Polynomial 0 (the face or interior region), the
 // capsules' sides, the end spheres and the sides' projections, the ones the search tightens,
 // run in fixed-width integers chosen from proven bounds (exact/separation_integers.hpp: no
-// allocation); the others, and these beyond the widest fixed width, in GMP (allocates). PROOF: proofs/min_separation.md#interval-search
+// allocation); the others, and these beyond the widest fixed width, in GMP (allocates).
+// PROOF: proofs/min_separation.md#interval-search
 // PROOF: proofs/min_separation.md#fixed-width-signs
 #pragma once
 
