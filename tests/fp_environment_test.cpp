@@ -144,6 +144,53 @@ TEST(FpEnvironment, ScaledRandomQueriesEqualCleanResultsUnderEveryHostState) {
   EXPECT_GT(contacts, 20u);  // the sweep must exercise contacts, not only culled misses
 }
 
+/// Minimum-separation CCD under every host state: its whole-step test rounds to nearest with a
+/// proven error bound (proofs/min_separation.md#whole-step), relying on the entry's
+/// round-to-nearest, no flush-to-zero and no denormals-are-zero; the search sets upward
+/// rounding itself. Random queries of the families whose exact procedure is affordable, scaled
+/// by 2^k down to 2^-600 with delta scaled alike: every result equals the clean one, the clean
+/// one the exact path's, and the register is given back.
+TEST(FpEnvironment, MinimumSeparationEqualsCleanResultsUnderEveryHostState) {
+  const std::uint64_t seed = seed_from_environment(0x5e9a);
+  std::printf("[ seed     ] EXACTCCD_TEST_SEED=%llu\n", static_cast<unsigned long long>(seed));
+  const std::vector<unsigned> states = hostile_states();
+  std::size_t checks = 0, within = 0, mismatches = 0;
+  for (int k = -600; k <= 0; k += 150) {
+    for (const Generator& g : all_generators()) {
+      if (g.family == Family::wide_exponent_300 || g.family == Family::wide_exponent_1000 ||
+          g.family == Family::huge_triangle_subnormal_motion)
+        continue;  // the exact reference would dominate the test's time
+      DoubleQuery q = generate(g, seed, static_cast<std::uint64_t>(k + 600));
+      for (Eigen::Vector3d& v : q.v) v = std::ldexp(1.0, k) * v;
+      CcdOptions options;
+      options.min_separation = std::ldexp(1.0, k - 5);
+      const CcdResult clean = ccd(q, options);
+      const CcdResult exact = ccd(q, with_mode(options, Mode::exact));
+      ASSERT_EQ(clean.collides, exact.collides) << describe(q);
+      if (clean.collides) {
+        ++within;
+        ASSERT_TRUE(same_bits(clean.toi_lo, exact.toi_lo) &&
+                    same_bits(clean.toi_hi, exact.toi_hi))
+            << describe(q);
+      }
+      for (std::size_t s = static_cast<std::size_t>(k + 600) % 4; s < states.size(); s += 4) {
+        CcdResult r;
+        const unsigned after = run_under(states[s], [&] { r = ccd(q, options); });
+        ++checks;
+        if (after != states[s] || !same(r, clean)) {
+          if (++mismatches <= 5)
+            ADD_FAILURE() << std::hex << "MXCSR " << states[s] << " left " << after << ": "
+                          << describe(q) << " clean " << describe(clean) << " got "
+                          << describe(r);
+        }
+      }
+    }
+  }
+  std::printf("%zu checks, %zu within delta\n", checks, within);
+  EXPECT_EQ(mismatches, 0u);
+  EXPECT_GT(within, 5u);  // the sweep must reach the search and the exact stages, not only culling
+}
+
 /// Every mode, both query types, and the rational API leave the state as found; a throwing
 /// call does too.
 TEST(FpEnvironment, StateRestoredOnReturnAndOnThrowForEveryEntryPoint) {
