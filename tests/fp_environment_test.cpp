@@ -79,6 +79,21 @@ bool same(const CcdResult& a, const CcdResult& b) {
          same_bits(a.toi_hi, b.toi_hi) && a.decided_by == b.decided_by;
 }
 
+/// Decides q under every `step`-th host state from `first`: each result must equal `clean` and
+/// each call must give the register back. Counts the checks; reports the first mismatches.
+void check_under_states(const DoubleQuery& q, const CcdOptions& options, const CcdResult& clean,
+                        const std::vector<unsigned>& states, std::size_t first,
+                        std::size_t step, std::size_t* checks, std::size_t* mismatches) {
+  for (std::size_t s = first; s < states.size(); s += step) {
+    CcdResult r;
+    const unsigned after = run_under(states[s], [&] { r = ccd(q, options); });
+    ++*checks;
+    if ((after != states[s] || !same(r, clean)) && ++*mismatches <= 5)
+      ADD_FAILURE() << std::hex << "MXCSR " << states[s] << " left " << after << ": "
+                    << describe(q) << " clean " << describe(clean) << " got " << describe(r);
+  }
+}
+
 TEST(FpEnvironment, IssueExampleUnderFlushToZeroAndDenormalsAreZero) {
   const VertexFaceQuery q = issue9_query();
   // The exact path (rationals, no floating point) is the independent reference; the issue's
@@ -124,18 +139,9 @@ TEST(FpEnvironment, ScaledRandomQueriesEqualCleanResultsUnderEveryHostState) {
               << describe(q);
         }
         // Every 8th state per query keeps the test short; over the queries all are covered.
-        for (std::size_t s = (i + static_cast<std::size_t>(k + 1034)) % 8; s < states.size();
-             s += 8) {
-          CcdResult r;
-          const unsigned after = run_under(states[s], [&] { r = ccd(q, CcdOptions{}); });
-          ++checks;
-          if (after != states[s] || !same(r, clean)) {
-            if (++mismatches <= 5)
-              ADD_FAILURE() << std::hex << "MXCSR " << states[s] << " left " << after << ": "
-                            << describe(q) << " clean " << describe(clean) << " got "
-                            << describe(r);
-          }
-        }
+        check_under_states(q, CcdOptions{}, clean, states,
+                           (i + static_cast<std::size_t>(k + 1034)) % 8, 8, &checks,
+                           &mismatches);
       }
     }
   }
@@ -173,17 +179,8 @@ TEST(FpEnvironment, MinimumSeparationEqualsCleanResultsUnderEveryHostState) {
                     same_bits(clean.toi_hi, exact.toi_hi))
             << describe(q);
       }
-      for (std::size_t s = static_cast<std::size_t>(k + 600) % 4; s < states.size(); s += 4) {
-        CcdResult r;
-        const unsigned after = run_under(states[s], [&] { r = ccd(q, options); });
-        ++checks;
-        if (after != states[s] || !same(r, clean)) {
-          if (++mismatches <= 5)
-            ADD_FAILURE() << std::hex << "MXCSR " << states[s] << " left " << after << ": "
-                          << describe(q) << " clean " << describe(clean) << " got "
-                          << describe(r);
-        }
-      }
+      check_under_states(q, options, clean, states, static_cast<std::size_t>(k + 600) % 4, 4,
+                         &checks, &mismatches);
     }
   }
   std::printf("%zu checks, %zu within delta\n", checks, within);
