@@ -79,8 +79,12 @@ TEST_F(CliTest, BenchRunsEachSeparationAgainstTheExactPath) {
                                   "--min-separation", "0.125", "--relative-separation",
                                   file.string()});
   ASSERT_EQ(relative.status, 0) << relative.err;
-  EXPECT_DOUBLE_EQ(nlohmann::json::parse(relative.out)[0]["min_separation"].get<double>(),
-                   0.125 * std::sqrt(11.0));
+  const auto row = nlohmann::json::parse(relative.out)[0];
+  EXPECT_DOUBLE_EQ(row["min_separation"].get<double>(), 0.125 * std::sqrt(11.0));
+  // The report's minimum-separation section reads the size and the factor back.
+  EXPECT_DOUBLE_EQ(row["size"].get<double>(), std::sqrt(11.0));
+  EXPECT_EQ(row["min_separation_factor"].get<double>(), 0.125);
+  EXPECT_FALSE(j[0].contains("min_separation_factor"));  // absolute deltas carry none
 }
 
 TEST_F(CliTest, RejectsNegativeOrNonFiniteMinimumSeparation) {

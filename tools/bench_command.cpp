@@ -144,6 +144,8 @@ struct Measurement {
   std::string dataset;
   Mode mode = Mode::filtered;
   double delta = 0.0;  // the minimum separation of the run (0: contact)
+  double size = 0.0;  // the data set's size (box diagonal), which a relative delta multiplies
+  double factor = -1.0;  // delta / size as given with --relative-separation; -1: delta absolute
   // Against the exact path's TOIs (delta > 0 only): contacts both report whose toi_lo lies
   // after the exact toi_hi (not conservative), and the largest |toi_lo - exact toi_lo|.
   bool toi_checked = false;
@@ -277,6 +279,8 @@ void print_json(const std::vector<Measurement>& results, const std::vector<Datas
     j["dataset"] = m.dataset;
     j["mode"] = to_string(m.mode);
     j["min_separation"] = m.delta;
+    j["size"] = m.size;
+    if (m.factor >= 0) j["min_separation_factor"] = m.factor;
     if (m.toi_checked) {
       j["late_tois"] = m.late_tois;
       j["max_toi_error"] = m.max_toi_error;
@@ -339,9 +343,12 @@ int run_bench(const BenchOptions& options) {
       // delta > 0: the truth column (for contact) does not apply; the exact path's does.
       std::optional<ExactAnswers> exact;
       if (delta > 0) exact = exact_answers(d, delta);
-      for (const Mode mode : options.modes)
+      for (const Mode mode : options.modes) {
         results.push_back(measure(d, mode, delta, exact ? &*exact : nullptr, options.repetitions,
                                   overhead_ns));
+        results.back().size = size;
+        if (options.relative_separation) results.back().factor = separation;
+      }
     }
     if (options.relative_separation) {
       char note[160];

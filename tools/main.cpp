@@ -191,7 +191,8 @@ int main(int argc, char** argv) {
       "three single calls.\n\n" +
       std::string(kExitStatusHelp));
   bench->add_flag("--json", bench_options.json,
-                  "Print a JSON array, one object per data set and mode (dataset, mode, queries, "
+                  "Print a JSON array, one object per data set, delta and mode (dataset, mode, "
+                  "min_separation, size, min_separation_factor, queries, "
                   "mean_ns, median_ns, false_positives, false_negatives, stage_share, ...)");
   // One comma-separated argument each (as the study's --widths), so that a PATH after them stays
   // a PATH.

@@ -9,11 +9,15 @@
 # hard families of `exactccd generate` (resting, stacked, wide exponents, 2^+-1000 scalings), the
 # sample queries scaled by 2^+-1000, and the simulation-like set, and writes
 # bench/report/REPORT.md, bench/report/speed_vs_error_<dataset>.png and bench/report/toi_error.png
-# (the study's raw JSON too when $EXACTCCD_STUDY_JSON names a file). Plots need Debian's
+# (the study's raw JSON too when $EXACTCCD_STUDY_JSON names a file), and a minimum-separation
+# section (issue 12: `exactccd bench --min-separation` on the sample queries, the
+# simulation-like set and the generated minimum-separation families, with
+# bench/report/min_separation.png). Plots need Debian's
 # python3-matplotlib (.ci/install-deps.sh --with-plots installs it). About 6 minutes on a
-# 2-core machine, mostly the exact path timed on the 1.2 million simulation-like queries.
-# Exit status: the study's (0: the certified methods showed no false positive, false negative
-# or late TOI); 2 when matplotlib is missing or the study could not run.
+# 2-core machine, mostly the exact path timed on the 1.2 million simulation-like queries, and
+# about 4 more for the minimum-separation runs.
+# Exit status: the worst of the study's and the benches' (0: the certified methods showed no
+# false positive, false negative or late TOI); 2 when matplotlib is missing or the study could not run.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -75,6 +79,44 @@ if [[ $status -gt 1 ]]; then
   exit "$status"
 fi
 
+# Minimum separation (issue 12): exactccd at delta against the common practice (float_only at
+# delta > 0), on the sample queries and the simulation-like set at delta = 1e-8, 1e-6, 1e-4 of
+# each set's size (0 too: the same run's contact path, for the ratio), and on the
+# minimum-separation families generated for each delta (absolute: the families are built around
+# their delta, so their box is no scene size; their truth column holds for that delta only).
+separation_specs=()
+separation_commands=()
+bench_separation() {  # NAME OUT ARGS...: one `exactccd bench --json` run
+  local name=$1 out=$2
+  shift 2
+  local run=("$exactccd" bench --json --repetitions 3 "$@")
+  echo "make_report: ${run[*]}" >&2
+  local code=0
+  "${run[@]}" > "$out" || code=$?
+  if [[ $code -gt 1 ]]; then
+    echo "make_report: exactccd bench failed (exit status $code)" >&2
+    exit "$code"
+  fi
+  if [[ $code -gt $status ]]; then status=$code; fi
+  separation_specs+=("$name=$out")
+  separation_commands+=("exactccd bench --json --repetitions 3 $(sed "s|$tmp|TMP|g" <<< "$*")")
+}
+bench_separation sample-queries "$tmp/separation-sample.json" \
+  --modes float_only,default,exact --min-separation 0,1e-8,1e-6,1e-4 --relative-separation \
+  tests/data/sample-queries
+bench_separation simulation "$tmp/separation-simulation.json" \
+  --modes float_only,default --min-separation 0,1e-8,1e-6,1e-4 --relative-separation \
+  --simulation --steps 24 --seed 1
+for delta in 1e-8 1e-6 1e-4; do
+  "$exactccd" generate --out "$tmp/separation-families-$delta" --min-separation "$delta" \
+    > /dev/null
+  bench_separation "min-separation families" "$tmp/separation-families-$delta.json" \
+    --modes float_only,default,exact --min-separation "$delta" \
+    "$tmp/separation-families-$delta"
+done
+separation_command=$(printf '%s; ' "${separation_commands[@]}")
+separation_command="for delta in 1e-8 1e-6 1e-4: exactccd generate --out TMP/separation-families-\$delta --min-separation \$delta; then ${separation_command%; }"
+
 compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
 compiler_version=$("${compiler:-c++}" --version | head -n 1)
 commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
@@ -88,6 +130,7 @@ if [[ -n ${EXACTCCD_STUDY_JSON:-} ]]; then cp "$tmp/study.json" "$EXACTCCD_STUDY
 /usr/bin/python3 "$out/plot_report.py" --json "$tmp/study.json" --tables "$tmp/tables.md" \
   --out-dir "$out" --command "bash bench/report/make_report.sh" \
   --study-command "exactccd study --json --out-md TABLES ${simulation_args[*]} ${paths[*]}" \
-  --compiler "$compiler_version" --commit "$commit" --study-status "$status"
+  --compiler "$compiler_version" --commit "$commit" --study-status "$status" \
+  --min-separation "${separation_specs[@]}" --min-separation-command "$separation_command"
 echo "make_report: wrote $out/REPORT.md and its plots" >&2
 exit "$status"

@@ -182,6 +182,120 @@ def toi_error_plot(datasets, path):
     plt.close(fig)
 
 
+# ---------------------------------------------------------------------------------------------
+# Minimum separation (issue 12): `exactccd bench --json --min-separation ...` runs.
+
+def load_min_separation(specs):
+    """[(name, [bench JSON objects])] in the order given; specs are NAME=FILE, several files
+    may share a NAME (one set benched at several absolute deltas)."""
+    sets = {}
+    for spec in specs:
+        name, _, path = spec.partition("=")
+        if not path:
+            raise SystemExit(f"plot_report: --min-separation wants NAME=FILE, got {spec!r}")
+        with open(path) as f:
+            sets.setdefault(name, []).extend(json.load(f))
+    return list(sets.items())
+
+
+def separation_method(row):
+    if row["mode"] == "float_only":
+        return "float cubic" if row["min_separation"] == 0 else "common practice"
+    return row["mode"]
+
+
+def separation_label(row):
+    if "min_separation_factor" in row:
+        f = row["min_separation_factor"]
+        return "0" if f == 0 else f"{f:g} x size"
+    return f'{row["min_separation"]:g}'
+
+
+def fmt_time(ns):
+    return f"{ns / 1000:.2f} µs" if ns >= 1000 else f"{ns:.1f} ns"
+
+
+def min_separation_table(rows):
+    """One line per delta and method; 'vs delta = 0' is the mean over the same set's delta = 0
+    mean in the same mode (the cost of asking for a separation)."""
+    at_zero = {r["mode"]: r["mean_ns"] for r in rows if r["min_separation"] == 0}
+    out = ["| delta | method | mean | vs delta = 0 | median | false pos. / neg. | late TOIs | "
+           "max TOI error |",
+           "|---|---|---:|---:|---:|:---:|---:|---:|"]
+    for r in rows:
+        zero = r["min_separation"] == 0
+        ratio = "" if zero or r["mode"] not in at_zero else \
+            f'{r["mean_ns"] / at_zero[r["mode"]]:.2f}x'
+        late = "-" if "late_tois" not in r else f'{r["late_tois"]:,}'
+        err = "-" if "max_toi_error" not in r else fmt_err(r["max_toi_error"])
+        out.append(f'| {separation_label(r)} | {separation_method(r)} | {fmt_time(r["mean_ns"])} | '
+                   f'{ratio} | {fmt_time(r["median_ns"])} | {r["false_positives"]:,} / '
+                   f'{r["false_negatives"]:,} | {late} | {err} |')
+    return "\n".join(out)
+
+
+def min_separation_plot(sets, path):
+    """Per set: mean time against wrong verdicts + late TOIs, one marker per method, one
+    colour per delta."""
+    fig, axes = plt.subplots(1, len(sets), figsize=(4.6 * len(sets), 4.2), dpi=100,
+                             squeeze=False)
+    markers = {"float cubic": "v", "common practice": "^", "default": "o", "exact": "s"}
+    for ax, (name, rows) in zip(axes[0], sets):
+        labels = []
+        for r in rows:
+            if r["min_separation"] != 0 and separation_label(r) not in labels:
+                labels.append(separation_label(r))
+        colours = dict(zip(labels, ["#9ecae1", "#3182bd", "#08306b", "#6a51a3", "#54278f"]))
+        for r in rows:
+            if r["min_separation"] == 0:
+                continue
+            method = separation_method(r)
+            wrong = r["false_positives"] + r["false_negatives"] + r.get("late_tois", 0)
+            ax.scatter(r["mean_ns"], wrong, s=60, c=colours[separation_label(r)],
+                       marker=markers.get(method, "D"), edgecolors="black", linewidths=0.6,
+                       zorder=3, label=f"{method}, delta {separation_label(r)}")
+        ax.set_xscale("log")
+        ax.set_yscale("symlog", linthresh=1)
+        worst = max(r["false_positives"] + r["false_negatives"] + r.get("late_tois", 0)
+                    for r in rows)
+        ax.set_ylim(bottom=-1, top=max(10, 6 * worst))
+        ax.margins(x=0.15)
+        ax.set_xlabel("mean time per query (ns, log scale)", fontsize=8)
+        ax.set_ylabel("false pos. + false neg. + late TOIs", fontsize=8)
+        ax.set_title(f'{name} ({rows[0]["queries"]:,} queries)', fontsize=9)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=5.5, loc="upper right", framealpha=0.9)
+    fig.suptitle("Minimum separation: speed against error (every delta > 0)", fontsize=9.5)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def min_separation_section(sets, command):
+    lines = ["## Minimum separation (barrier methods)", "",
+             f"From `{command}`. A query comes within delta iff the Euclidean distance between "
+             "the closed primitives is at most delta at some t in [0, 1]; truth and exact TOIs "
+             "come from the exact path at each delta (`proofs/min_separation.md`). Methods: "
+             "`common practice` (the float cubic's roots, the distance at each root compared "
+             "with delta, uncertified: `float_only` with delta > 0), `default` (exactccd's "
+             "certified path at delta, TOIs tightened to adjacent doubles), `exact` (the exact "
+             "procedure alone). delta as `F x size` is F times the set's size (the diagonal of "
+             "the box of all its coordinates); a bare number is an absolute delta. Late TOIs: "
+             "contacts whose reported toi_lo lies after the exact toi_hi (the simulator advances "
+             "past the first time within delta); max TOI error: the largest |toi_lo - exact "
+             "toi_lo| over the contacts both report. `vs delta = 0`: the mean over the same "
+             "mode's mean at delta = 0 in the same run.", "",
+             "![minimum separation: speed against error](min_separation.png)", ""]
+    for name, rows in sets:
+        relative = any("min_separation_factor" in r for r in rows)
+        lines += [f"### {name}", "",
+                  f'{rows[0]["queries"]:,} queries' +
+                  (f'; size (box diagonal) {rows[0]["size"]:.6g}.' if relative else
+                   "; delta absolute."), "",
+                  min_separation_table(rows), ""]
+    return lines
+
+
 def summary_table(datasets):
     """One row per method; per data set: mean ns/query and FP / FN / late TOIs."""
     head = "| method | " + " | ".join(
@@ -208,6 +322,10 @@ def main():
     parser.add_argument("--compiler", default="")
     parser.add_argument("--commit", default="")
     parser.add_argument("--study-status", type=int, default=0)
+    parser.add_argument("--min-separation", nargs="*", default=[], metavar="NAME=FILE",
+                        help="exactccd bench --json --min-separation output, one set each")
+    parser.add_argument("--min-separation-command", default="",
+                        help="the exactccd bench commands that made them")
     args = parser.parse_args()
 
     with open(args.json) as f:
@@ -222,6 +340,9 @@ def main():
         speed_vs_error_plot(d, os.path.join(args.out_dir, name))
         plots.append((d["name"], name))
     toi_error_plot(datasets, os.path.join(args.out_dir, "toi_error.png"))
+    separation_sets = load_min_separation(args.min_separation)
+    if separation_sets:
+        min_separation_plot(separation_sets, os.path.join(args.out_dir, "min_separation.png"))
 
     now = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     timing = study["timing"]
@@ -259,7 +380,7 @@ def main():
         "",
     ]
     if args.study_status != 0:
-        lines += ["**WARNING: `exactccd study` exited with status "
+        lines += ["**WARNING: `exactccd study` or a minimum-separation bench exited with status "
                   f"{args.study_status}: a certified method disagreed with the reference.**", ""]
     lines += ["## Summary", "", summary_table(datasets), "",
               "FP / FN / late: false positives / false negatives / late (non-conservative) TOIs.",
@@ -268,6 +389,8 @@ def main():
     for name, png in plots:
         lines += [f"![speed versus error, {name}]({png})", ""]
     lines += ["![TOI error per method](toi_error.png)", ""]
+    if separation_sets:
+        lines += min_separation_section(separation_sets, args.min_separation_command)
     lines += ["## Per data set", "", tables.strip(), ""]
     with open(os.path.join(args.out_dir, "REPORT.md"), "w") as f:
         f.write("\n".join(lines))
