@@ -87,9 +87,10 @@ EXACTCCD_CERTIFIED std::pair<Eigen::Vector3d, Eigen::Vector3d> closest_on_segmen
     if (e <= 0) {
       s = std::clamp(-c / a, 0.0, 1.0);
     } else {
-      const double b = d1.dot(d2), denom = a * e - b * b;
+      // 1 / e in parallel with the first division rather than a second division after it.
+      const double b = d1.dot(d2), denom = a * e - b * b, inverse_e = 1.0 / e;
       s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
+      t = (b * s + f) * inverse_e;
       if (t < 0) {
         t = 0;
         s = std::clamp(-c / a, 0.0, 1.0);
@@ -211,6 +212,52 @@ EXACTCCD_CERTIFIED bool apart_on_an_axis(const EndPositions<N1, N2>& ends, doubl
   return false;
 }
 
+/// Conservative advancement from a cleared time lo along the direction s guessed there (the
+/// first N1 of v the first primitive, on s's positive side): the piece [lo, end] certified more
+/// than delta apart along s (§4b, the gap read at its two ends), end as far as the gap's linear
+/// extrapolation allows, or lo when none is certified. *estimate: the time at which that
+/// extrapolation reaches delta (a guess, never a decision; +infinity when the gap along s
+/// does not shrink). PROOF: proofs/min_separation.md#conservative-advancement
+template <std::size_t N1>
+EXACTCCD_CERTIFIED double advance_along(const std::array<MovingVertex, 4>& v,
+                                        const std::array<Eigen::Vector3d, 4>& at_lo,
+                                        const Eigen::Vector3d& s, double lo, double t_max,
+                                        double delta2_upper, double delta, double* estimate) {
+  constexpr std::size_t N2 = 4 - N1;
+  *estimate = lo;
+  if (!usable(s)) return lo;
+  // The gap along s between vertex i of the first and j of the second is linear in t: its
+  // first zero (less delta |s|) over all pairs is where the concave gap reaches delta.
+  const double reach = delta * s.norm();
+  double first = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < N1; ++i)
+    for (std::size_t j = N1; j < 4; ++j) {
+      const double value = s.dot(at_lo[i] - at_lo[j]) - reach;
+      if (!(value > 0)) return lo;
+      double rate = 0;
+      for (int k = 0; k < 3; ++k) rate += s[k] * (v[i].dx[k].inf() - v[j].dx[k].inf());
+      if (rate < 0) first = std::min(first, lo + value / -rate);
+    }
+  *estimate = first;
+  // Seven eighths of the way: the gap at the end stays well above the rounding errors.
+  double end = first >= t_max ? t_max : lo + 0.875 * (first - lo);
+  for (int attempt = 0; attempt < 2 && end > lo; ++attempt) {
+    EndPositions<N1, N2> ends;
+    const Interval l(lo), h(std::min(end, t_max));
+    for (std::size_t i = 0; i < N1; ++i) {
+      ends.first_lo[i] = v[i].at(l);
+      ends.first_hi[i] = v[i].at(h);
+    }
+    for (std::size_t j = 0; j < N2; ++j) {
+      ends.second_lo[j] = v[N1 + j].at(l);
+      ends.second_hi[j] = v[N1 + j].at(h);
+    }
+    if (apart_along(s, ends, delta2_upper)) return std::min(end, t_max);
+    end = lo + 0.5 * (end - lo);
+  }
+  return lo;
+}
+
 /// Vertex-face over a piece T: p, a, b, c.
 struct VertexFaceMotion {
   std::array<MovingVertex, 4> v;  // p, a, b, c
@@ -226,6 +273,14 @@ struct VertexFaceMotion {
     return vertex_face_guesses_separate(
         v[0].guess_at(mid), v[1].guess_at(mid), v[2].guess_at(mid), v[3].guess_at(mid),
         [&](const Eigen::Vector3d& s) { return apart_along(s, ends, delta2.sup()); }, false);
+  }
+  /// advance_along from lo, along the vertex's offset from its closest point on the triangle.
+  double advance(double lo, double t_max, const Interval& delta2, double delta,
+                 double* estimate) const {
+    const std::array<Eigen::Vector3d, 4> x = {v[0].guess_at(lo), v[1].guess_at(lo),
+                                              v[2].guess_at(lo), v[3].guess_at(lo)};
+    return advance_along<1>(v, x, x[0] - closest_on_triangle(x[0], x[1], x[2], x[3]), lo, t_max,
+                            delta2.sup(), delta, estimate);
   }
 };
 
@@ -244,6 +299,14 @@ struct EdgeEdgeMotion {
     return edge_edge_guesses_separate(
         v[0].guess_at(mid), v[1].guess_at(mid), v[2].guess_at(mid), v[3].guess_at(mid),
         [&](const Eigen::Vector3d& s) { return apart_along(s, ends, delta2.sup()); }, false);
+  }
+  /// advance_along from lo, along the vector between the edges' closest points.
+  double advance(double lo, double t_max, const Interval& delta2, double delta,
+                 double* estimate) const {
+    const std::array<Eigen::Vector3d, 4> x = {v[0].guess_at(lo), v[1].guess_at(lo),
+                                              v[2].guess_at(lo), v[3].guess_at(lo)};
+    const auto [ca, cb] = closest_on_segments(x[0], x[1], x[2], x[3]);
+    return advance_along<2>(v, x, ca - cb, lo, t_max, delta2.sup(), delta, estimate);
   }
 };
 

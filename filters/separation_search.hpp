@@ -81,6 +81,11 @@ EXACTCCD_CERTIFIED Poly6 derivative_of(const Poly6& g) {
 /// Depth to which separating directions are tried, and depth of the whole subdivision.
 constexpr int kDirectionDepth = 6;
 constexpr int kMaxDepth = 40;
+/// Conservative advancement: rounds (advancement, then one analysed piece), steps per round,
+/// and the distance to the estimate at which a round stops advancing.
+constexpr int kAdvanceRounds = 2;
+constexpr int kAdvanceSteps = 6;
+constexpr double kAdvancedPiece = 0x1p-8;
 
 /// What the search asks where the enclosures of its table cannot tell: the certified sign of
 /// region polynomial k at the double t from interval positions of the vertices at t (the
@@ -114,7 +119,7 @@ class FirstWithinSearch {
 
   SeparationOutcome run() {
     SeparationOutcome out;
-    Step s = search(0.0, options_.t_max, 0);
+    Step s = advance_then_search();
     if (s == Step::give_up && sharpen()) {
       // The enclosures computed from the coordinates could not tell: the rest of the step
       // again with the exact coefficients' (the same polynomials up to positive scales, so
@@ -174,6 +179,34 @@ class FirstWithinSearch {
     const Step left = search(lo, mid, depth + 1, &signs);
     if (left != Step::excluded) return left;
     return search(mid, hi, depth + 1, &signs);
+  }
+
+  /// Conservative advancement, then the search over what is left. Advancement clears pieces
+  /// [lo, end] along the closest-points direction at lo until the way to its estimate of the
+  /// first time within delta is short; the piece from there to twice that way is analysed at
+  /// once (depth past kDirectionDepth: no separating-direction tests on a piece that most
+  /// likely holds the contact); if it is excluded, again from its end. The bisection of
+  /// `search` takes over where advancement makes no progress.
+  /// PROOF: proofs/min_separation.md#conservative-advancement
+  Step advance_then_search() {
+    const double t_max = options_.t_max;
+    double lo = 0.0;
+    for (int round = 0; round < kAdvanceRounds; ++round) {
+      double estimate = lo;
+      for (int step = 0; step < kAdvanceSteps; ++step) {
+        const double next = m_.advance(lo, t_max, delta2_, options_.min_separation, &estimate);
+        if (!(next > lo)) break;
+        cleared_ = lo = next;
+        if (lo >= t_max) return Step::excluded;
+        if (estimate - lo <= kAdvancedPiece) break;
+      }
+      const double hi = lo + 2 * (estimate - lo);  // rounded upwards
+      if (lo == 0.0 || !(hi > lo && hi < t_max)) break;
+      const Step s = search(lo, hi, kDirectionDepth + 1);
+      if (s != Step::excluded) return s;
+      lo = hi;
+    }
+    return search(cleared_, t_max, 0);
   }
 
   /// Replaces the table by the exact coefficients' enclosures; false when it already is.
