@@ -2,6 +2,8 @@
 // PROOF: proofs/min_separation.md#fixed-width-signs
 #include "filters/separation_exact_signs.hpp"
 
+#include "filters/double_double_bounds.hpp"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -11,6 +13,7 @@
 #include <utility>
 
 #include "core/predicates/separation.hpp"
+#include "filters/double_double_bounds.hpp"
 
 namespace exactccd::filters::separation {
 
@@ -48,10 +51,35 @@ thread_local std::uint64_t g_gmp_evaluations = 0;
 
 std::uint64_t gmp_evaluations_in_this_thread() noexcept { return g_gmp_evaluations; }
 
+namespace {
+thread_local std::uint64_t g_bounded_decisions = 0;
+}  // namespace
+
+std::uint64_t bounded_decisions_in_this_thread() noexcept { return g_bounded_decisions; }
+
 ExactSignsAtDoubles::ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*, 4>& t0,
                                          const std::array<const Eigen::Vector3d*, 4>& t1,
                                          double delta)
     : q_(exact::separation_integers(t0, t1, delta)) {}
+
+auto ExactSignsAtDoubles::scaled_inputs() const -> const ScaledInputs& {
+  if (!scaled_) {
+    ScaledInputs s{};
+    s.exact = true;
+    const int shift = q_.common_exponent + q_.bits;
+    auto scaled = [&](const exact::Dyadic& x) {
+      const double r = std::ldexp(static_cast<double>(x.mantissa), x.exponent - shift);
+      s.exact &= x.mantissa == 0 || std::fabs(r) >= std::numeric_limits<double>::min();
+      return r;
+    };
+    for (int end = 0; end < 2; ++end)
+      for (int i = 0; i < 4; ++i)
+        for (int c = 0; c < 3; ++c) s.x[end][i][c] = scaled(q_.coords[end][i][c]);
+    s.delta = scaled(q_.delta);
+    scaled_ = s;
+  }
+  return *scaled_;
+}
 
 auto ExactSignsAtDoubles::gmp() const -> const Gmp& {
   if (!gmp_) {
@@ -87,6 +115,7 @@ void ExactSignsAtDoubles::at(double t, long shift, std::array<Position, 4>* posi
 template <class Make>
 mpz_class ExactSignsAtDoubles::value(const Make& make, int k, double t, long shift) const {
   ++g_gmp_evaluations;
+  exact_arithmetic_ = true;
   std::array<Position, 4> x;
   mpz_class d;
   at(t, shift, &x, &d);
@@ -152,6 +181,7 @@ Interval enclosure(const mpz_class& z, long shift) {
 template <class Make>
 void ExactSignsAtDoubles::coefficients(const Make& make, CoefficientTable* out) const {
   ++g_gmp_evaluations;
+  exact_arithmetic_ = true;
   // The moving vertices x0 + t dx as integer polynomials (times 2^-E, as delta): every region
   // polynomial is homogeneous in them and delta, so this scale changes no sign either.
   using Moving = Vec3<FixedPoly<mpz_class, 1>>;
@@ -261,6 +291,7 @@ auto ExactSignsAtDoubles::kernel_values(const IntegerKernel& kernel,
 auto ExactSignsAtDoubles::kernel_value_at(const IntegerKernel& kernel, double t) const
     -> KernelValue {
   if (last_.vertices == kernel.vertices && last_.t == t) return last_.value;
+  exact_arithmetic_ = true;
   exact::DyadicTime d;
   exact::dyadic_time(t, &d);  // the callers pass t in [0, 1]
   const std::uint64_t ts[1] = {d.numerator};
@@ -275,7 +306,52 @@ auto ExactSignsAtDoubles::kernel_value_at(const IntegerKernel& kernel, double t)
   return v;
 }
 
+int ExactSignsAtDoubles::bounded_sign(const IntegerKernel& kernel, double t) const {
+  // Rounding to nearest: the coordinates and delta scaled by 2^-(E + L) (magnitudes below 1;
+  // exact where the result is a normal double or 0), the kernel's differences at t from their
+  // exact values at t = 0 and t = 1, and the kernel's expression, each operation's error
+  // bounded. PROOF: proofs/min_separation.md#double-double-signs
+  const ScaledInputs& in = scaled_inputs();
+  if (!in.exact) return dd::kUncertain;
+  const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
+  const dd::Bounded time = dd::exactly(t);
+  dd::Bounded d[3][3];
+  for (int j = 0; j < 3; ++j)
+    for (int c = 0; c < 3; ++c) {
+      const int o = kernel.vertices->origin[j], e = kernel.vertices->end[j];
+      const dd::Bounded d0 = dd::exact_sum(in.x[0][e][c], -in.x[0][o][c]);
+      const dd::Bounded d1 = dd::exact_sum(in.x[1][e][c], -in.x[1][o][c]);
+      d[j][c] = d0 + time * (d1 - d0);
+    }
+  const dd::Bounded delta = dd::exactly(in.delta);
+  const dd::Bounded delta2 = delta * delta;
+  dd::Bounded v;
+  switch (kernel.kind) {
+    case KernelKind::capsule: {  // (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
+      const dd::Bounded ee = dd::dot(d[1], d[1]), we = dd::dot(d[0], d[1]);
+      v = (dd::dot(d[0], d[0]) * ee - we * we) - delta2 * ee;
+      break;
+    }
+    case KernelKind::face_like: {  // (W.m)^2 - delta^2 (m.m), m = U x V
+      const dd::Bounded m[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1],
+                                d[0][2] * d[1][0] - d[0][0] * d[1][2],
+                                d[0][0] * d[1][1] - d[0][1] * d[1][0]};
+      const dd::Bounded wm = dd::dot(d[2], m);
+      v = wm * wm - delta2 * dd::dot(m, m);
+      break;
+    }
+    case KernelKind::sphere: v = dd::dot(d[0], d[0]) - delta2; break;
+    case KernelKind::projection: v = dd::dot(d[0], d[1]); break;
+  }
+  return dd::certified_sign(v);
+}
+
 int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) const {
+  const int s = bounded_sign(kernel, t);
+  if (s != dd::kUncertain) {
+    ++g_bounded_decisions;
+    return s;
+  }
   return kernel_value_at(kernel, t).sign;
 }
 
@@ -323,11 +399,8 @@ double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo
   // A guess from here, rounding to nearest: the coordinates divided by 2^(E + L) (magnitudes at
   // most 1), the differences and their changes over the step at lo, and g'(lo) in those units.
   const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
-  const int shift = q_.common_exponent + q_.bits;
-  auto coordinate = [&](int end, int vertex, int axis) {
-    const exact::Dyadic& x = q_.coords[end][vertex][axis];
-    return std::ldexp(static_cast<double>(x.mantissa), x.exponent - shift);
-  };
+  const ScaledInputs& in = scaled_inputs();
+  auto coordinate = [&in](int end, int vertex, int axis) { return in.x[end][vertex][axis]; };
   Vec d[3], step[3];
   dd::DoubleDouble dd_d[3][3];  // the differences at lo in double-double
   for (int j = 0; j < 3; ++j)
@@ -340,8 +413,7 @@ double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo
       step[j][c] = change.hi;
       d[j][c] = dd_d[j][c].hi;
     }
-  const exact::Dyadic& dx = q_.delta;
-  const double delta = std::ldexp(static_cast<double>(dx.mantissa), dx.exponent - shift);
+  const double delta = in.delta;
   const double delta2 = delta * delta;
   const dd::DoubleDouble dd_delta2 = dd::DoubleDouble{delta, 0.0} * dd::DoubleDouble{delta, 0.0};
   double slope = 0;

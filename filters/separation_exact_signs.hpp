@@ -1,13 +1,16 @@
-// Exact signs of the minimum-separation region polynomials at double times, in integer
-// arithmetic: the query and delta scaled by one power of two to integers, the positions at
-// t = m 2^e computed exactly as integers (scaled by 2^-e), and the one polynomial asked for
-// evaluated on them. Every region polynomial is homogeneous in the coordinates and delta, so
-// the common positive scale changes no sign. Polynomial 0 (the face or interior region), the
-// capsules' sides, the end spheres and the sides' projections, the ones the search tightens,
-// run in fixed-width integers chosen from proven bounds (exact/separation_integers.hpp: no
-// allocation); the others, and these beyond the widest fixed width, in GMP (allocates).
+// Exact signs of the minimum-separation region polynomials at double times. Polynomial 0 (the
+// face or interior region), the capsules' sides, the end spheres and the sides' projections,
+// the ones the search tightens, are first evaluated in double-double with a proven error bound
+// (filters/double_double_bounds.hpp); where that bound does not exclude 0, and for the other
+// polynomials, in integer arithmetic: the query and delta scaled by one power of two to
+// integers, the positions at t = m 2^e computed exactly as integers (scaled by 2^-e), and the
+// one polynomial asked for evaluated on them. Every region polynomial is homogeneous in the
+// coordinates and delta, so the common positive scale changes no sign. The kernels run in
+// fixed-width integers chosen from proven bounds (exact/separation_integers.hpp: no
+// allocation); the others, and the kernels beyond the widest fixed width, in GMP (allocates).
 // PROOF: proofs/min_separation.md#interval-search
 // PROOF: proofs/min_separation.md#fixed-width-signs
+// PROOF: proofs/min_separation.md#double-double-signs
 #pragma once
 
 #include <gmpxx.h>
@@ -28,6 +31,9 @@ namespace exactccd::filters::separation {
 /// How many evaluations of the calling thread's ExactSignsAtDoubles ran in GMP: tells tests
 /// which queries stayed within the fixed widths.
 std::uint64_t gmp_evaluations_in_this_thread() noexcept;
+/// How many signs the calling thread's ExactSignsAtDoubles took from double-double with an
+/// error bound, before any exact integer: tells tests which path decided.
+std::uint64_t bounded_decisions_in_this_thread() noexcept;
 
 /// Every region polynomial of a separation (its numbering), padded to degree 6.
 using CoefficientTable =
@@ -59,6 +65,10 @@ class ExactSignsAtDoubles {
   /// PROOF: proofs/min_separation.md#exact-coefficients
   void vertex_face_coefficients(CoefficientTable* out) const;
   void edge_edge_coefficients(CoefficientTable* out) const;
+
+  /// Whether any call so far needed exact integer arithmetic (an integer or GMP evaluation;
+  /// not the double-double signs): the query's stage is then exact_at_double.
+  bool used_exact_arithmetic() const { return exact_arithmetic_; }
 
  private:
   using Position = std::array<mpz_class, 3>;
@@ -94,6 +104,9 @@ class ExactSignsAtDoubles {
     unsigned k = 0;
   };
   KernelValue kernel_value_at(const IntegerKernel& kernel, double t) const;
+  /// A kernel's sign at t in double-double with a running error bound
+  /// (filters/double_double_bounds.hpp), or dd::kUncertain: tried before exact integers.
+  int bounded_sign(const IntegerKernel& kernel, double t) const;
   int kernel_sign(const IntegerKernel& kernel, double t) const;
   /// A Newton step from lo: g(lo) exact (its leading bits) when just computed, else in
   /// double-double; g'(lo) in plain arithmetic; NaN when it leaves (lo, hi).
@@ -109,7 +122,17 @@ class ExactSignsAtDoubles {
   auto kernel_values(const IntegerKernel& kernel, const std::uint64_t (&ts)[N], unsigned k,
                      F&& f) const;
 
+  /// The coordinates and delta times 2^-(E + L) as doubles (magnitudes below 1), formed when
+  /// first needed; `exact` when every one is (a normal double or 0: no rounding).
+  struct ScaledInputs {
+    double x[2][4][3];  // [end][vertex][axis]
+    double delta;
+    bool exact;
+  };
+  const ScaledInputs& scaled_inputs() const;
+
   exact::SeparationIntegers q_;
+  mutable std::optional<ScaledInputs> scaled_;
   mutable std::optional<Gmp> gmp_;
   mutable std::optional<exact::StoredStepDifferences> fixed_differences_;
   mutable const exact::DifferenceVertices* fixed_differences_of_ = nullptr;
@@ -120,6 +143,7 @@ class ExactSignsAtDoubles {
     KernelValue value;
   };
   mutable LastValue last_;
+  mutable bool exact_arithmetic_ = false;
 };
 
 }  // namespace exactccd::filters::separation

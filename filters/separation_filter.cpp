@@ -105,7 +105,10 @@ template <class Motion, class Make, class Sign, class Secant, class Coefficients
       [&](int k, double t) { return (exact_signs().*sign)(k, t); },
       [&](int k, double lo, double hi) { return (exact_signs().*secant)(k, lo, hi); },
       [&](separation::CoefficientTable* out) { (exact_signs().*coefficients)(out); }};
-  return first_within(m, s, exact, options);
+  SeparationOutcome out = first_within(m, s, exact, options);
+  // The stage: exact_at_double when a sign, guess or table needed exact integers.
+  if (integer && integer->used_exact_arithmetic()) out.exact_used = true;
+  return out;
 }
 
 /// The whole-step test, then the search.

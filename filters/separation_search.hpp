@@ -386,11 +386,12 @@ class FirstWithinSearch {
     return exact_.factored(k, t);
   }
 
-  /// The sign of polynomial k at the double t: certified by intervals, else exact.
+  /// The sign of polynomial k at the double t: certified by intervals, else by `exact_.sign`
+  /// (double-double with an error bound, else exact integers; the caller learns from it
+  /// whether exact arithmetic was needed).
   int sign_at(int k, double t) {
     const CertifiedSign s = interval_sign_at(k, t);
     if (s != CertifiedSign::uncertain) return static_cast<int>(s);
-    exact_used_ = true;
     return exact_.sign(k, t);
   }
 
@@ -461,7 +462,6 @@ class FirstWithinSearch {
       // Near r the interval cannot tell: a point guessed from g's exact values (exact_.secant;
       // its exact sign decides) and its neighbour on r's side, so that a good guess closes the
       // bracket to adjacent doubles at once.
-      exact_used_ = true;
       if (lo > 0) {
         const double exact_guess = exact_.secant(k, lo, hi);
         if (exact_guess > lo && exact_guess < hi) mid = exact_guess;

@@ -7,8 +7,8 @@
 //  - on random queries of every coordinate spread (differences of 1, 2 and 3 limbs, and GMP),
 //    on extreme ones (coordinates at the top of their range, many sign patterns) whose bit
 //    bound sits at each width's limit and just beyond, scaled by 2^+-500, at times near 0 and 1;
-//  - the filters' signs at doubles (ExactSignsAtDoubles) equal the rational signs, and count a
-//    GMP evaluation only beyond the fixed widths.
+//  - the filters' signs at doubles (ExactSignsAtDoubles) equal the rational signs, with no GMP
+//    evaluation within the fixed widths.
 // PROOF: proofs/min_separation.md#fixed-width-signs
 #include <gtest/gtest.h>
 #include <gmpxx.h>
@@ -166,7 +166,9 @@ int check(const Case& c, double t, const char* what) {
                                      : signs.edge_edge_sign(kernel.poly, t);
     EXPECT_EQ(s, sgn(expected)) << label;
     const bool used_gmp = filters::separation::gmp_evaluations_in_this_thread() != before;
-    EXPECT_EQ(used_gmp, selected < 1 || selected > exact::kMaxDifferenceLimbs) << label;
+    // (Within the fixed widths GMP is never used; beyond them the double-double signs with
+    // an error bound decide most, double_double_signs_test.)
+    if (selected >= 1 && selected <= exact::kMaxDifferenceLimbs) EXPECT_FALSE(used_gmp) << label;
   }
   return selected;
 }
