@@ -53,17 +53,17 @@ SeparationOutcome first_within(const Motion& m, const Separation& s,
 
 using Vertices = std::array<const Eigen::Vector3d*, 4>;
 
-/// The certified sign of region polynomial k at the double t from the vertices' interval
+/// An enclosure of region polynomial k at the double t from the vertices' interval
 /// positions at t: the polynomial's factored form (differences, cross and dot products of
 /// positions), whose enclosure is as wide as the positions' (a few ulps) where the expanded
 /// coefficients' is as wide as their largest terms'. PROOF: proofs/min_separation.md#factored-form
 template <class Motion, class Make>
-struct FactoredSigns {
+struct FactoredEnclosures {
   const Motion& m;
   const Make& make;
   const Interval& delta2;
 
-  CertifiedSign operator()(int k, double t) const {
+  Interval operator()(int k, double t) const {
     const Interval ti(t);
     auto at = [&](int i) {
       const std::array<Interval, 3> x = m.v[i].at(ti);
@@ -73,7 +73,7 @@ struct FactoredSigns {
     Interval v(0);
     make(at(0), at(1), at(2), at(3), delta2)
         .for_each_polynomial([&v](const auto& g) { v = g.c[0]; }, k);
-    return certified_sign(v);
+    return v;
   }
 };
 
@@ -97,7 +97,7 @@ template <class Motion, class Make, class Sign, class Secant, class Coefficients
     if (!integer) integer.emplace(t0, t1, options.min_separation);
     return *integer;
   };
-  const FactoredSigns<Motion, Make> factored{m, make, delta2};
+  const FactoredEnclosures<Motion, Make> factored{m, make, delta2};
   // Each function captures at most two references: std::function stores them without
   // allocating.
   const separation::SignsAtDoubles exact{

@@ -87,7 +87,7 @@ constexpr int kAdvanceRounds = 2;
 constexpr int kAdvanceSteps = 6;
 constexpr double kAdvancedPiece = 0x1p-8;
 
-/// What the search asks where the enclosures of its table cannot tell: the certified sign of
+/// What the search asks where the enclosures of its table cannot tell: an enclosure of
 /// region polynomial k at the double t from interval positions of the vertices at t (the
 /// polynomial in its factored form, far tighter near a root than its expanded coefficients:
 /// a vertex at distance delta from a corner is a small difference of large squares there);
@@ -95,7 +95,7 @@ constexpr double kAdvancedPiece = 0x1p-8;
 /// decision) of its root in (lo, hi) from its exact values there, and every region
 /// polynomial enclosed from its exact coefficients (ExactSignsAtDoubles::*_coefficients).
 struct SignsAtDoubles {
-  std::function<CertifiedSign(int k, double t)> factored;
+  std::function<Interval(int k, double t)> factored;  // an enclosure of polynomial k at t
   std::function<int(int k, double t)> sign;
   std::function<double(int k, double lo, double hi)> secant;
   std::function<void(CoefficientTable*)> coefficients;
@@ -383,7 +383,7 @@ class FirstWithinSearch {
   CertifiedSign interval_sign_at(int k, double t) {
     const CertifiedSign s = certified_sign(predicates::evaluate(table().poly[k], Interval(t)));
     if (s != CertifiedSign::uncertain || !exact_.factored) return s;
-    return exact_.factored(k, t);
+    return certified_sign(exact_.factored(k, t));
   }
 
   /// The sign of polynomial k at the double t: certified by intervals, else by `exact_.sign`
@@ -429,7 +429,15 @@ class FirstWithinSearch {
         const bool use_guess = guided < kGuidedSteps && guess > lo && guess < hi;
         guided += use_guess;
         const double t = use_guess ? guess : mid;
-        const Interval v = predicates::evaluate(g, Interval(t));
+        Interval v = predicates::evaluate(g, Interval(t));
+        CertifiedSign s = certified_sign(v);
+        if (s == CertifiedSign::uncertain && exact_.factored) {
+          // The positions' enclosure: its sign, and (unless the table holds the exact
+          // coefficients' scaled polynomials) its far narrower value for the guesses.
+          const Interval f = exact_.factored(k, t);
+          s = certified_sign(f);
+          if (!sharp_ && f.sup() - f.inf() < v.sup() - v.inf()) v = f;
+        }
         const double v_mid = 0.5 * (v.inf() + v.sup());
         const double secant = (v_mid - v_prev) / (t - t_prev);  // NaN without a previous probe
         if (std::isfinite(secant) && secant != 0) {
@@ -437,8 +445,6 @@ class FirstWithinSearch {
         } else if (std::isnan(slope)) {
           slope = predicates::evaluate(derivative_of(g), Interval(t)).sup();
         }
-        CertifiedSign s = certified_sign(v);
-        if (s == CertifiedSign::uncertain && exact_.factored) s = exact_.factored(k, t);
         if (s != CertifiedSign::uncertain) {
           if (classify(s, t)) break;
           t_prev = t;
