@@ -18,23 +18,38 @@ namespace {
 
 using predicates::Vec3;
 
-/// lo2 - hi1 > delta or lo1 - hi2 > delta on some axis, the difference rounded in any mode:
-/// rounding is monotone and delta is a double, so a rounded difference above delta means an
-/// exact one above it; no rounding mode to set. PROOF: proofs/min_separation.md#culling-with-delta
+/// The extent [lo, hi] of some points on axis k.
+struct Extent {
+  double lo, hi;
+};
+template <std::size_t N>
+Extent extent(const std::array<const Eigen::Vector3d*, N>& points, int k) {
+  Extent e{points[0]->coeff(k), points[0]->coeff(k)};
+  for (const auto* v : points) {
+    e.lo = std::min(e.lo, v->coeff(k));
+    e.hi = std::max(e.hi, v->coeff(k));
+  }
+  return e;
+}
+
+/// On some axis, the two primitives' boxes more than delta apart on the same side at t = 0 and
+/// at t = 1 (first0/second0 the vertices at t = 0, first1/second1 at t = 1): the gap along a
+/// fixed axis is concave in t, so it exceeds delta over the whole step. Each difference is
+/// rounded in any mode: rounding is monotone and delta is a double, so a rounded difference
+/// above delta means an exact one above it; no rounding mode to set. This is stronger than the
+/// boxes of the whole sweeps apart (a primitive that passes over the other's box during the
+/// step without meeting it). PROOF: proofs/min_separation.md#culling-with-delta
 template <std::size_t N1, std::size_t N2>
-bool boxes_apart(const std::array<const Eigen::Vector3d*, N1>& first,
-                 const std::array<const Eigen::Vector3d*, N2>& second, double delta) {
+bool boxes_apart(const std::array<const Eigen::Vector3d*, N1>& first0,
+                 const std::array<const Eigen::Vector3d*, N2>& second0,
+                 const std::array<const Eigen::Vector3d*, N1>& first1,
+                 const std::array<const Eigen::Vector3d*, N2>& second1, double delta) {
   for (int k = 0; k < 3; ++k) {
-    double lo1 = first[0]->coeff(k), hi1 = lo1, lo2 = second[0]->coeff(k), hi2 = lo2;
-    for (const auto* v : first) {
-      lo1 = std::min(lo1, v->coeff(k));
-      hi1 = std::max(hi1, v->coeff(k));
-    }
-    for (const auto* v : second) {
-      lo2 = std::min(lo2, v->coeff(k));
-      hi2 = std::max(hi2, v->coeff(k));
-    }
-    if (lo2 - hi1 > delta || lo1 - hi2 > delta) return true;
+    const Extent a0 = extent(first0, k), b0 = extent(second0, k);
+    const Extent a1 = extent(first1, k), b1 = extent(second1, k);
+    if ((b0.lo - a0.hi > delta && b1.lo - a1.hi > delta) ||
+        (a0.lo - b0.hi > delta && a1.lo - b1.hi > delta))
+      return true;
   }
   return false;
 }
@@ -132,13 +147,13 @@ SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
 }  // namespace
 
 bool vertex_face_separation_culling(const VertexFaceQuery& q, double delta) {
-  return boxes_apart<2, 6>({&q.p_t0, &q.p_t1},
-                           {&q.a_t0, &q.b_t0, &q.c_t0, &q.a_t1, &q.b_t1, &q.c_t1}, delta);
+  return boxes_apart<1, 3>({&q.p_t0}, {&q.a_t0, &q.b_t0, &q.c_t0}, {&q.p_t1},
+                           {&q.a_t1, &q.b_t1, &q.c_t1}, delta);
 }
 
 bool edge_edge_separation_culling(const EdgeEdgeQuery& q, double delta) {
-  return boxes_apart<4, 4>({&q.ea0_t0, &q.ea1_t0, &q.ea0_t1, &q.ea1_t1},
-                           {&q.eb0_t0, &q.eb1_t0, &q.eb0_t1, &q.eb1_t1}, delta);
+  return boxes_apart<2, 2>({&q.ea0_t0, &q.ea1_t0}, {&q.eb0_t0, &q.eb1_t0},
+                           {&q.ea0_t1, &q.ea1_t1}, {&q.eb0_t1, &q.eb1_t1}, delta);
 }
 
 SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
