@@ -38,6 +38,8 @@ std::uint64_t bounded_decisions_in_this_thread() noexcept;
 /// Every region polynomial of a separation (its numbering), padded to degree 6.
 using CoefficientTable =
     std::array<predicates::FixedPoly<Interval, 6>, kMaxSeparationPolynomials>;
+/// An enclosure of every region polynomial (over a piece, or at an instant).
+using CoefficientValues = std::array<Interval, kMaxSeparationPolynomials>;
 
 class ExactSignsAtDoubles {
  public:

@@ -79,16 +79,27 @@ struct FactoredEnclosures {
   const Interval& delta2;
 
   Interval operator()(int k, double t) const {
-    const Interval ti(t);
+    Interval v(0);
+    visit(Interval(t), [&v](const auto& g) { v = g.c[0]; }, k);
+    return v;
+  }
+
+  /// Every polynomial over the time interval ti (the inclusion property of interval
+  /// arithmetic: the positions enclosed over it), in one pass.
+  void all_over(const Interval& ti, separation::CoefficientValues* out) const {
+    int k = 0;
+    visit(ti, [&](const auto& g) { (*out)[k++] = g.c[0]; }, -1);
+  }
+
+ private:
+  template <class F>
+  void visit(const Interval& ti, F&& f, int only) const {
     auto at = [&](int i) {
       const std::array<Interval, 3> x = m.v[i].at(ti);
       using Constant = predicates::FixedPoly<Interval, 0>;
       return Vec3<Constant>{Constant{{x[0]}}, Constant{{x[1]}}, Constant{{x[2]}}};
     };
-    Interval v(0);
-    make(at(0), at(1), at(2), at(3), delta2)
-        .for_each_polynomial([&v](const auto& g) { v = g.c[0]; }, k);
-    return v;
+    make(at(0), at(1), at(2), at(3), delta2).for_each_polynomial(f, only);
   }
 };
 
@@ -117,6 +128,9 @@ template <class Motion, class Make, class Sign, class Secant, class Coefficients
   // allocating.
   const separation::SignsAtDoubles exact{
       [&factored](int k, double t) { return factored(k, t); },
+      [&factored](double lo, double hi, separation::CoefficientValues* out) {
+        factored.all_over(Interval(lo, hi), out);
+      },
       [&](int k, double t) { return (exact_signs().*sign)(k, t); },
       [&](int k, double lo, double hi) { return (exact_signs().*secant)(k, lo, hi); },
       [&](separation::CoefficientTable* out) { (exact_signs().*coefficients)(out); }};

@@ -25,22 +25,40 @@ namespace exactccd::filters::separation {
 using predicates::FixedPoly;
 using Poly6 = FixedPoly<Interval, 6>;
 
-/// Every region polynomial of a separation (its numbering) with interval coefficients, padded
-/// to degree 6.
+/// The region polynomials of a separation (its numbering) with interval coefficients, padded
+/// to degree 6, each computed when first asked for: over a piece, the positions' enclosures
+/// certify most signs, and a contact's tightening needs one polynomial's coefficients.
 template <class Separation>
-struct PolynomialTable {
-  CoefficientTable poly;
+class PolynomialTable {
+ public:
+  explicit PolynomialTable(const Separation& s) : separation_(s) {}
 
-  PolynomialTable() = default;
-  explicit PolynomialTable(const Separation& s) {
-    int k = 0;
-    s.for_each_polynomial([this, &k](const auto& g) {
-      constexpr int D = std::decay_t<decltype(g)>::degree;
-      static_assert(D <= 6, "the region polynomials have degree at most 6");
-      for (int i = 0; i <= 6; ++i) poly[k].c[i] = i <= D ? g.c[i] : Interval(0);
-      ++k;
-    });
+  const Poly6& operator[](int k) {
+    if (!computed(k)) {
+      separation_.for_each_polynomial(
+          [this, k](const auto& g) {
+            constexpr int D = std::decay_t<decltype(g)>::degree;
+            static_assert(D <= 6, "the region polynomials have degree at most 6");
+            for (int i = 0; i <= 6; ++i) poly_[k].c[i] = i <= D ? g.c[i] : Interval(0);
+          },
+          k);
+      computed_ |= std::uint32_t{1} << k;
+    }
+    return poly_[k];
   }
+  bool computed(int k) const { return (computed_ >> k) & 1; }
+  /// Every polynomial replaced in place by `fill`'s (references stay valid), all computed.
+  template <class Fill>
+  void replace_all(Fill&& fill) {
+    fill(&poly_);
+    computed_ = ~std::uint32_t{0};
+  }
+
+ private:
+  static_assert(kMaxSeparationPolynomials <= 32, "one bit per polynomial");
+  const Separation& separation_;
+  CoefficientTable poly_;
+  std::uint32_t computed_ = 0;
 };
 
 /// An enclosure of g over [lo, hi] in centred form: g(m + s) = sum_i c_i s^i (an interval
@@ -81,6 +99,15 @@ EXACTCCD_CERTIFIED Poly6 derivative_of(const Poly6& g) {
 /// Depth to which separating directions are tried, and depth of the whole subdivision.
 constexpr int kDirectionDepth = 6;
 constexpr int kMaxDepth = 40;
+/// Pieces one search examines at most.
+constexpr int kMaxPieces = 400;
+/// Depth to which pieces are first enclosed from the positions: the pieces advancement hands
+/// over (depth 7) and the bisection's first analysed ones. Deeper, the coefficients alone:
+/// the positions' enclosures there cost more than they decide, and on nearly parallel edges
+/// they exclude pieces only deep down, so that the search walks the step at a fine resolution
+/// instead of giving up at kMaxDepth at once (sample queries at 1e-8 of the size: 2.4 us with
+/// them to depth 16, 2.1 us to depth 8).
+constexpr int kFactoredDepth = 8;
 /// Conservative advancement: rounds (advancement, then one analysed piece), steps per round,
 /// and the distance to the estimate at which a round stops advancing.
 constexpr int kAdvanceRounds = 2;
@@ -96,6 +123,9 @@ constexpr double kAdvancedPiece = 0x1p-8;
 /// polynomial enclosed from its exact coefficients (ExactSignsAtDoubles::*_coefficients).
 struct SignsAtDoubles {
   std::function<Interval(int k, double t)> factored;  // an enclosure of polynomial k at t
+  /// Enclosures of every region polynomial over [lo, hi] from the positions' enclosures over
+  /// it, in one pass (no coefficients).
+  std::function<void(double lo, double hi, CoefficientValues*)> factored_over;
   std::function<int(int k, double t)> sign;
   std::function<double(int k, double lo, double hi)> secant;
   std::function<void(CoefficientTable*)> coefficients;
@@ -125,6 +155,7 @@ class FirstWithinSearch {
       // again with the exact coefficients' (the same polynomials up to positive scales, so
       // every sign already read holds). PROOF: proofs/min_separation.md#exact-coefficients
       bracket_ = false;
+      pieces_ = 0;
       s = search(cleared_, options_.t_max, 0);
     }
     out.cleared_until = cleared_;
@@ -154,6 +185,10 @@ class FirstWithinSearch {
   /// `inherited`: the certain signs over an enclosing piece, which hold over this one too
   /// (none at the top).
   Step search(double lo, double hi, int depth, const Signs* inherited = nullptr) {
+    // A bound on the work: past kMaxPieces pieces the search gives up (the exact coefficients'
+    // table, then the exact procedure from the cleared time, decide), so that pieces that are
+    // each excluded only deep down cannot make it walk the step at a fine resolution.
+    if (++pieces_ > kMaxPieces) return Step::give_up;
     // All of [0, 1] has just failed the whole-step test (the same guesses from the input
     // doubles) and culling (the axes): not tried again.
     if (depth <= kDirectionDepth && !(lo == 0.0 && hi == 1.0) &&
@@ -168,7 +203,7 @@ class FirstWithinSearch {
         if ((*inherited)[k] != kUnknown) signs[k] = (*inherited)[k];
     if (depth >= kDirectionDepth) {
       bool split = false;
-      const Step s = analyse(lo, hi, &split, &signs);
+      const Step s = analyse(lo, hi, depth, &split, &signs);
       if (!split) return s;
     }
     const double mid = lo + 0.5 * (hi - lo);  // rounded upwards: in (lo, hi] or hi
@@ -212,16 +247,41 @@ class FirstWithinSearch {
   /// Replaces the table by the exact coefficients' enclosures; false when it already is.
   bool sharpen() {
     if (sharp_ || !exact_.coefficients) return false;
-    if (!table_) table_.emplace();
-    exact_.coefficients(&table_->poly);  // in place: references into the table stay valid
+    table_.replace_all([this](CoefficientTable* t) { exact_.coefficients(t); });
     exact_used_ = sharp_ = true;
     return true;
   }
 
-  const PolynomialTable<Separation>& table() {
-    if (!table_) table_.emplace(separation_);
-    return *table_;
-  }
+  /// Region polynomial k's interval coefficients.
+  const Poly6& poly(int k) { return table_[k]; }
+
+  /// The signs of every region polynomial over one piece, each from the positions'
+  /// enclosures over the piece (all of them computed at the first sign asked for) when that
+  /// is certain and the table is not the exact coefficients', else from polynomial k's
+  /// coefficients (Horner, then the centred form). PROOF: proofs/min_separation.md#factored-form
+  class PieceSigns {
+   public:
+    PieceSigns(FirstWithinSearch* search, double lo, double hi, bool factored = true)
+        : search_(search), lo_(lo), hi_(hi), factored_(factored) {}
+    CertifiedSign operator()(int k) {
+      if (factored_ && !search_->sharp_ && search_->exact_.factored_over) {
+        if (!have_values_) {
+          search_->exact_.factored_over(lo_, hi_, &values_);
+          have_values_ = true;
+        }
+        const CertifiedSign s = certified_sign(values_[k]);
+        if (s != CertifiedSign::uncertain) return s;
+      }
+      return sign_over(search_->poly(k), lo_, hi_);
+    }
+
+   private:
+    FirstWithinSearch* search_;
+    double lo_, hi_;
+    bool factored_;
+    bool have_values_ = false;
+    CoefficientValues values_;
+  };
 
   /// The predicate at the double t with certified signs: +1 within, -1 not, 0 uncertain.
   int within_at(double t) {
@@ -245,9 +305,9 @@ class FirstWithinSearch {
     bracket_lo_ = lo;
     bracket_hi_ = hi;
     known_.fill(kUnknown);
-    const auto& polys = table().poly;
+    PieceSigns piece(this, lo, hi);
     for (int k = 0; k < Separation::kCount; ++k) {
-      const CertifiedSign s = sign_over(polys[k], lo, hi);
+      const CertifiedSign s = piece(k);
       if (s != CertifiedSign::uncertain) known_[k] = static_cast<signed char>(s);
     }
   }
@@ -256,12 +316,12 @@ class FirstWithinSearch {
   /// decide what this one cannot. The signs are computed when first read: the optimistic test
   /// often excludes a piece after a few of them.
   /// `sign`: the signs known over the piece (inherited from enclosing pieces), completed here.
-  Step analyse(double lo, double hi, bool* split, Signs* signs) {
-    const auto& polys = table().poly;
+  Step analyse(double lo, double hi, int depth, bool* split, Signs* signs) {
     Signs& sign = *signs;
+    PieceSigns piece(this, lo, hi, depth <= kFactoredDepth);
     auto sign_of = [&](int k) {
       if (sign[k] == kNotYet) {
-        const CertifiedSign s = sign_over(polys[k], lo, hi);
+        const CertifiedSign s = piece(k);
         sign[k] = static_cast<signed char>(s == CertifiedSign::uncertain ? kUnknown : int(s));
       }
       return static_cast<int>(sign[k]);
@@ -301,7 +361,7 @@ class FirstWithinSearch {
       return Step::give_up;
     }
     // One polynomial g's sign is uncertain over the piece; every other sign is constant.
-    const Poly6& g = polys[which];
+    const Poly6& g = poly(which);
     const CertifiedSign slope = sign_over(derivative_of(g), lo, hi);
     if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero) {
       *split = true;
@@ -342,11 +402,10 @@ class FirstWithinSearch {
   /// PROOF: proofs/min_separation.md#conditions-turning-on
   Step conditions_turning_on(double lo, double hi,
                              const std::array<signed char, Separation::kCount>& sign) {
-    const auto& polys = table().poly;
     for (int k = 0; k < Separation::kCount; ++k) {
       if (sign[k] != kUnknown) continue;
       if (k >= Separation::kNonStrictCount) return Step::give_up;
-      const CertifiedSign slope = sign_over(derivative_of(polys[k]), lo, hi);
+      const CertifiedSign slope = sign_over(derivative_of(poly(k)), lo, hi);
       if (slope == CertifiedSign::uncertain || slope == CertifiedSign::zero ||
           static_cast<int>(slope) != Separation::condition(k))
         return Step::give_up;
@@ -381,7 +440,12 @@ class FirstWithinSearch {
   /// The certified sign of polynomial k at the double t: the table's enclosure, else the
   /// factored form's.
   CertifiedSign interval_sign_at(int k, double t) {
-    const CertifiedSign s = certified_sign(predicates::evaluate(table().poly[k], Interval(t)));
+    // Without coefficients at hand, the positions' enclosure first (it needs none).
+    if (!table_.computed(k) && exact_.factored) {
+      const CertifiedSign s = certified_sign(exact_.factored(k, t));
+      if (s != CertifiedSign::uncertain) return s;
+    }
+    const CertifiedSign s = certified_sign(predicates::evaluate(poly(k), Interval(t)));
     if (s != CertifiedSign::uncertain || !exact_.factored) return s;
     return certified_sign(exact_.factored(k, t));
   }
@@ -405,7 +469,7 @@ class FirstWithinSearch {
   /// PROOF: proofs/min_separation.md#interval-search
   Step tighten(int k, double lo, double hi, int s_lo) {
     constexpr int kGuidedSteps = 16;
-    const Poly6& g = table().poly[k];
+    const Poly6& g = poly(k);
     bool exact_phase = false;  // the interval signs have failed once: exact signs from here
     constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
     double slope = kNone;                   // a guess of g' near r
@@ -498,12 +562,13 @@ class FirstWithinSearch {
   const SignsAtDoubles& exact_;
   const CcdOptions& options_;
   const Interval delta2_;
-  std::optional<PolynomialTable<Separation>> table_;
+  PolynomialTable<Separation> table_{separation_};
   bool sharp_ = false;  // the table holds the exact coefficients' enclosures
   bool bracket_ = false;
   double bracket_lo_ = 0.0, bracket_hi_ = 0.0;
   std::array<signed char, kMaxSeparationPolynomials> known_{};
   double cleared_ = 0.0;
+  int pieces_ = 0;  // pieces examined by the current search
   double toi_lo_ = 0.0, toi_hi_ = 0.0;
   bool exact_used_ = false;
 };
