@@ -13,9 +13,9 @@
 # section (issue 12: `exactccd bench --min-separation` on the sample queries, the
 # simulation-like set and the generated minimum-separation families, with
 # bench/report/min_separation.png). Plots need Debian's
-# python3-matplotlib (.ci/install-deps.sh --with-plots installs it). About 6 minutes on a
-# 2-core machine, mostly the exact path timed on the 1.2 million simulation-like queries, and
-# about 4 more for the minimum-separation runs.
+# python3-matplotlib (.ci/install-deps.sh --with-plots installs it). About 4 minutes on a
+# 2-core machine (measured 2026-11-24), mostly the exact path timed on the 1.2 million
+# simulation-like queries and the minimum-separation runs.
 # Exit status: the worst of the study's and the benches' (0: the certified methods showed no
 # false positive, false negative or late TOI); 2 when matplotlib is missing or the study could not run.
 set -euo pipefail
