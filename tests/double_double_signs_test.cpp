@@ -20,36 +20,14 @@
 
 #include "core/predicates/separation.hpp"
 #include "filters/separation_exact_signs.hpp"
+#include "separation_rational.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd {
 namespace {
 
-struct Case {
-  std::array<Eigen::Vector3d, 4> t0, t1;
-  double delta = 0;
-};
-
-mpq_class rational_value(const Case& c, bool vertex_face, int poly, double t) {
-  using P = predicates::FixedPoly<mpq_class, 0>;
-  using Point = predicates::Vec3<P>;
-  const mpq_class tq(t);
-  Point x[4];
-  for (int i = 0; i < 4; ++i) {
-    P p[3];
-    for (int k = 0; k < 3; ++k)
-      p[k] = P{{mpq_class(c.t0[i][k]) + tq * (mpq_class(c.t1[i][k]) - mpq_class(c.t0[i][k]))}};
-    x[i] = Point{p[0], p[1], p[2]};
-  }
-  const mpq_class d2 = mpq_class(c.delta) * mpq_class(c.delta);
-  mpq_class v;
-  auto take = [&v](const auto& g) { v = g.c[0]; };
-  if (vertex_face)
-    predicates::vertex_face_separation(x[0], x[1], x[2], x[3], d2).for_each_polynomial(take, poly);
-  else
-    predicates::edge_edge_separation(x[0], x[1], x[2], x[3], d2).for_each_polynomial(take, poly);
-  return v;
-}
+using Case = test::SeparationCase;
+using test::rational_value;
 
 // The kernel polynomials (those with a double-double form): vertex-face 0, the spheres 4, 8,
 // 12, the projections 5, 6, 9, 10, 13, 14 and the capsules 7, 11, 15; edge-edge 0, the spheres

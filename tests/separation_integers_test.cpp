@@ -24,6 +24,7 @@
 #include "exact/integer_arithmetic.hpp"
 #include "exact/separation_integers.hpp"
 #include "filters/separation_exact_signs.hpp"
+#include "separation_rational.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd {
@@ -33,32 +34,8 @@ using exact::DifferenceVertices;
 using exact::SeparationIntegers;
 using Vertices = std::array<Eigen::Vector3d, 4>;
 
-struct Case {
-  Vertices t0, t1;
-  double delta = 0;
-};
-
-/// Region polynomial `poly` at t over the rationals, from the separation predicates.
-mpq_class rational_value(const Case& c, bool vertex_face, int poly, double t) {
-  using P = predicates::FixedPoly<mpq_class, 0>;
-  using Point = predicates::Vec3<P>;
-  const mpq_class tq(t);
-  Point x[4];
-  for (int i = 0; i < 4; ++i) {
-    P p[3];
-    for (int k = 0; k < 3; ++k)
-      p[k] = P{{mpq_class(c.t0[i][k]) + tq * (mpq_class(c.t1[i][k]) - mpq_class(c.t0[i][k]))}};
-    x[i] = Point{p[0], p[1], p[2]};
-  }
-  const mpq_class d2 = mpq_class(c.delta) * mpq_class(c.delta);
-  mpq_class v;
-  auto take = [&v](const auto& g) { v = g.c[0]; };
-  if (vertex_face)
-    predicates::vertex_face_separation(x[0], x[1], x[2], x[3], d2).for_each_polynomial(take, poly);
-  else
-    predicates::edge_edge_separation(x[0], x[1], x[2], x[3], d2).for_each_polynomial(take, poly);
-  return v;
-}
+using Case = test::SeparationCase;
+using test::rational_value;
 
 SeparationIntegers integers_of(const Case& c) {
   return exact::separation_integers({&c.t0[0], &c.t0[1], &c.t0[2], &c.t0[3]},
