@@ -314,15 +314,22 @@ int ExactSignsAtDoubles::bounded_sign(const IntegerKernel& kernel, double t) con
   const ScaledInputs& in = scaled_inputs();
   if (!in.exact) return dd::kUncertain;
   const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
+  // The differences at t = 0 (exact) and their changes over the step, kept for the kernel's
+  // vertices: a search asks the same kernel at several times.
+  BoundedSteps& steps = bounded_steps_;
+  if (steps.of != kernel.vertices) {
+    for (int j = 0; j < 3; ++j)
+      for (int c = 0; c < 3; ++c) {
+        const int o = kernel.vertices->origin[j], e = kernel.vertices->end[j];
+        steps.d0[j][c] = dd::exact_sum(in.x[0][e][c], -in.x[0][o][c]);
+        steps.change[j][c] = dd::exact_sum(in.x[1][e][c], -in.x[1][o][c]) - steps.d0[j][c];
+      }
+    steps.of = kernel.vertices;
+  }
   const dd::Bounded time = dd::exactly(t);
   dd::Bounded d[3][3];
   for (int j = 0; j < 3; ++j)
-    for (int c = 0; c < 3; ++c) {
-      const int o = kernel.vertices->origin[j], e = kernel.vertices->end[j];
-      const dd::Bounded d0 = dd::exact_sum(in.x[0][e][c], -in.x[0][o][c]);
-      const dd::Bounded d1 = dd::exact_sum(in.x[1][e][c], -in.x[1][o][c]);
-      d[j][c] = d0 + time * (d1 - d0);
-    }
+    for (int c = 0; c < 3; ++c) d[j][c] = steps.d0[j][c] + time * steps.change[j][c];
   const dd::Bounded delta = dd::exactly(in.delta);
   const dd::Bounded delta2 = delta * delta;
   dd::Bounded v;

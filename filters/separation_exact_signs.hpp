@@ -23,6 +23,7 @@
 #include "core/predicates/motion.hpp"
 #include "exact/separation_integers.hpp"
 #include "filters/double_double.hpp"
+#include "filters/double_double_bounds.hpp"
 #include "filters/interval.hpp"
 #include "filters/separation_filter.hpp"
 
@@ -133,8 +134,16 @@ class ExactSignsAtDoubles {
   };
   const ScaledInputs& scaled_inputs() const;
 
+  /// A kernel's differences at t = 0 and their changes over the step in double-double with
+  /// error bounds (bounded_sign), for the kernel vertices `of`.
+  struct BoundedSteps {
+    const exact::DifferenceVertices* of = nullptr;
+    dd::Bounded d0[3][3], change[3][3];
+  };
+
   exact::SeparationIntegers q_;
   mutable std::optional<ScaledInputs> scaled_;
+  mutable BoundedSteps bounded_steps_;
   mutable std::optional<Gmp> gmp_;
   mutable std::optional<exact::StoredStepDifferences> fixed_differences_;
   mutable const exact::DifferenceVertices* fixed_differences_of_ = nullptr;
