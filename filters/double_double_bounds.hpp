@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include "filters/double_double.hpp"
+
 namespace exactccd::filters::dd {
 
 /// v = hi + lo (|lo| <= 2^-53 |hi| after each operation) and err >= |exact - v|, where
@@ -22,10 +24,10 @@ struct Bounded {
 inline constexpr double kUnit = 0x1p-53;
 inline constexpr double kUnderflow = 0x1p-1060;
 
-/// TwoSum (Knuth): s + e == a + b exactly, rounding to nearest (no overflow).
+/// TwoSum (Knuth, dd::two_sum): s + e == a + b exactly, rounding to nearest (no overflow).
 inline Bounded exact_sum(double a, double b) {
-  const double s = a + b, bb = s - a;
-  return {s, (a - (s - bb)) + (b - bb), 0.0};
+  const DoubleDouble s = two_sum(a, b);
+  return {s.hi, s.lo, 0.0};
 }
 
 /// The double x, exactly.

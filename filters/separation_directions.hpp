@@ -162,6 +162,23 @@ struct EndPositions {
   Positions<N2> second_lo, second_hi;
 };
 
+/// The positions at lo and hi of v's vertices, the first N1 of them the first primitive.
+template <std::size_t N1>
+EXACTCCD_CERTIFIED EndPositions<N1, 4 - N1> end_positions(const std::array<MovingVertex, 4>& v,
+                                                          const Interval& lo,
+                                                          const Interval& hi) {
+  EndPositions<N1, 4 - N1> ends;
+  for (std::size_t i = 0; i < N1; ++i) {
+    ends.first_lo[i] = v[i].at(lo);
+    ends.first_hi[i] = v[i].at(hi);
+  }
+  for (std::size_t j = 0; j < 4 - N1; ++j) {
+    ends.second_lo[j] = v[N1 + j].at(lo);
+    ends.second_hi[j] = v[N1 + j].at(hi);
+  }
+  return ends;
+}
+
 /// A lower bound, at one instant, of min s.x - max s.y over x in first, y in second.
 template <std::size_t N1, std::size_t N2>
 EXACTCCD_CERTIFIED double interval_gap(const Eigen::Vector3d& s, const Positions<N1>& first,
@@ -223,7 +240,6 @@ EXACTCCD_CERTIFIED double advance_along(const std::array<MovingVertex, 4>& v,
                                         const std::array<Eigen::Vector3d, 4>& at_lo,
                                         const Eigen::Vector3d& s, double lo, double t_max,
                                         double delta2_upper, double delta, double* estimate) {
-  constexpr std::size_t N2 = 4 - N1;
   *estimate = lo;
   if (!usable(s)) return lo;
   // The gap along s between vertex i of the first and j of the second is linear in t: its
@@ -242,16 +258,7 @@ EXACTCCD_CERTIFIED double advance_along(const std::array<MovingVertex, 4>& v,
   // Seven eighths of the way: the gap at the end stays well above the rounding errors.
   double end = first >= t_max ? t_max : lo + 0.875 * (first - lo);
   for (int attempt = 0; attempt < 2 && end > lo; ++attempt) {
-    EndPositions<N1, N2> ends;
-    const Interval l(lo), h(std::min(end, t_max));
-    for (std::size_t i = 0; i < N1; ++i) {
-      ends.first_lo[i] = v[i].at(l);
-      ends.first_hi[i] = v[i].at(h);
-    }
-    for (std::size_t j = 0; j < N2; ++j) {
-      ends.second_lo[j] = v[N1 + j].at(l);
-      ends.second_hi[j] = v[N1 + j].at(h);
-    }
+    const auto ends = end_positions<N1>(v, Interval(lo), Interval(std::min(end, t_max)));
     if (apart_along(s, ends, delta2_upper)) return std::min(end, t_max);
     end = lo + 0.5 * (end - lo);
   }
@@ -264,10 +271,7 @@ struct VertexFaceMotion {
   /// `axes`: try the axes too (false where culling has just tried the same boxes).
   bool apart_over(const Interval& T, const Interval& delta2, double delta, bool axes) const {
     const Interval lo(T.inf()), hi(T.sup());
-    const EndPositions<1, 3> ends{{v[0].at(lo)},
-                                  {v[0].at(hi)},
-                                  {v[1].at(lo), v[2].at(lo), v[3].at(lo)},
-                                  {v[1].at(hi), v[2].at(hi), v[3].at(hi)}};
+    const auto ends = end_positions<1>(v, lo, hi);
     if (axes && apart_on_an_axis(ends, delta)) return true;
     const double mid = 0.5 * (T.inf() + T.sup());
     return vertex_face_guesses_separate(
@@ -290,10 +294,7 @@ struct EdgeEdgeMotion {
   /// `axes`: try the axes too (false where culling has just tried the same boxes).
   bool apart_over(const Interval& T, const Interval& delta2, double delta, bool axes) const {
     const Interval lo(T.inf()), hi(T.sup());
-    const EndPositions<2, 2> ends{{v[0].at(lo), v[1].at(lo)},
-                                  {v[0].at(hi), v[1].at(hi)},
-                                  {v[2].at(lo), v[3].at(lo)},
-                                  {v[2].at(hi), v[3].at(hi)}};
+    const auto ends = end_positions<2>(v, lo, hi);
     if (axes && apart_on_an_axis(ends, delta)) return true;
     const double mid = 0.5 * (T.inf() + T.sup());
     return edge_edge_guesses_separate(

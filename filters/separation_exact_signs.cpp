@@ -2,8 +2,6 @@
 // PROOF: proofs/min_separation.md#fixed-width-signs
 #include "filters/separation_exact_signs.hpp"
 
-#include "filters/double_double_bounds.hpp"
-
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -13,7 +11,6 @@
 #include <utility>
 
 #include "core/predicates/separation.hpp"
-#include "filters/double_double_bounds.hpp"
 
 namespace exactccd::filters::separation {
 
@@ -331,26 +328,7 @@ int ExactSignsAtDoubles::bounded_sign(const IntegerKernel& kernel, double t) con
   for (int j = 0; j < 3; ++j)
     for (int c = 0; c < 3; ++c) d[j][c] = steps.d0[j][c] + time * steps.change[j][c];
   const dd::Bounded delta = dd::exactly(in.delta);
-  const dd::Bounded delta2 = delta * delta;
-  dd::Bounded v;
-  switch (kernel.kind) {
-    case KernelKind::capsule: {  // (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
-      const dd::Bounded ee = dd::dot(d[1], d[1]), we = dd::dot(d[0], d[1]);
-      v = (dd::dot(d[0], d[0]) * ee - we * we) - delta2 * ee;
-      break;
-    }
-    case KernelKind::face_like: {  // (W.m)^2 - delta^2 (m.m), m = U x V
-      const dd::Bounded m[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1],
-                                d[0][2] * d[1][0] - d[0][0] * d[1][2],
-                                d[0][0] * d[1][1] - d[0][1] * d[1][0]};
-      const dd::Bounded wm = dd::dot(d[2], m);
-      v = wm * wm - delta2 * dd::dot(m, m);
-      break;
-    }
-    case KernelKind::sphere: v = dd::dot(d[0], d[0]) - delta2; break;
-    case KernelKind::projection: v = dd::dot(d[0], d[1]); break;
-  }
-  return dd::certified_sign(v);
+  return dd::certified_sign(kernel_expression(kernel.kind, d, delta * delta));
 }
 
 int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) const {
@@ -372,28 +350,6 @@ Vec cross3(const Vec& a, const Vec& b) {
 Vec plus3(const Vec& a, const Vec& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 }  // namespace
-
-dd::DoubleDouble ExactSignsAtDoubles::dd_value(KernelKind kind,
-                                               const dd::DoubleDouble (&d)[3][3],
-                                               const dd::DoubleDouble& delta2) {
-  using Kind = KernelKind;
-  switch (kind) {
-    case Kind::capsule: {  // (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
-      const dd::DoubleDouble ee = dd::dot(d[1], d[1]), we = dd::dot(d[0], d[1]);
-      return (dd::dot(d[0], d[0]) * ee - we * we) - delta2 * ee;
-    }
-    case Kind::face_like: {  // (W.m)^2 - delta^2 (m.m), m = U x V
-      const dd::DoubleDouble m[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1],
-                                     d[0][2] * d[1][0] - d[0][0] * d[1][2],
-                                     d[0][0] * d[1][1] - d[0][1] * d[1][0]};
-      const dd::DoubleDouble wm = dd::dot(d[2], m);
-      return wm * wm - delta2 * dd::dot(m, m);
-    }
-    case Kind::sphere: return dd::dot(d[0], d[0]) - delta2;
-    case Kind::projection: return dd::dot(d[0], d[1]);
-  }
-  return {};
-}
 
 double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo,
                                           double hi) const {
@@ -457,7 +413,7 @@ double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo
     const long exponent = v.value.exponent - degree * (static_cast<long>(v.k) + q_.bits);
     value = std::ldexp(v.value.mantissa, static_cast<int>(std::clamp(exponent, -4000L, 4000L)));
   } else {
-    value = dd_value(kernel.kind, dd_d, dd_delta2).hi;
+    value = kernel_expression(kernel.kind, dd_d, dd_delta2).hi;
     if (value == 0) return kNone;
   }
   const double guess = lo - value / slope;

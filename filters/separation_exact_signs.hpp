@@ -114,9 +114,28 @@ class ExactSignsAtDoubles {
   /// A Newton step from lo: g(lo) exact (its leading bits) when just computed, else in
   /// double-double; g'(lo) in plain arithmetic; NaN when it leaves (lo, hi).
   double kernel_newton(const IntegerKernel& kernel, double lo, double hi) const;
-  /// A kernel's polynomial from its differences at a time in double-double (a guess's value).
-  static dd::DoubleDouble dd_value(KernelKind kind, const dd::DoubleDouble (&d)[3][3],
-                                   const dd::DoubleDouble& delta2);
+  /// A kernel's polynomial from its differences at a time, in the number type T: double-double
+  /// (dd::DoubleDouble, a guess's value) or double-double with an error bound (dd::Bounded,
+  /// a certified sign). The same expressions as exact/separation_integers.hpp's kernels.
+  template <class T>
+  static T kernel_expression(KernelKind kind, const T (&d)[3][3], const T& delta2) {
+    switch (kind) {
+      case KernelKind::capsule: {  // (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
+        const T ee = dot(d[1], d[1]), we = dot(d[0], d[1]);
+        return (dot(d[0], d[0]) * ee - we * we) - delta2 * ee;
+      }
+      case KernelKind::face_like: {  // (W.m)^2 - delta^2 (m.m), m = U x V
+        const T m[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1],
+                        d[0][2] * d[1][0] - d[0][0] * d[1][2],
+                        d[0][0] * d[1][1] - d[0][1] * d[1][0]};
+        const T wm = dot(d[2], m);
+        return wm * wm - delta2 * dot(m, m);
+      }
+      case KernelKind::sphere: return dot(d[0], d[0]) - delta2;
+      case KernelKind::projection: return dot(d[0], d[1]);
+    }
+    return {};
+  }
   /// The differences of a kernel in FixedInt (formed when first needed, the last kernel's
   /// kept; none when the coordinates need more than the widest fixed width).
   const exact::StoredStepDifferences* fixed_differences(const exact::DifferenceVertices& v) const;
