@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "core/predicates/double_bits.hpp"
 #include "core/predicates/separation.hpp"
 
 namespace exactccd::filters::separation {
@@ -65,9 +66,17 @@ auto ExactSignsAtDoubles::scaled_inputs() const -> const ScaledInputs& {
     s.exact = true;
     const int shift = q_.common_exponent + q_.bits;
     auto scaled = [&](const exact::Dyadic& x) {
-      const double r = std::ldexp(static_cast<double>(x.mantissa), x.exponent - shift);
-      s.exact &= x.mantissa == 0 || std::fabs(r) >= std::numeric_limits<double>::min();
-      return r;
+      // m 2^p, exact when its magnitude is at least 2^-1022 (normal; |m| < 2^53), which is
+      // decided from m and p: the rounded result can equal 2^-1022 when the exact one is
+      // below it. A product by the double 2^p where that is normal, else ldexp (ldexp always
+      // costs more than the rest of a contact's set-up).
+      if (x.mantissa == 0) return 0.0;
+      const int p = x.exponent - shift;
+      s.exact &= p + exact::mantissa_bits(x.mantissa) - 1 >= -1022;
+      const double m = static_cast<double>(x.mantissa);
+      return p >= -1022 && p <= 1023
+                 ? m * predicates::double_of(static_cast<std::uint64_t>(p + 1023) << 52)
+                 : std::ldexp(m, p);
     };
     for (int end = 0; end < 2; ++end)
       for (int i = 0; i < 4; ++i)
@@ -303,13 +312,14 @@ auto ExactSignsAtDoubles::kernel_value_at(const IntegerKernel& kernel, double t)
   return v;
 }
 
-int ExactSignsAtDoubles::bounded_sign(const IntegerKernel& kernel, double t) const {
+std::optional<dd::Bounded> ExactSignsAtDoubles::bounded_value(const IntegerKernel& kernel,
+                                                              double t) const {
   // Rounding to nearest: the coordinates and delta scaled by 2^-(E + L) (magnitudes below 1;
   // exact where the result is a normal double or 0), the kernel's differences at t from their
   // exact values at t = 0 and t = 1, and the kernel's expression, each operation's error
   // bounded. PROOF: proofs/min_separation.md#double-double-signs
   const ScaledInputs& in = scaled_inputs();
-  if (!in.exact) return dd::kUncertain;
+  if (!in.exact) return std::nullopt;
   const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
   // The differences at t = 0 (exact) and their changes over the step, kept for the kernel's
   // vertices: a search asks the same kernel at several times.
@@ -328,7 +338,12 @@ int ExactSignsAtDoubles::bounded_sign(const IntegerKernel& kernel, double t) con
   for (int j = 0; j < 3; ++j)
     for (int c = 0; c < 3; ++c) d[j][c] = steps.d0[j][c] + time * steps.change[j][c];
   const dd::Bounded delta = dd::exactly(in.delta);
-  return dd::certified_sign(kernel_expression(kernel.kind, d, delta * delta));
+  return kernel_expression(kernel.kind, d, delta * delta);
+}
+
+int ExactSignsAtDoubles::bounded_sign(const IntegerKernel& kernel, double t) const {
+  const std::optional<dd::Bounded> v = bounded_value(kernel, t);
+  return v ? dd::certified_sign(*v) : dd::kUncertain;
 }
 
 int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) const {
@@ -343,13 +358,104 @@ int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) cons
 namespace {
 
 using Vec = std::array<double, 3>;
-double dot3(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec cross3(const Vec& a, const Vec& b) {
+// Over double[3] and Vec alike.
+template <class A, class B>
+double dot3(const A& a, const B& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+template <class A, class B>
+Vec cross3(const A& a, const B& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 Vec plus3(const Vec& a, const Vec& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 
 }  // namespace
+
+double ExactSignsAtDoubles::scaled_value(KernelKind kind, const KernelValue& v) const {
+  // The integer value is 2^(d(k - E)) g(t) for g of degree d, the unit 2^(E + L).
+  const int degree = kind == KernelKind::face_like ? 6 : kind == KernelKind::capsule ? 4 : 2;
+  const long exponent = v.value.exponent - degree * (static_cast<long>(v.k) + q_.bits);
+  return std::ldexp(v.value.mantissa, static_cast<int>(std::clamp(exponent, -4000L, 4000L)));
+}
+
+double ExactSignsAtDoubles::kernel_slope(KernelKind kind, const double (&d)[3][3],
+                                         const double (&step)[3][3], double delta2) {
+  const auto &w = d[0], &e = d[1], &w1 = step[0], &e1 = step[1];
+  switch (kind) {
+    case KernelKind::capsule: {  // c = (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
+      const double ee = dot3(e, e), we = dot3(w, e);
+      return 2 * dot3(w, w1) * ee + 2 * dot3(w, w) * dot3(e, e1) -
+             2 * we * (dot3(w1, e) + dot3(w, e1)) - 2 * delta2 * dot3(e, e1);
+    }
+    case KernelKind::face_like: {  // g = (W.m)^2 - delta^2 (m.m), m = U x V
+      const Vec m = cross3(d[0], d[1]);
+      const Vec m1 = plus3(cross3(step[0], d[1]), cross3(d[0], step[1]));
+      const double wm = dot3(m, d[2]);
+      return 2 * wm * (dot3(m, step[2]) + dot3(m1, d[2])) - 2 * delta2 * dot3(m, m1);
+    }
+    case KernelKind::sphere: return 2 * dot3(w, w1);  // s = w.w - delta^2
+    case KernelKind::projection: return dot3(w1, e) + dot3(w, e1);  // w.e
+  }
+  return 0;
+}
+
+auto ExactSignsAtDoubles::plain_value_slope(const IntegerKernel& kernel, double t) const
+    -> ValueSlope {
+  const ScaledInputs& in = scaled_inputs();
+  double d[3][3], step[3][3];
+  for (int j = 0; j < 3; ++j)
+    for (int c = 0; c < 3; ++c) {
+      const int o = kernel.vertices->origin[j], e = kernel.vertices->end[j];
+      const double d0 = in.x[0][e][c] - in.x[0][o][c];
+      step[j][c] = (in.x[1][e][c] - in.x[1][o][c]) - d0;
+      d[j][c] = d0 + t * step[j][c];
+    }
+  const double delta2 = in.delta * in.delta;
+  return {kernel_expression(kernel.kind, d, delta2), kernel_slope(kernel.kind, d, step, delta2)};
+}
+
+auto ExactSignsAtDoubles::kernel_probe(const IntegerKernel& kernel, double t) const -> Probe {
+  Probe p;
+  p.kernel = true;
+  double value = std::numeric_limits<double>::quiet_NaN();
+  const std::optional<dd::Bounded> v = bounded_value(kernel, t);
+  if (v) {
+    p.sign = dd::certified_sign(*v);
+    value = v->hi;
+  }
+  if (v && p.sign != dd::kUncertain) {
+    ++g_bounded_decisions;
+  } else {
+    const KernelValue exact = kernel_value_at(kernel, t);
+    p.sign = exact.sign;
+    value = scaled_value(kernel.kind, exact);
+  }
+  // The Newton step from the same value (its leading part), g'(t) in plain arithmetic.
+  const double guess = t - value / plain_value_slope(kernel, t).slope;
+  p.newton = std::isfinite(guess) ? guess : std::numeric_limits<double>::quiet_NaN();
+  return p;
+}
+
+double ExactSignsAtDoubles::kernel_guess(const IntegerKernel& kernel, double lo,
+                                         double hi) const {
+  // Safeguarded Newton: [a, b] keeps a sign change of the plain values (a guess's bracket, not
+  // a certified one); a step that leaves it is a bisection. Done when a step is within a few
+  // ulps: closer, the plain values are rounding noise.
+  constexpr int kSteps = 12;
+  double a = lo, b = hi;
+  const double value_a = plain_value_slope(kernel, a).value;
+  double t = a + 0.5 * (b - a);
+  for (int i = 0; i < kSteps; ++i) {
+    const ValueSlope g = plain_value_slope(kernel, t);
+    if (g.value == 0) return t;
+    double next = t - g.value / g.slope;
+    if (std::fabs(next - t) <= 0x1p-50 * std::fabs(t)) return next;
+    ((g.value > 0) == (value_a > 0) ? a : b) = t;
+    if (!(next > a && next < b)) next = a + 0.5 * (b - a);
+    t = next;
+  }
+  return t;
+}
 
 double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo,
                                           double hi) const {
@@ -364,7 +470,7 @@ double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo
   const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
   const ScaledInputs& in = scaled_inputs();
   auto coordinate = [&in](int end, int vertex, int axis) { return in.x[end][vertex][axis]; };
-  Vec d[3], step[3];
+  double d[3][3], step[3][3];
   dd::DoubleDouble dd_d[3][3];  // the differences at lo in double-double
   for (int j = 0; j < 3; ++j)
     for (int c = 0; c < 3; ++c) {
@@ -379,45 +485,36 @@ double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo
   const double delta = in.delta;
   const double delta2 = delta * delta;
   const dd::DoubleDouble dd_delta2 = dd::DoubleDouble{delta, 0.0} * dd::DoubleDouble{delta, 0.0};
-  double slope = 0;
-  int degree = 0;
-  const Vec &w = d[0], &e = d[1], &w1 = step[0], &e1 = step[1];
-  switch (kernel.kind) {
-    case KernelKind::capsule: {  // c = (w.w)(e.e) - (w.e)^2 - delta^2 (e.e)
-      const double ee = dot3(e, e), we = dot3(w, e);
-      slope = 2 * dot3(w, w1) * ee + 2 * dot3(w, w) * dot3(e, e1) -
-              2 * we * (dot3(w1, e) + dot3(w, e1)) - 2 * delta2 * dot3(e, e1);
-      degree = 4;
-      break;
-    }
-    case KernelKind::face_like: {  // g = (W.m)^2 - delta^2 (m.m), m = U x V
-      const Vec m = cross3(d[0], d[1]);
-      const Vec m1 = plus3(cross3(step[0], d[1]), cross3(d[0], step[1]));
-      const double wm = dot3(d[2], m);
-      slope = 2 * wm * (dot3(step[2], m) + dot3(d[2], m1)) - 2 * delta2 * dot3(m, m1);
-      degree = 6;
-      break;
-    }
-    case KernelKind::sphere:  // s = w.w - delta^2
-      slope = 2 * dot3(w, w1);
-      degree = 2;
-      break;
-    case KernelKind::projection:  // w.e
-      slope = dot3(w1, e) + dot3(w, e1);
-      degree = 2;
-      break;
-  }
-  // g(lo) in the same units: the integer value is 2^(d(k - E)) g(lo), the unit 2^(E + L).
+  const double slope = kernel_slope(kernel.kind, d, step, delta2);
   double value = 0;
   if (exact_known) {
-    const long exponent = v.value.exponent - degree * (static_cast<long>(v.k) + q_.bits);
-    value = std::ldexp(v.value.mantissa, static_cast<int>(std::clamp(exponent, -4000L, 4000L)));
+    value = scaled_value(kernel.kind, v);
   } else {
     value = kernel_expression(kernel.kind, dd_d, dd_delta2).hi;
     if (value == 0) return kNone;
   }
   const double guess = lo - value / slope;
   return std::isfinite(guess) && guess > lo && guess < hi ? guess : kNone;
+}
+
+auto ExactSignsAtDoubles::vertex_face_probe(int k, double t) const -> Probe {
+  const IntegerKernel kernel = vertex_face_kernel(k);
+  return kernel.vertices && t >= 0 && t <= 1 ? kernel_probe(kernel, t) : Probe{};
+}
+
+auto ExactSignsAtDoubles::edge_edge_probe(int k, double t) const -> Probe {
+  const IntegerKernel kernel = edge_edge_kernel(k);
+  return kernel.vertices && t >= 0 && t <= 1 ? kernel_probe(kernel, t) : Probe{};
+}
+
+double ExactSignsAtDoubles::vertex_face_guess(int k, double lo, double hi) const {
+  const IntegerKernel kernel = vertex_face_kernel(k);
+  return kernel.vertices ? kernel_guess(kernel, lo, hi) : std::numeric_limits<double>::quiet_NaN();
+}
+
+double ExactSignsAtDoubles::edge_edge_guess(int k, double lo, double hi) const {
+  const IntegerKernel kernel = edge_edge_kernel(k);
+  return kernel.vertices ? kernel_guess(kernel, lo, hi) : std::numeric_limits<double>::quiet_NaN();
 }
 
 int ExactSignsAtDoubles::vertex_face_sign(int k, double t) const {

@@ -42,6 +42,11 @@ using CoefficientTable =
 /// An enclosure of every region polynomial (over a piece, or at an instant).
 using CoefficientValues = std::array<Interval, kMaxSeparationPolynomials>;
 
+/// a.b in plain arithmetic (the kernels' expressions in double: guesses only).
+inline double dot(const double (&a)[3], const double (&b)[3]) {
+  return (a[0] * b[0] + a[1] * b[1]) + a[2] * b[2];
+}
+
 class ExactSignsAtDoubles {
  public:
   /// The four moving vertices (x_t0, x_t1 each) and delta, all finite doubles. No allocation.
@@ -59,6 +64,25 @@ class ExactSignsAtDoubles {
   /// when there is none in (lo, hi) (the others: when the values do not differ).
   double vertex_face_secant(int k, double lo, double hi) const;
   double edge_edge_secant(int k, double lo, double hi) const;
+
+  /// One probe of the tightening at the double t in [0, 1], for a polynomial with a kernel
+  /// (polynomial 0, the capsules' sides, the end spheres, the sides' projections; `kernel`
+  /// false for the others, and nothing computed): its exact sign, in double-double with an
+  /// error bound or else in exact integers, and from the same value a Newton guess of its root
+  /// (never a decision; NaN when there is none).
+  struct Probe {
+    bool kernel = false;
+    int sign = 0;
+    double newton = 0.0;
+  };
+  Probe vertex_face_probe(int k, double t) const;
+  Probe edge_edge_probe(int k, double t) const;
+
+  /// A guess, never a decision, of the root of polynomial k in (lo, hi) (0 <= lo < hi <= 1),
+  /// where it changes sign and is monotone: Newton's method on its kernel in plain double
+  /// arithmetic, kept inside a bracket by bisection; NaN when k has no kernel.
+  double vertex_face_guess(int k, double lo, double hi) const;
+  double edge_edge_guess(int k, double lo, double hi) const;
 
   /// Every region polynomial from its exact integer coefficients, each polynomial times its
   /// own positive power of two (no sign changes) and each coefficient rounded outwards once.
@@ -110,6 +134,22 @@ class ExactSignsAtDoubles {
   /// A kernel's sign at t in double-double with a running error bound
   /// (filters/double_double_bounds.hpp), or dd::kUncertain: tried before exact integers.
   int bounded_sign(const IntegerKernel& kernel, double t) const;
+  /// The kernel's value at t in double-double with its error bound; none where the scaled
+  /// inputs are not exact doubles.
+  std::optional<dd::Bounded> bounded_value(const IntegerKernel& kernel, double t) const;
+  Probe kernel_probe(const IntegerKernel& kernel, double t) const;
+  double kernel_guess(const IntegerKernel& kernel, double lo, double hi) const;
+  /// A kernel's value and derivative at t in plain double arithmetic from the scaled inputs,
+  /// in the caller's rounding mode (guesses only).
+  struct ValueSlope {
+    double value, slope;
+  };
+  ValueSlope plain_value_slope(const IntegerKernel& kernel, double t) const;
+  /// An exact kernel value's leading bits in the scaled inputs' units (plain_value_slope's).
+  double scaled_value(KernelKind kind, const KernelValue& v) const;
+  /// A kernel's derivative in t from its differences d at t and their changes over the step.
+  static double kernel_slope(KernelKind kind, const double (&d)[3][3],
+                             const double (&step)[3][3], double delta2);
   int kernel_sign(const IntegerKernel& kernel, double t) const;
   /// A Newton step from lo: g(lo) exact (its leading bits) when just computed, else in
   /// double-double; g'(lo) in plain arithmetic; NaN when it leaves (lo, hi).

@@ -103,14 +103,37 @@ struct FactoredEnclosures {
   }
 };
 
+/// ExactSignsAtDoubles' members for one query type.
+struct ExactMembers {
+  using E = separation::ExactSignsAtDoubles;
+  int (E::*sign)(int, double) const;
+  double (E::*secant)(int, double, double) const;
+  void (E::*coefficients)(separation::CoefficientTable*) const;
+  E::Probe (E::*probe)(int, double) const;
+  double (E::*guess)(int, double, double) const;
+};
+constexpr ExactMembers kVertexFaceMembers{
+    &separation::ExactSignsAtDoubles::vertex_face_sign,
+    &separation::ExactSignsAtDoubles::vertex_face_secant,
+    &separation::ExactSignsAtDoubles::vertex_face_coefficients,
+    &separation::ExactSignsAtDoubles::vertex_face_probe,
+    &separation::ExactSignsAtDoubles::vertex_face_guess};
+constexpr ExactMembers kEdgeEdgeMembers{
+    &separation::ExactSignsAtDoubles::edge_edge_sign,
+    &separation::ExactSignsAtDoubles::edge_edge_secant,
+    &separation::ExactSignsAtDoubles::edge_edge_coefficients,
+    &separation::ExactSignsAtDoubles::edge_edge_probe,
+    &separation::ExactSignsAtDoubles::edge_edge_guess};
+
 /// The search over [0, t_max] for the four moving vertices (t0, t1) of one query type: `make`
-/// builds its separation, `sign` and `secant` are ExactSignsAtDoubles' members for that type
-/// (the integer query built only when first asked). Not inlined: its frame (the polynomial
-/// table, the integer query) is large, and most queries never get here.
-template <class Motion, class Make, class Sign, class Secant, class Coefficients>
-[[gnu::noinline]] SeparationOutcome search_for_first_within(
-    const Vertices& t0, const Vertices& t1, const CcdOptions& options, Make make, Sign sign,
-    Secant secant, Coefficients coefficients) {
+/// builds its separation, `members` are ExactSignsAtDoubles' members for that type (the
+/// integer query built only when first asked). Not inlined: its frame (the polynomial table,
+/// the integer query) is large, and most queries never get here.
+template <class Motion, class Make>
+[[gnu::noinline]] SeparationOutcome search_for_first_within(const Vertices& t0,
+                                                            const Vertices& t1,
+                                                            const CcdOptions& options, Make make,
+                                                            const ExactMembers& members) {
   using separation::MovingVertex;
   const RoundingGuard upward;
   const Motion m{{MovingVertex(*t0[0], *t1[0]), MovingVertex(*t0[1], *t1[1]),
@@ -131,9 +154,11 @@ template <class Motion, class Make, class Sign, class Secant, class Coefficients
       [&factored](double lo, double hi, separation::CoefficientValues* out) {
         factored.all_over(Interval(lo, hi), out);
       },
-      [&](int k, double t) { return (exact_signs().*sign)(k, t); },
-      [&](int k, double lo, double hi) { return (exact_signs().*secant)(k, lo, hi); },
-      [&](separation::CoefficientTable* out) { (exact_signs().*coefficients)(out); }};
+      [&](int k, double t) { return (exact_signs().*members.sign)(k, t); },
+      [&](int k, double lo, double hi) { return (exact_signs().*members.secant)(k, lo, hi); },
+      [&](separation::CoefficientTable* out) { (exact_signs().*members.coefficients)(out); },
+      [&](int k, double t) { return (exact_signs().*members.probe)(k, t); },
+      [&](int k, double lo, double hi) { return (exact_signs().*members.guess)(k, lo, hi); }};
   SeparationOutcome out = first_within(m, s, exact, options);
   // The stage: exact_at_double when a sign, guess or table needed exact integers.
   if (integer && integer->used_exact_arithmetic()) out.exact_used = true;
@@ -141,12 +166,10 @@ template <class Motion, class Make, class Sign, class Secant, class Coefficients
 }
 
 /// The whole-step test, then the search.
-template <class Motion, class WholeStep, class Make, class Sign, class Secant,
-          class Coefficients>
+template <class Motion, class WholeStep, class Make>
 SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
                                     const CcdOptions& options, WholeStep apart_over_whole_step,
-                                    Make make, Sign sign, Secant secant,
-                                    Coefficients coefficients) {
+                                    Make make, const ExactMembers& members) {
   // Most pairs that pass culling are decided here, from the input doubles alone, rounding to
   // nearest as the library's entry has set.
   if (apart_over_whole_step(t0, t1, options.min_separation)) {
@@ -155,7 +178,7 @@ SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
     out.cleared_until = options.t_max;
     return out;
   }
-  return search_for_first_within<Motion>(t0, t1, options, make, sign, secant, coefficients);
+  return search_for_first_within<Motion>(t0, t1, options, make, members);
 }
 
 }  // namespace
@@ -176,9 +199,7 @@ SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
       {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0}, {&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1}, options,
       separation::vertex_face_apart_over_whole_step,
       [](const auto&... x) { return predicates::vertex_face_separation(x...); },
-      &separation::ExactSignsAtDoubles::vertex_face_sign,
-      &separation::ExactSignsAtDoubles::vertex_face_secant,
-      &separation::ExactSignsAtDoubles::vertex_face_coefficients);
+      kVertexFaceMembers);
 }
 
 SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
@@ -186,9 +207,7 @@ SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdO
       {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0}, {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
       options, separation::edge_edge_apart_over_whole_step,
       [](const auto&... x) { return predicates::edge_edge_separation(x...); },
-      &separation::ExactSignsAtDoubles::edge_edge_sign,
-      &separation::ExactSignsAtDoubles::edge_edge_secant,
-      &separation::ExactSignsAtDoubles::edge_edge_coefficients);
+      kEdgeEdgeMembers);
 }
 
 }  // namespace exactccd::filters

@@ -129,6 +129,10 @@ struct SignsAtDoubles {
   std::function<int(int k, double t)> sign;
   std::function<double(int k, double lo, double hi)> secant;
   std::function<void(CoefficientTable*)> coefficients;
+  /// For a polynomial with a kernel (ExactSignsAtDoubles::Probe): its exact sign at t and a
+  /// Newton guess from the same value; and a guess of its root in (lo, hi) in plain arithmetic.
+  std::function<ExactSignsAtDoubles::Probe(int k, double t)> probe;
+  std::function<double(int k, double lo, double hi)> guess;
 };
 
 /// Every piece before the current one is certainly never within delta (`cleared_` is its
@@ -468,6 +472,10 @@ class FirstWithinSearch {
   /// neighbour on r's side), to the tightest pair of doubles (or toi_width).
   /// PROOF: proofs/min_separation.md#interval-search
   Step tighten(int k, double lo, double hi, int s_lo) {
+    if (exact_.probe && exact_.guess) {
+      const double start = exact_.guess(k, lo, hi);
+      if (!std::isnan(start)) return tighten_by_newton(k, lo, hi, s_lo, start);
+    }
     constexpr int kGuidedSteps = 16;
     const Poly6& g = poly(k);
     bool exact_phase = false;  // the interval signs have failed once: exact signs from here
@@ -551,6 +559,38 @@ class FirstWithinSearch {
         }
         (s_next == s_lo ? lo : hi) = next;
       }
+    }
+    toi_lo_ = lo;
+    toi_hi_ = hi;
+    return Step::found;
+  }
+
+  /// tighten for a polynomial with a kernel: Newton's method in plain arithmetic has guessed
+  /// the root r (`start`); from there every probe is an exact sign at a double (double-double
+  /// with an error bound, exact integers where it cannot tell), which moves lo or hi, and its
+  /// value's Newton step is the next probe; a step that rounds back to the probe goes to the
+  /// probe's neighbour on r's side instead, so that two probes usually close the bracket to
+  /// adjacent doubles. The intervals are not asked: at a guess this close to r they cannot
+  /// tell. Past kNewtonProbes probes, bisection in the order of doubles.
+  /// PROOF: proofs/min_separation.md#newton-tightening
+  Step tighten_by_newton(int k, double lo, double hi, int s_lo, double start) {
+    constexpr int kNewtonProbes = 8;
+    double t = start;
+    for (int probes = 0;; ++probes) {
+      if (options_.toi_width > 0 && hi - lo <= options_.toi_width) break;  // rounded up
+      double mid = 0;
+      if (!predicates::middle_double(lo, hi, &mid)) break;
+      if (!(t > lo && t < hi) || probes >= kNewtonProbes) t = mid;
+      const ExactSignsAtDoubles::Probe p = exact_.probe(k, t);
+      if (p.sign == 0) {
+        lo = hi = t;
+        break;
+      }
+      const bool below = p.sign == s_lo;  // t < r
+      (below ? lo : hi) = t;
+      const double neighbour = below ? std::nextafter(t, hi) : std::nextafter(t, lo);
+      // The Newton step, unless it does not leave t or goes the wrong way.
+      t = (below ? p.newton > t : p.newton < t) ? p.newton : neighbour;
     }
     toi_lo_ = lo;
     toi_hi_ = hi;

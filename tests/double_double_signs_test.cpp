@@ -1,5 +1,6 @@
 // Signs of the minimum-separation region polynomials at doubles from double-double with a
-// running error bound (filters/double_double_bounds.hpp, ExactSignsAtDoubles::bounded_sign),
+// running error bound (filters/double_double_bounds.hpp, ExactSignsAtDoubles::bounded_sign,
+// and the tightening's probes, ExactSignsAtDoubles::*_probe),
 // against the same polynomials over the rationals (core/predicates/separation.hpp read in
 // mpq_class), where it matters: at the two adjacent doubles around each root of every kernel
 // polynomial (found by bisection over the rationals) and a few ulps either side, where the
@@ -43,6 +44,12 @@ int sign_at(const filters::separation::ExactSignsAtDoubles& s, bool vf, int k, d
   return vf ? s.vertex_face_sign(k, t) : s.edge_edge_sign(k, t);
 }
 
+/// The tightening's probe (the same sign, with a Newton guess from its value).
+filters::separation::ExactSignsAtDoubles::Probe probe_at(
+    const filters::separation::ExactSignsAtDoubles& s, bool vf, int k, double t) {
+  return vf ? s.vertex_face_probe(k, t) : s.edge_edge_probe(k, t);
+}
+
 /// For every kernel polynomial with a sign change over [0, 1]: the adjacent doubles around a
 /// root and three ulps either side, plus a few random times.
 void check_case(const Case& c, bool vf, std::mt19937_64& rng, Tally* tally) {
@@ -52,11 +59,13 @@ void check_case(const Case& c, bool vf, std::mt19937_64& rng, Tally* tally) {
   auto expect = [&](int k, double t, const std::string& where) {
     const int expected = sgn(rational_value(c, vf, k, t));
     const int got = sign_at(signs, vf, k, t);
+    const auto probe = probe_at(signs, vf, k, t);
     ++tally->checked;
-    if (got != expected) {
+    if (got != expected || !probe.kernel || probe.sign != expected) {
       ++tally->wrong;
       ADD_FAILURE() << (vf ? "vertex-face " : "edge-edge ") << k << " at " << t << " ("
-                    << where << "): " << got << ", exact " << expected;
+                    << where << "): " << got << ", probe " << probe.sign << ", exact "
+                    << expected;
     }
   };
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -148,6 +157,34 @@ TEST(DoubleDoubleSigns, EqualTheRationalSignsAtTheDoublesAroundEveryRoot) {
   EXPECT_GT(tally.checked, static_cast<long>(20 * n));
   EXPECT_GT(bounded, static_cast<std::uint64_t>(tally.checked / 2))
       << bounded << " of " << tally.checked;
+}
+
+/// A coordinate whose scaled value is exactly halfway between 2^-1022 and the largest
+/// subnormal: (2^53 - 1) 2^-1074 against coordinates in [1, 2) scales to (2^53 - 1) 2^-1075,
+/// which rounds to 2^-1022, a normal double, though the exact value is not one. The
+/// double-double path must not take it (its bound assumes exact inputs): the integers decide.
+TEST(DoubleDoubleSigns, AScaledInputThatRoundsToTheSmallestNormalIsLeftToTheIntegers) {
+  Case c;
+  for (int i = 0; i < 4; ++i) {
+    c.t0[i] = Eigen::Vector3d(1.0 + 0.25 * i, 1.5 - 0.125 * i, 1.0625 * (i % 2));
+    c.t1[i] = c.t0[i] + Eigen::Vector3d(0.03125 * i, -0.0625, 0.5 * (i == 0));
+  }
+  c.t0[2][2] = std::nextafter(0x1p-1021, 0.0);  // (2^53 - 1) 2^-1074
+  c.delta = 0.25;
+  for (const bool vf : {true, false}) {
+    const filters::separation::ExactSignsAtDoubles signs(
+        {&c.t0[0], &c.t0[1], &c.t0[2], &c.t0[3]}, {&c.t1[0], &c.t1[1], &c.t1[2], &c.t1[3]},
+        c.delta);
+    for (const int k : vf ? kVertexFace : kEdgeEdge)
+      for (const double t : {0.0, 0.375, 0.5, 1.0}) {
+        const std::uint64_t before = filters::separation::bounded_decisions_in_this_thread();
+        EXPECT_EQ(sign_at(signs, vf, k, t), sgn(rational_value(c, vf, k, t)))
+            << (vf ? "vertex-face " : "edge-edge ") << k << " at " << t;
+        EXPECT_EQ(probe_at(signs, vf, k, t).sign, sgn(rational_value(c, vf, k, t)));
+        EXPECT_EQ(filters::separation::bounded_decisions_in_this_thread(), before)
+            << (vf ? "vertex-face " : "edge-edge ") << k << " at " << t;
+      }
+  }
 }
 
 }  // namespace
