@@ -296,7 +296,6 @@ auto ExactSignsAtDoubles::kernel_values(const IntegerKernel& kernel,
 
 auto ExactSignsAtDoubles::kernel_value_at(const IntegerKernel& kernel, double t) const
     -> KernelValue {
-  if (last_.vertices == kernel.vertices && last_.t == t) return last_.value;
   exact_arithmetic_ = true;
   exact::DyadicTime d;
   exact::dyadic_time(t, &d);  // the callers pass t in [0, 1]
@@ -308,7 +307,6 @@ auto ExactSignsAtDoubles::kernel_value_at(const IntegerKernel& kernel, double t)
                                                return KernelValue{sign, approx[0], d.exponent};
                                              });
       });
-  last_ = {kernel.vertices, t, v};
   return v;
 }
 
@@ -457,46 +455,6 @@ double ExactSignsAtDoubles::kernel_guess(const IntegerKernel& kernel, double lo,
   return t;
 }
 
-double ExactSignsAtDoubles::kernel_newton(const IntegerKernel& kernel, double lo,
-                                          double hi) const {
-  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-  if (!(lo >= 0 && lo <= 1)) return kNone;
-  // g(lo) exact when it has just been computed, else in double-double below.
-  const bool exact_known = last_.vertices == kernel.vertices && last_.t == lo;
-  const KernelValue v = exact_known ? last_.value : KernelValue{};
-  if (exact_known && v.sign == 0) return kNone;
-  // A guess from here, rounding to nearest: the coordinates divided by 2^(E + L) (magnitudes at
-  // most 1), the differences and their changes over the step at lo, and g'(lo) in those units.
-  const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
-  const ScaledInputs& in = scaled_inputs();
-  auto coordinate = [&in](int end, int vertex, int axis) { return in.x[end][vertex][axis]; };
-  double d[3][3], step[3][3];
-  dd::DoubleDouble dd_d[3][3];  // the differences at lo in double-double
-  for (int j = 0; j < 3; ++j)
-    for (int c = 0; c < 3; ++c) {
-      const int o = kernel.vertices->origin[j], e = kernel.vertices->end[j];
-      const dd::DoubleDouble d0 = dd::difference(coordinate(0, e, c), coordinate(0, o, c));
-      const dd::DoubleDouble change =
-          dd::difference(coordinate(1, e, c), coordinate(1, o, c)) - d0;
-      dd_d[j][c] = d0 + dd::DoubleDouble{lo, 0.0} * change;
-      step[j][c] = change.hi;
-      d[j][c] = dd_d[j][c].hi;
-    }
-  const double delta = in.delta;
-  const double delta2 = delta * delta;
-  const dd::DoubleDouble dd_delta2 = dd::DoubleDouble{delta, 0.0} * dd::DoubleDouble{delta, 0.0};
-  const double slope = kernel_slope(kernel.kind, d, step, delta2);
-  double value = 0;
-  if (exact_known) {
-    value = scaled_value(kernel.kind, v);
-  } else {
-    value = kernel_expression(kernel.kind, dd_d, dd_delta2).hi;
-    if (value == 0) return kNone;
-  }
-  const double guess = lo - value / slope;
-  return std::isfinite(guess) && guess > lo && guess < hi ? guess : kNone;
-}
-
 auto ExactSignsAtDoubles::vertex_face_probe(int k, double t) const -> Probe {
   const IntegerKernel kernel = vertex_face_kernel(k);
   return kernel.vertices && t >= 0 && t <= 1 ? kernel_probe(kernel, t) : Probe{};
@@ -530,8 +488,6 @@ int ExactSignsAtDoubles::edge_edge_sign(int k, double t) const {
 }
 
 double ExactSignsAtDoubles::vertex_face_secant(int k, double lo, double hi) const {
-  const IntegerKernel kernel = vertex_face_kernel(k);
-  if (kernel.vertices) return kernel_newton(kernel, lo, hi);
   return secant(MakeVertexFace{}, k, lo, hi);
 }
 
@@ -544,8 +500,6 @@ void ExactSignsAtDoubles::edge_edge_coefficients(CoefficientTable* out) const {
 }
 
 double ExactSignsAtDoubles::edge_edge_secant(int k, double lo, double hi) const {
-  const IntegerKernel kernel = edge_edge_kernel(k);
-  if (kernel.vertices) return kernel_newton(kernel, lo, hi);
   return secant(MakeEdgeEdge{}, k, lo, hi);
 }
 

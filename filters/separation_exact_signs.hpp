@@ -59,9 +59,9 @@ class ExactSignsAtDoubles {
   int edge_edge_sign(int k, double t) const;
 
   /// A guess, in plain arithmetic and never a decision, of the root of polynomial k in
-  /// (lo, hi), 0 < lo < hi: for polynomial 0 and the capsules a Newton step from lo with the
-  /// exact value there; for the others the secant through its exact values at lo and hi. NaN
-  /// when there is none in (lo, hi) (the others: when the values do not differ).
+  /// (lo, hi), 0 < lo < hi: the secant through its exact values at lo and hi (GMP); NaN when
+  /// there is none in (lo, hi). The search asks it only for the polynomials without a kernel
+  /// (the others are tightened by *_probe).
   double vertex_face_secant(int k, double lo, double hi) const;
   double edge_edge_secant(int k, double lo, double hi) const;
 
@@ -151,12 +151,9 @@ class ExactSignsAtDoubles {
   static double kernel_slope(KernelKind kind, const double (&d)[3][3],
                              const double (&step)[3][3], double delta2);
   int kernel_sign(const IntegerKernel& kernel, double t) const;
-  /// A Newton step from lo: g(lo) exact (its leading bits) when just computed, else in
-  /// double-double; g'(lo) in plain arithmetic; NaN when it leaves (lo, hi).
-  double kernel_newton(const IntegerKernel& kernel, double lo, double hi) const;
-  /// A kernel's polynomial from its differences at a time, in the number type T: double-double
-  /// (dd::DoubleDouble, a guess's value) or double-double with an error bound (dd::Bounded,
-  /// a certified sign). The same expressions as exact/separation_integers.hpp's kernels.
+  /// A kernel's polynomial from its differences at a time, in the number type T: double (a
+  /// guess's value) or double-double with an error bound (dd::Bounded, a certified sign). The
+  /// same expressions as exact/separation_integers.hpp's kernels.
   template <class T>
   static T kernel_expression(KernelKind kind, const T (&d)[3][3], const T& delta2) {
     switch (kind) {
@@ -206,13 +203,6 @@ class ExactSignsAtDoubles {
   mutable std::optional<Gmp> gmp_;
   mutable std::optional<exact::StoredStepDifferences> fixed_differences_;
   mutable const exact::DifferenceVertices* fixed_differences_of_ = nullptr;
-  /// The last kernel value computed (a Newton step from the last probe reuses it).
-  struct LastValue {
-    const exact::DifferenceVertices* vertices = nullptr;
-    double t = 0;
-    KernelValue value;
-  };
-  mutable LastValue last_;
   mutable bool exact_arithmetic_ = false;
 };
 
