@@ -67,6 +67,15 @@ FixedPoly<NT, D1 + D2> operator*(const FixedPoly<NT, D1>& a, const FixedPoly<NT,
   return r;
 }
 
+/// Constants (degree 0: a number at one instant or over an interval, as the factored forms
+/// of the minimum-separation search evaluate them): always inlined, where a call costs more
+/// than the product itself.
+template <class NT>
+[[gnu::always_inline]] EXACTCCD_CERTIFIED FixedPoly<NT, 0> operator*(
+    const FixedPoly<NT, 0>& a, const FixedPoly<NT, 0>& b) {
+  return {{a.c[0] * b.c[0]}};
+}
+
 /// Horner evaluation at t (for an interval t: an enclosure of the range over t).
 template <class NT, int D, class T>
 EXACTCCD_CERTIFIED NT evaluate(const FixedPoly<NT, D>& p, const T& t) {
