@@ -401,16 +401,25 @@ EXACTCCD_CERTIFIED bool apart_over_whole_step(const InputVertices<4>& t0,
 EXACTCCD_CERTIFIED bool vertex_face_apart_over_whole_step(const InputVertices<4>& t0,
                                                           const InputVertices<4>& t1,
                                                           double delta) {
-  return apart_over_whole_step<1>(t0, t1, delta, [](const auto&... x) {
-    return vertex_face_guesses_separate(x...);
+  return apart_over_whole_step<1>(t0, t1, delta, [](const auto& p, const auto& a, const auto& b,
+                                                    const auto& c, auto&& apart_along) {
+    // First the direction from the triangle's centroid (three times it) to the vertex: no
+    // closest point to compute, and it separates a mesh's neighbours that are far apart
+    // but whose boxes touch (a grid cell's corner against its other triangle).
+    return apart_along(3.0 * p - ((a + b) + c)) ||
+           vertex_face_guesses_separate(p, a, b, c, apart_along);
   });
 }
 
 EXACTCCD_CERTIFIED bool edge_edge_apart_over_whole_step(const InputVertices<4>& t0,
                                                         const InputVertices<4>& t1,
                                                         double delta) {
-  return apart_over_whole_step<2>(t0, t1, delta, [](const auto&... x) {
-    return edge_edge_guesses_separate(x...);
+  return apart_over_whole_step<2>(t0, t1, delta, [](const auto& a0, const auto& a1,
+                                                    const auto& b0, const auto& b1,
+                                                    auto&& apart_along) {
+    // First the direction between the edges' middles (twice it), as for vertex-face.
+    return apart_along((a0 + a1) - (b0 + b1)) ||
+           edge_edge_guesses_separate(a0, a1, b0, b1, apart_along);
   });
 }
 
