@@ -339,18 +339,22 @@ std::optional<dd::Bounded> ExactSignsAtDoubles::bounded_value(const IntegerKerne
   return kernel_expression(kernel.kind, d, delta * delta);
 }
 
-int ExactSignsAtDoubles::bounded_sign(const IntegerKernel& kernel, double t) const {
+auto ExactSignsAtDoubles::kernel_signed_value(const IntegerKernel& kernel, double t) const
+    -> SignedValue {
   const std::optional<dd::Bounded> v = bounded_value(kernel, t);
-  return v ? dd::certified_sign(*v) : dd::kUncertain;
+  if (v) {
+    const int s = dd::certified_sign(*v);
+    if (s != dd::kUncertain) {
+      ++g_bounded_decisions;
+      return {s, v->hi};
+    }
+  }
+  const KernelValue exact = kernel_value_at(kernel, t);
+  return {exact.sign, scaled_value(kernel.kind, exact)};
 }
 
 int ExactSignsAtDoubles::kernel_sign(const IntegerKernel& kernel, double t) const {
-  const int s = bounded_sign(kernel, t);
-  if (s != dd::kUncertain) {
-    ++g_bounded_decisions;
-    return s;
-  }
-  return kernel_value_at(kernel, t).sign;
+  return kernel_signed_value(kernel, t).sign;
 }
 
 namespace {
@@ -413,25 +417,10 @@ auto ExactSignsAtDoubles::plain_value_slope(const IntegerKernel& kernel, double 
 }
 
 auto ExactSignsAtDoubles::kernel_probe(const IntegerKernel& kernel, double t) const -> Probe {
-  Probe p;
-  p.kernel = true;
-  double value = std::numeric_limits<double>::quiet_NaN();
-  const std::optional<dd::Bounded> v = bounded_value(kernel, t);
-  if (v) {
-    p.sign = dd::certified_sign(*v);
-    value = v->hi;
-  }
-  if (v && p.sign != dd::kUncertain) {
-    ++g_bounded_decisions;
-  } else {
-    const KernelValue exact = kernel_value_at(kernel, t);
-    p.sign = exact.sign;
-    value = scaled_value(kernel.kind, exact);
-  }
+  const SignedValue v = kernel_signed_value(kernel, t);
   // The Newton step from the same value (its leading part), g'(t) in plain arithmetic.
-  const double guess = t - value / plain_value_slope(kernel, t).slope;
-  p.newton = std::isfinite(guess) ? guess : std::numeric_limits<double>::quiet_NaN();
-  return p;
+  const double guess = t - v.value / plain_value_slope(kernel, t).slope;
+  return {true, v.sign, std::isfinite(guess) ? guess : std::numeric_limits<double>::quiet_NaN()};
 }
 
 double ExactSignsAtDoubles::kernel_guess(const IntegerKernel& kernel, double lo,
@@ -457,12 +446,14 @@ double ExactSignsAtDoubles::kernel_guess(const IntegerKernel& kernel, double lo,
 
 auto ExactSignsAtDoubles::vertex_face_probe(int k, double t) const -> Probe {
   const IntegerKernel kernel = vertex_face_kernel(k);
-  return kernel.vertices && t >= 0 && t <= 1 ? kernel_probe(kernel, t) : Probe{};
+  if (kernel.vertices && t >= 0 && t <= 1) return kernel_probe(kernel, t);
+  return {false, vertex_face_sign(k, t), std::numeric_limits<double>::quiet_NaN()};
 }
 
 auto ExactSignsAtDoubles::edge_edge_probe(int k, double t) const -> Probe {
   const IntegerKernel kernel = edge_edge_kernel(k);
-  return kernel.vertices && t >= 0 && t <= 1 ? kernel_probe(kernel, t) : Probe{};
+  if (kernel.vertices && t >= 0 && t <= 1) return kernel_probe(kernel, t);
+  return {false, edge_edge_sign(k, t), std::numeric_limits<double>::quiet_NaN()};
 }
 
 double ExactSignsAtDoubles::vertex_face_guess(int k, double lo, double hi) const {

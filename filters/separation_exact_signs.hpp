@@ -65,11 +65,11 @@ class ExactSignsAtDoubles {
   double vertex_face_secant(int k, double lo, double hi) const;
   double edge_edge_secant(int k, double lo, double hi) const;
 
-  /// One probe of the tightening at the double t in [0, 1], for a polynomial with a kernel
-  /// (polynomial 0, the capsules' sides, the end spheres, the sides' projections; `kernel`
-  /// false for the others, and nothing computed): its exact sign, in double-double with an
-  /// error bound or else in exact integers, and from the same value a Newton guess of its root
-  /// (never a decision; NaN when there is none).
+  /// One probe of the tightening at the double t: the exact sign of polynomial k there and,
+  /// for a polynomial with a kernel (polynomial 0, the capsules' sides, the end spheres, the
+  /// sides' projections) at t in [0, 1], a Newton guess of its root from the same value (never
+  /// a decision; NaN when there is none, and for the others, whose sign is *_sign's and
+  /// `kernel` false). The sign is always exact: never a default 0 that would read as a root.
   struct Probe {
     bool kernel = false;
     int sign = 0;
@@ -131,12 +131,16 @@ class ExactSignsAtDoubles {
     unsigned k = 0;
   };
   KernelValue kernel_value_at(const IntegerKernel& kernel, double t) const;
-  /// A kernel's sign at t in double-double with a running error bound
-  /// (filters/double_double_bounds.hpp), or dd::kUncertain: tried before exact integers.
-  int bounded_sign(const IntegerKernel& kernel, double t) const;
-  /// The kernel's value at t in double-double with its error bound; none where the scaled
-  /// inputs are not exact doubles.
+  /// The kernel's value at t in double-double with a running error bound
+  /// (filters/double_double_bounds.hpp); none where the scaled inputs are not exact doubles.
   std::optional<dd::Bounded> bounded_value(const IntegerKernel& kernel, double t) const;
+  /// A kernel's exact sign at t and its value's leading part in the scaled inputs' units: from
+  /// bounded_value when its bound excludes 0 (counted), else from exact integers.
+  struct SignedValue {
+    int sign;
+    double value;
+  };
+  SignedValue kernel_signed_value(const IntegerKernel& kernel, double t) const;
   Probe kernel_probe(const IntegerKernel& kernel, double t) const;
   double kernel_guess(const IntegerKernel& kernel, double lo, double hi) const;
   /// A kernel's value and derivative at t in plain double arithmetic from the scaled inputs,
@@ -191,7 +195,7 @@ class ExactSignsAtDoubles {
   const ScaledInputs& scaled_inputs() const;
 
   /// A kernel's differences at t = 0 and their changes over the step in double-double with
-  /// error bounds (bounded_sign), for the kernel vertices `of`.
+  /// error bounds (bounded_value), for the kernel vertices `of`.
   struct BoundedSteps {
     const exact::DifferenceVertices* of = nullptr;
     dd::Bounded d0[3][3], change[3][3];

@@ -444,13 +444,15 @@ class FirstWithinSearch {
   /// The certified sign of polynomial k at the double t: the table's enclosure, else the
   /// factored form's.
   CertifiedSign interval_sign_at(int k, double t) {
-    // Without coefficients at hand, the positions' enclosure first (it needs none).
-    if (!table_.computed(k) && exact_.factored) {
+    // Without coefficients at hand, the positions' enclosure first (it needs none); each
+    // enclosure at most once.
+    const bool factored_first = !table_.computed(k) && exact_.factored;
+    if (factored_first) {
       const CertifiedSign s = certified_sign(exact_.factored(k, t));
       if (s != CertifiedSign::uncertain) return s;
     }
     const CertifiedSign s = certified_sign(predicates::evaluate(poly(k), Interval(t)));
-    if (s != CertifiedSign::uncertain || !exact_.factored) return s;
+    if (s != CertifiedSign::uncertain || !exact_.factored || factored_first) return s;
     return certified_sign(exact_.factored(k, t));
   }
 

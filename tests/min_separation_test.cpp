@@ -373,8 +373,8 @@ TEST(MinSeparationTest, CullingAtBothEndsAgreesWithTheExactPath) {
 }
 
 TEST(MinSeparationTest, IntegerSignsAtDoublesEqualRationalPolynomialSigns) {
-  // The filters' exact signs at double times (integers, positions scaled by powers of two)
-  // against the region polynomials over the rationals evaluated at the same time, on random
+  // The filters' exact signs at double times (integers, positions scaled by powers of two),
+  // and the tightening's probes, against the region polynomials over the rationals evaluated at the same time, on random
   // queries of wide scales and tiny motions; then exact zeros on hand-made tangencies.
   std::mt19937_64 rng(3);
   const int n = static_cast<int>(test::scaled_count(200));
@@ -408,6 +408,11 @@ TEST(MinSeparationTest, IntegerSignsAtDoublesEqualRationalPolynomialSigns) {
         const int got = type == QueryType::vertex_face ? signs.vertex_face_sign(k, t)
                                                        : signs.edge_edge_sign(k, t);
         ASSERT_EQ(got, expected) << "query " << i << " polynomial " << k << " t " << t;
+        // The tightening's probe: the same exact sign for every polynomial, those without a
+        // double-double kernel included (never a default 0, which would read as a root).
+        const auto probe = type == QueryType::vertex_face ? signs.vertex_face_probe(k, t)
+                                                          : signs.edge_edge_probe(k, t);
+        ASSERT_EQ(probe.sign, expected) << "probe, query " << i << " polynomial " << k;
         ++compared;
       }
     }
