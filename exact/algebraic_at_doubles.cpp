@@ -12,6 +12,7 @@
 #include "core/predicates/inclusion.hpp"
 #include "exact/fixed_width_dispatch.hpp"
 #include "exact/integer_cubic.hpp"
+#include "exact/integer_query.hpp"
 #include "exact/bracketed_root.hpp"
 #include "exact/small_polynomial.hpp"
 
@@ -149,10 +150,16 @@ CcdResult decide(const IntegerCoordinates& q, const SmallPolynomial& cubic,
   return best ? contact(*best, options) : no_contact();
 }
 
-SmallPolynomial cubic_of(const IntegerCoordinates& q) {
+/// The coplanarity cubic of q; `known` (of the same query, or nullptr) holds it already when
+/// its coefficients are in GMP: the same function of the same integer coordinates.
+SmallPolynomial cubic_of(const IntegerCoordinates& q, const IntegerQuery* known) {
   const long bits = cubic_coefficient_bits(q.bits);
   const int limbs = fixed_limbs_for(bits);
   if (limbs == 0) {
+    if (known && known->coefficient_limbs() == 0) {
+      const std::array<mpz_class, 4> c = known->coefficients();
+      return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c.data(), 4).data(), 4);
+    }
     mpz_class c[4];
     coplanarity_coefficients(q, c);
     return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c, 4).data(), 4);
@@ -164,9 +171,10 @@ SmallPolynomial cubic_of(const IntegerCoordinates& q) {
   });
 }
 
-std::optional<CcdResult> at_doubles(const IntegerCoordinates& q, const CcdOptions& options) {
+std::optional<CcdResult> at_doubles(const IntegerCoordinates& q, const CcdOptions& options,
+                                    const IntegerQuery* known) {
   try {
-    const SmallPolynomial cubic = cubic_of(q);
+    const SmallPolynomial cubic = cubic_of(q, known);
     // The coordinate type holds every inclusion polynomial: a few widths suffice.
     const int limbs = fixed_limbs_for(inclusion_bits(q.bits));
     if (limbs != 0 && limbs <= 2) return decide<FixedInt<2>>(q, cubic, options);
@@ -183,13 +191,15 @@ std::optional<CcdResult> at_doubles(const IntegerCoordinates& q, const CcdOption
 }  // namespace
 
 std::optional<CcdResult> vertex_face_ccd_at_doubles(const VertexFaceQuery& q,
-                                                    const CcdOptions& options) {
-  return at_doubles(integer_coordinates(q), options);
+                                                    const CcdOptions& options,
+                                                    const IntegerQuery* known) {
+  return at_doubles(known ? known->coordinates() : integer_coordinates(q), options, known);
 }
 
 std::optional<CcdResult> edge_edge_ccd_at_doubles(const EdgeEdgeQuery& q,
-                                                  const CcdOptions& options) {
-  return at_doubles(integer_coordinates(q), options);
+                                                  const CcdOptions& options,
+                                                  const IntegerQuery* known) {
+  return at_doubles(known ? known->coordinates() : integer_coordinates(q), options, known);
 }
 
 std::uint64_t unresolved_at_doubles_in_this_thread() noexcept { return g_unresolved; }

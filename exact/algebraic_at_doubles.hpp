@@ -19,10 +19,16 @@
 
 namespace exactccd::exact {
 
+class IntegerQuery;
+
+/// `known`: the same query's IntegerQuery when an earlier stage built it (its cubic, when held
+/// in GMP, is then taken from it instead of computed again), else nullptr.
 std::optional<CcdResult> vertex_face_ccd_at_doubles(const VertexFaceQuery& q,
-                                                    const CcdOptions& options);
+                                                    const CcdOptions& options,
+                                                    const IntegerQuery* known = nullptr);
 std::optional<CcdResult> edge_edge_ccd_at_doubles(const EdgeEdgeQuery& q,
-                                                  const CcdOptions& options);
+                                                  const CcdOptions& options,
+                                                  const IntegerQuery* known = nullptr);
 
 /// How many queries of the calling thread this stage left to the rational path (tests).
 std::uint64_t unresolved_at_doubles_in_this_thread() noexcept;

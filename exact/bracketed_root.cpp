@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 #include <cstdint>
 
 #include "core/predicates/double_bits.hpp"
 #include "exact/integer_cubic.hpp"
+#include "exact/interval_sign_at_irrational.hpp"
 
 namespace exactccd::exact {
 
@@ -112,13 +114,24 @@ std::optional<std::vector<DyadicBracket>> split_at_critical_points(const MpzPoly
   }
   int sign_at_critical[2];
   {
+    // From an enclosure where the exact integers would be wide, else (or when it cannot tell)
+    // exactly, from r = prem(p, p') computed once when first needed.
+    const long exact_bits = max_coefficient_bits(p) + 3 * max_coefficient_bits(dp);
     MpzPolynomial r;
-    const int factor = pseudo_remainder(p, dp, &r);
-    const mpz_class alpha = r.degree >= 1 ? r.c[1] : mpz_class(0);
-    const mpz_class beta = r.degree >= 0 ? r.c[0] : mpz_class(0);
-    for (int k = 0; k < roots; ++k)
-      sign_at_critical[k] = factor * sgn(Q) *
-                            sign_plus_sqrt(alpha * P + beta * Q, (k == 0 ? 1 : -1) * alpha, E);
+    int factor = 0;
+    for (int k = 0; k < roots; ++k) {
+      const int tau = k == 0 ? 1 : -1;
+      std::optional<int> sign;
+      if (exact_bits > kIntervalFirstBits)
+        sign = interval_sign_at_irrational(p, P, tau, E, Q, exact_bits);
+      if (!sign) {
+        if (factor == 0) factor = pseudo_remainder(p, dp, &r);
+        const mpz_class alpha = r.degree >= 1 ? r.c[1] : mpz_class(0);
+        const mpz_class beta = r.degree >= 0 ? r.c[0] : mpz_class(0);
+        sign = factor * sgn(Q) * sign_plus_sqrt(alpha * P + beta * Q, tau * alpha, E);
+      }
+      sign_at_critical[k] = *sign;
+    }
   }
   for (unsigned extra = 64; extra <= kMaxCriticalBits; extra *= 2) {
     const unsigned K = d.K + extra;
@@ -312,8 +325,10 @@ std::optional<BracketedRoot> RootIterator::next() {
     if (!split_point(it.lo, it.hi, &m)) {
       if (!square_free_) {
         square_free_ = true;
-        *storage_ = square_free_part(*p_);
-        p_ = storage_;
+        if (!square_free_by_residue(*p_)) {  // else p's roots are simple already
+          *storage_ = square_free_part(*p_);
+          p_ = storage_;
+        }
         push(it);  // the same roots, now simple
         continue;
       }

@@ -1,12 +1,15 @@
 #include "exact/small_polynomial.hpp"
 
 #include <algorithm>
+#include <initializer_list>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "exact/fixed_width_dispatch.hpp"
 #include "core/predicates/fp_environment.hpp"
 #include "exact/integer_cubic.hpp"
+#include "exact/interval_sign_at_irrational.hpp"
 
 namespace exactccd::exact {
 
@@ -594,11 +597,21 @@ int sign_at_root_by_remainders(const MpzPolynomial& p, const MpzPolynomial& g,
     Q = 2 * h.c[2];
     roots = 2;
   }
-  // q = prem(p, h): at a root s of h, q(s) has the sign of sign_q * p(s). q has degree <= 1.
+  // The sign of p at a root s of h: from an enclosure where the exact integers would be wide,
+  // else (or when the enclosure cannot tell) from q = prem(p, h), of degree <= 1, whose value
+  // at s has the sign of sign_q * p(s); q is computed once, when first needed.
+  const long exact_bits = max_coefficient_bits(p) + 3 * max_coefficient_bits(h);
   MpzPolynomial q;
-  const int sign_q = pseudo_remainder(p, h, &q);
-  const mpz_class alpha = q.degree >= 1 ? q.c[1] : mpz_class(0);
-  const mpz_class beta = q.degree >= 0 ? q.c[0] : mpz_class(0);
+  int sign_q = 0;
+  auto p_sign_at_root_of_h = [&](int sigma) {
+    if (exact_bits > kIntervalFirstBits)
+      if (const std::optional<int> s = interval_sign_at_irrational(p, P, sigma, D, Q, exact_bits))
+        return *s;
+    if (sign_q == 0) sign_q = pseudo_remainder(p, h, &q);
+    const mpz_class alpha = q.degree >= 1 ? q.c[1] : mpz_class(0);
+    const mpz_class beta = q.degree >= 0 ? q.c[0] : mpz_class(0);
+    return sign_q * sgn(Q) * sign_plus_sqrt(alpha * P + beta * Q, sigma * alpha, D);
+  };
   const mpz_class scale = mpz_class(1) << K;
   const int sign_Q = sgn(Q);
   // sign(r - s) for each root s of h, from s against a = A 2^-K and b = B 2^-K, and the sign of
@@ -614,14 +627,69 @@ int sign_at_root_by_remainders(const MpzPolynomial& p, const MpzPolynomial& g,
     } else if (s_minus_b >= 0) {
       r_minus_s = -1;
     } else {  // a < s < b: p(s) = 0 puts s at r, p(s) of p(a)'s sign between a and r
-      const int p_at_s =
-          sign_q * sign_Q * sign_plus_sqrt(alpha * P + beta * Q, sigma * alpha, D);
+      const int p_at_s = p_sign_at_root_of_h(sigma);
       r_minus_s = p_at_s == 0 ? 0 : p_at_s == sign_lo ? 1 : -1;
     }
     product *= r_minus_s;
     if (product == 0) return 0;
   }
   return product;  // D = 0: the double root was counted twice, as it should
+}
+
+namespace {
+
+/// The Mersenne prime 2^61 - 1: products of residues fit 128 bits, reduced by shifts.
+constexpr std::uint64_t kResiduePrime = (std::uint64_t{1} << 61) - 1;
+
+std::uint64_t residue_product(std::uint64_t a, std::uint64_t b) {
+  const unsigned __int128 x = static_cast<unsigned __int128>(a) * b;
+  std::uint64_t r = static_cast<std::uint64_t>(x & kResiduePrime) +
+                    static_cast<std::uint64_t>(x >> 61);
+  r = (r & kResiduePrime) + (r >> 61);
+  return r >= kResiduePrime ? r - kResiduePrime : r;
+}
+
+std::uint64_t residue_sum(std::uint64_t a, std::uint64_t b) {
+  const std::uint64_t r = a + b;  // both < 2^61: no overflow
+  return r >= kResiduePrime ? r - kResiduePrime : r;
+}
+
+std::uint64_t residue_of(const mpz_class& x) {
+  static_assert(sizeof(unsigned long) == 8, "a 64-bit unsigned long for mpz_fdiv_ui");
+  return mpz_fdiv_ui(x.get_mpz_t(), kResiduePrime);  // in [0, prime), also for negative x
+}
+
+std::uint64_t residue_of(long k) {
+  const std::uint64_t m = static_cast<std::uint64_t>(k < 0 ? -k : k) % kResiduePrime;
+  return k < 0 && m != 0 ? kResiduePrime - m : m;
+}
+
+}  // namespace
+
+bool square_free_by_residue(const SmallPolynomial& p) {
+  const int d = p.degree();
+  if (d == 1) return true;
+  if (d != 2 && d != 3) return false;
+  const std::array<mpz_class, 4> m = p.mpz_coefficients();
+  std::uint64_t c[4];
+  for (int i = 0; i < 4; ++i) c[i] = residue_of(m[static_cast<std::size_t>(i)]);
+  auto mul = [](std::initializer_list<std::uint64_t> f) {
+    std::uint64_t r = 1;
+    for (std::uint64_t x : f) r = residue_product(r, x);
+    return r;
+  };
+  std::uint64_t discriminant;
+  if (d == 2) {  // c1^2 - 4 c2 c0
+    discriminant = residue_sum(mul({c[1], c[1]}), mul({residue_of(-4L), c[2], c[0]}));
+  } else {  // a t^3 + b t^2 + c t + e: b^2c^2 - 4ac^3 - 4b^3e - 27a^2e^2 + 18abce
+    const std::uint64_t a = c[3], b = c[2], cc = c[1], e = c[0];
+    discriminant = mul({b, b, cc, cc});
+    discriminant = residue_sum(discriminant, mul({residue_of(-4L), a, cc, cc, cc}));
+    discriminant = residue_sum(discriminant, mul({residue_of(-4L), b, b, b, e}));
+    discriminant = residue_sum(discriminant, mul({residue_of(-27L), a, a, e, e}));
+    discriminant = residue_sum(discriminant, mul({residue_of(18L), a, b, cc, e}));
+  }
+  return discriminant != 0;
 }
 
 SmallPolynomial square_free_part(const SmallPolynomial& p) {

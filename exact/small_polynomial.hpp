@@ -128,6 +128,12 @@ MpzPolynomial to_mpz_polynomial(const SmallPolynomial& p);
 MpzPolynomial polynomial_gcd(MpzPolynomial a, MpzPolynomial b);
 /// p divided by its gcd with p' (same roots, each simple); p of degree >= 1.
 SmallPolynomial square_free_part(const SmallPolynomial& p);
+/// True only when p (degree 1 to 3) has no multiple complex root: its discriminant is non-zero
+/// modulo a prime (then it is non-zero). False when that residue is 0, which an integer
+/// discriminant of a square-free p is with probability about 2^-61: the caller then computes
+/// square_free_part. A few word operations per coefficient limb instead of a polynomial gcd.
+/// PROOF: proofs/exact_ccd.md#square-free-by-a-residue
+bool square_free_by_residue(const SmallPolynomial& p);
 SmallPolynomial to_small_polynomial(const MpzPolynomial& p);
 
 /// Beyond the doubles (GMP): the exact sign of p at T 2^-k, and the signs of p's Bernstein

@@ -110,13 +110,15 @@ namespace {
 /// The exact path of a double query: the exact stage at double brackets, and the rational path
 /// (the reference) past the stage's step caps (never reached on any test or benchmark set).
 /// PROOF: proofs/exact_ccd.md#exact-at-double-brackets
-CcdResult exact_path_of(const VertexFaceQuery& q, const CcdOptions& options) {
-  if (std::optional<CcdResult> r = exact::vertex_face_ccd_at_doubles(q, options)) return *r;
+CcdResult exact_path_of(const VertexFaceQuery& q, const CcdOptions& options,
+                        const exact::IntegerQuery* known = nullptr) {
+  if (std::optional<CcdResult> r = exact::vertex_face_ccd_at_doubles(q, options, known)) return *r;
   return exact::vertex_face_ccd_exact(to_rational(q), options);
 }
 
-CcdResult exact_path_of(const EdgeEdgeQuery& q, const CcdOptions& options) {
-  if (std::optional<CcdResult> r = exact::edge_edge_ccd_at_doubles(q, options)) return *r;
+CcdResult exact_path_of(const EdgeEdgeQuery& q, const CcdOptions& options,
+                        const exact::IntegerQuery* known = nullptr) {
+  if (std::optional<CcdResult> r = exact::edge_edge_ccd_at_doubles(q, options, known)) return *r;
   return exact::edge_edge_ccd_exact(to_rational(q), options);
 }
 
@@ -138,6 +140,8 @@ class LazyExactAtDoubles final : public filters::ExactAtDoubles {
     if (!integer_) integer_.emplace(query_);
     return *integer_;
   }
+  /// The integer query if a stage built it, else nullptr (the exact path then reuses it).
+  const exact::IntegerQuery* built() const { return integer_ ? &*integer_ : nullptr; }
 
  private:
   const Query& query_;
@@ -168,7 +172,7 @@ CcdResult filters_then_exact(const Query& q, const CcdOptions& options, Filter f
       return r;
     case filters::FilterOutcome::Verdict::uncertain: break;
   }
-  return exact_path(q, options);
+  return exact_path(q, options, exact_at_doubles.built());
 }
 
 /// The default pipeline: culling, filters, exact path. The culling and filter stages make no
@@ -257,8 +261,8 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& option
   }
   return filtered_ccd(query, options, filters::vertex_face_ccd_culling,
                       filters::vertex_face_ccd_filter,
-                      [](const VertexFaceQuery& q, const CcdOptions& o) {
-                        return exact_path_of(q, o);
+                      [](const VertexFaceQuery& q, const CcdOptions& o, const exact::IntegerQuery* known) {
+                        return exact_path_of(q, o, known);
                       });
 }
 
@@ -277,8 +281,8 @@ CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
     case Mode::filtered: break;
   }
   return filtered_ccd(query, options, filters::edge_edge_ccd_culling, filters::edge_edge_ccd_filter,
-                      [](const EdgeEdgeQuery& q, const CcdOptions& o) {
-                        return exact_path_of(q, o);
+                      [](const EdgeEdgeQuery& q, const CcdOptions& o, const exact::IntegerQuery* known) {
+                        return exact_path_of(q, o, known);
                       });
 }
 
