@@ -15,6 +15,7 @@
 #include "exact/integer_query.hpp"
 #include "exact/bracketed_root.hpp"
 #include "exact/small_polynomial.hpp"
+#include "exact/trimmed_integer.hpp"
 
 namespace exactccd::exact {
 
@@ -47,6 +48,21 @@ template <int D>
 SmallPolynomial small(const predicates::FixedPoly<mpz_class, D>& g, long) {
   return SmallPolynomial::from_mpz(
       without_power_of_two_content<D + 1>(g.c.data(), D + 1).data(), D + 1);
+}
+
+/// The same from TrimmedInteger coefficients: their common power of two is the least exponent.
+template <int D>
+SmallPolynomial small(const predicates::FixedPoly<TrimmedInteger, D>& g, long) {
+  unsigned long shift = ~0ul;
+  for (const TrimmedInteger& x : g.c)
+    if (x.sign() != 0) shift = std::min(shift, x.exponent());
+  mpz_class c[D + 1];
+  for (int i = 0; i <= D; ++i) {
+    const TrimmedInteger& x = g.c[static_cast<std::size_t>(i)];
+    if (x.sign() != 0)
+      mpz_mul_2exp(c[i].get_mpz_t(), x.odd_part().get_mpz_t(), x.exponent() - shift);
+  }
+  return SmallPolynomial::from_mpz(c, D + 1);
 }
 
 template <class CI>
@@ -161,7 +177,7 @@ SmallPolynomial cubic_of(const IntegerCoordinates& q, const IntegerQuery* known)
       return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c.data(), 4).data(), 4);
     }
     mpz_class c[4];
-    coplanarity_coefficients(q, c);
+    trimmed_coplanarity_coefficients(q, c);
     return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c, 4).data(), 4);
   }
   return with_limbs(limbs, [&](auto n) {
@@ -181,7 +197,7 @@ std::optional<CcdResult> at_doubles(const IntegerCoordinates& q, const CcdOption
     if (limbs != 0 && limbs <= 4) return decide<FixedInt<4>>(q, cubic, options);
     if (limbs != 0 && limbs <= 8) return decide<FixedInt<8>>(q, cubic, options);
     if (limbs != 0) return decide<FixedInt<16>>(q, cubic, options);
-    return decide<mpz_class>(q, cubic, options);
+    return decide<TrimmedInteger>(q, cubic, options);
   } catch (const UnresolvedAtDoubles&) {
     ++g_unresolved;
     return std::nullopt;

@@ -273,7 +273,10 @@ int BracketedRoot::sign_of(const SmallPolynomial& g) {
     if (step == 0 && g.sign_at_roots_of(*p_, &sign)) return sign;
     if (step < 2) {
       if (!refine()) break;
-    } else if (step == 2) {  // straight to adjacent doubles: Newton-guided, a few signs
+    } else if (step == 2 && !p_->in_gmp() && !g.in_gmp()) {
+      // Straight to adjacent doubles, Newton-guided, a few signs in fixed size. In GMP each
+      // sign costs a pass over thousands of bits, and the remainders below decide on any
+      // bracket of the root: go to them at once.
       const auto [l, h] = guided_bisection(*p_, lo_, hi_, 0.0);
       if (l == lo_ && h == hi_) break;
       lo_ = l;
@@ -282,7 +285,7 @@ int BracketedRoot::sign_of(const SmallPolynomial& g) {
       break;
     }
   }
-  // g changes sign within one pair of adjacent doubles.
+  // g's Bernstein signs cannot tell on [lo, hi] (adjacent doubles, or any bracket in GMP).
   return sign_in_dyadic_bracket(to_mpz_polynomial(*p_), to_mpz_polynomial(g),
                                 dyadic_bracket(lo_, hi_, sign_lo_));
 }

@@ -1,5 +1,7 @@
 #include "exact/integer_query.hpp"
 
+#include "exact/trimmed_integer.hpp"
+
 #include "exact/fixed_width_dispatch.hpp"
 
 #include <algorithm>
@@ -93,7 +95,10 @@ void IntegerQuery::compute_coefficients() {
   if (coefficient_limbs_ == 0) {
     ++g_gmp_computations;
     gmp_.emplace();
-    coplanarity_coefficients(coords_, gmp_->c);
+    // GMP requested: the plain reference; beyond the fixed widths: without the coordinates'
+    // trailing zero bits (the same integers).
+    if (arithmetic_ == Arithmetic::gmp) coplanarity_coefficients(coords_, gmp_->c);
+    else trimmed_coplanarity_coefficients(coords_, gmp_->c);
     return;
   }
   fixed_coefficients(coords_, fixed_,

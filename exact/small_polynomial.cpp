@@ -23,7 +23,7 @@ inline void multiply_by(mpz_class& r, const mpz_class& T) { r *= T; }
 /// 2^(d k) p(T 2^-k) by Horner's rule. Reduction modulo 2^(64N) commutes with every step, so the
 /// FixedInt result is exact when the final value fits (its bound selected N).
 template <class Int, class Time>
-Int scaled_value(const Int (&c)[4], int d, const Time& T, unsigned k) {
+Int scaled_value(const Int* c, int d, const Time& T, unsigned k) {
   Int r = c[d];
   for (int i = d - 1; i >= 0; --i) {
     multiply_by(r, T);
@@ -36,19 +36,29 @@ Int scaled_value(const Int (&c)[4], int d, const Time& T, unsigned k) {
 /// Taylor shift q(s) = 2^(d K) p((A + H s) 2^-K) by Horner's rule over polynomials in s, then
 /// M b_j = sum_i M C(j, i) / C(d, i) q_i with M = lcm_i C(d, i) (3, 2, 1, 1 for d = 3, 2, 1, 0).
 /// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
+/// x *= f and out += x f, for the Taylor shift's factors A and H.
 template <class Int>
-void bernstein_signs_of(const Int (&c)[4], int d, const Int& A, const Int& H, unsigned K,
+void multiply_in_place(Int& x, const Int& f) {
+  x *= f;
+}
+template <class Int>
+void add_times(Int& out, const Int& x, const Int& f) {
+  add_product(out, x, f);
+}
+
+template <class Int>
+void bernstein_signs_of(const Int* c, int d, const Int& A, const Int& H, unsigned K,
                         int (&signs)[4]) {
   Int q[4] = {c[d], Int(0), Int(0), Int(0)};
   for (int i = d - 1; i >= 0; --i) {
     const int deg = d - 1 - i;  // degree of q before this step
-    q[deg + 1] = q[deg] * H;
+    q[deg + 1] = q[deg];
+    multiply_in_place(q[deg + 1], H);
     for (int j = deg; j >= 1; --j) {
-      Int t = q[j] * A;
-      add_product(t, q[j - 1], H);
-      q[j] = t;
+      multiply_in_place(q[j], A);
+      add_times(q[j], q[j - 1], H);
     }
-    q[0] = q[0] * A;
+    multiply_in_place(q[0], A);
     add_shifted(q[0], c[i], K * static_cast<unsigned>(d - i));
   }
   switch (d) {
@@ -238,9 +248,9 @@ int SmallPolynomial::sign_at(double t, Approximation* value) const {
   const long scale = static_cast<long>(degree_) * d.exponent;  // p(t) = 2^(-d k) r
   if (limbs == 0) {
     ++g_gmp_steps;
-    const std::array<mpz_class, 4> m = mpz_coefficients();
-    const mpz_class c[4] = {m[0], m[1], m[2], m[3]};
-    const mpz_class r = scaled_value(c, degree_, d.numerator, d.exponent);
+    const std::array<mpz_class, 4> converted = in_gmp_ ? std::array<mpz_class, 4>{} : mpz_coefficients();
+    const mpz_class r =
+        scaled_value(in_gmp_ ? gmp_.data() : converted.data(), degree_, d.numerator, d.exponent);
     if (value) {
       *value = approximate(r);
       value->exponent -= scale;
@@ -280,12 +290,12 @@ int SmallPolynomial::bernstein_signs(double a, double b, int (&signs)[4]) const 
       in_gmp_ ? 0 : fixed_limbs_for(bernstein_bits(bits_, degree_, K));
   if (limbs == 0) {
     ++g_gmp_steps;
-    const std::array<mpz_class, 4> m = mpz_coefficients();
-    const mpz_class c[4] = {m[0], m[1], m[2], m[3]};
-    const mpz_class A = da.mantissa == 0 ? mpz_class(0) : scaled_integer<mpz_class>(da.mantissa, shift_a);
-    const mpz_class B = scaled_integer<mpz_class>(db.mantissa, shift_b);
-    const mpz_class H = B - A;
-    bernstein_signs_of(c, degree_, A, H, static_cast<unsigned>(K), signs);
+    const std::array<mpz_class, 4> converted = in_gmp_ ? std::array<mpz_class, 4>{} : mpz_coefficients();
+    const mpz_class A =
+        da.mantissa == 0 ? mpz_class(0) : scaled_integer<mpz_class>(da.mantissa, shift_a);
+    const mpz_class H = scaled_integer<mpz_class>(db.mantissa, shift_b) - A;
+    bernstein_signs_of(in_gmp_ ? gmp_.data() : converted.data(), degree_, A, H,
+                       static_cast<unsigned>(K), signs);
     return degree_ + 1;
   }
   with_limbs(limbs, [&](auto n) {
@@ -428,8 +438,7 @@ MpzPolynomial polynomial_gcd(MpzPolynomial a, MpzPolynomial b) {
 int sign_at_dyadic(const MpzPolynomial& p, const mpz_class& T, unsigned k) {
   ++g_gmp_steps;
   if (p.degree < 0) return 0;
-  const mpz_class c[4] = {p.c[0], p.c[1], p.c[2], p.c[3]};
-  return sgn(scaled_value(c, p.degree, T, k));
+  return sgn(scaled_value(p.c.data(), p.degree, T, k));
 }
 
 int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz_class& B,
@@ -438,9 +447,8 @@ int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz
     signs[0] = 0;
     return 1;
   }
-  const mpz_class c[4] = {p.c[0], p.c[1], p.c[2], p.c[3]};
   const mpz_class H = B - A;
-  bernstein_signs_of(c, p.degree, A, H, K, signs);
+  bernstein_signs_of(p.c.data(), p.degree, A, H, K, signs);
   return p.degree + 1;
 }
 

@@ -47,6 +47,8 @@ class SmallPolynomial final : public CubicAtDoubles {
   int degree() const { return degree_; }  ///< -1 for the zero polynomial
   bool is_zero() const { return degree_ < 0; }
   long bits() const { return bits_; }
+  /// Coefficients held in GMP (beyond the widest FixedInt): every exact step on them is GMP.
+  bool in_gmp() const { return in_gmp_; }
 
   /// The exact sign of p(t) for a double t in [0, 1].
   int sign_at(double t) const { return sign_at(t, nullptr); }

@@ -1,8 +1,11 @@
-// The enclosure-first signs of the exact stage against exact integer arithmetic written here:
-// the sign of an integer polynomial at a quadratic irrational (exact/interval_sign_at_irrational
-// .hpp), and the square-free test by a residue of the discriminant (exact/small_polynomial.hpp).
+// The exact stage's steps for widely spread exponents, against exact integer arithmetic written
+// here or GMP: the sign of an integer polynomial at a quadratic irrational from enclosures
+// (exact/interval_sign_at_irrational.hpp), the square-free test by a residue of the
+// discriminant (exact/small_polynomial.hpp), integers without their trailing zero bits
+// (exact/trimmed_integer.hpp), and the stage on such queries against the rational path.
 // PROOF: proofs/exact_ccd.md#interval-sign-at-an-irrational
 // PROOF: proofs/exact_ccd.md#square-free-by-a-residue
+// PROOF: proofs/exact_ccd.md#trimmed-integers
 #include <gtest/gtest.h>
 
 #include <random>
@@ -15,6 +18,7 @@
 #include "exact/integer_query.hpp"
 #include "exact/interval_sign_at_irrational.hpp"
 #include "exact/small_polynomial.hpp"
+#include "exact/trimmed_integer.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd::exact {
@@ -236,6 +240,80 @@ TEST(WideExponentStage, AgreesWithTheRationalPathAndUsesTheEnclosures) {
   EXPECT_GT(reused, 0);
   EXPECT_GT(after.attempts, before.attempts);
   EXPECT_GT(after.decided, before.decided);
+}
+
+// Every operation of TrimmedInteger against mpz_class: random 1- to 64-bit odd parts shifted by
+// 0 to 3,000 bits (and zeros), sums, differences, products and fused products, chained so that
+// cancellations to 0 and to short values occur.
+TEST(TrimmedIntegers, ArithmeticEqualsMpz) {
+  std::mt19937_64 rng(77);
+  const int n = static_cast<int>(test::at_least(test::scaled_count(20000), 4000));
+  int zeros = 0;
+  auto random_value = [&](TrimmedInteger* t, mpz_class* z) {
+    if (rng() % 8 == 0) {
+      *t = TrimmedInteger();
+      *z = 0;
+      return;
+    }
+    const auto m = static_cast<std::int64_t>(rng() >> (rng() % 63 + 1)) * ((rng() & 1) ? 1 : -1);
+    const unsigned shift = static_cast<unsigned>(rng() % 3000);
+    *t = TrimmedInteger::scaled(m, shift);
+    *z = mpz_class(static_cast<long>(m)) << shift;
+  };
+  TrimmedInteger acc;
+  mpz_class acc_z = 0;
+  for (int i = 0; i < n; ++i) {
+    TrimmedInteger a, b;
+    mpz_class az, bz;
+    random_value(&a, &az);
+    random_value(&b, &bz);
+    switch (rng() % 6) {
+      case 0: acc += a; acc_z += az; break;
+      case 1: acc -= a; acc_z -= az; break;
+      case 2: acc = acc * a; acc_z *= az; break;
+      case 3: add_product(acc, a, b); acc_z += az * bz; break;
+      case 4: sub_product(acc, a, b); acc_z -= az * bz; break;
+      default: {  // cancel exactly, or nearly
+        const TrimmedInteger copy = acc;
+        acc -= copy;
+        acc_z = 0;
+        if (rng() & 1) {
+          acc += a;
+          acc_z += az;
+        }
+      }
+    }
+    ASSERT_EQ(acc.to_mpz(), acc_z) << "step " << i;
+    ASSERT_EQ(acc.sign(), sgn(acc_z));
+    if (acc.sign() != 0) ASSERT_TRUE(mpz_odd_p(acc.odd_part().get_mpz_t()));  // trimmed
+    zeros += acc.sign() == 0;
+    if (mpz_sizeinbase(acc_z.get_mpz_t(), 2) > 20000) {  // keep the values short
+      acc = TrimmedInteger();
+      acc_z = 0;
+    }
+  }
+  EXPECT_GT(zeros, n / 50);
+}
+
+// The cubic formed in TrimmedInteger equals the one formed in mpz_class, on every generator's
+// queries (wide spreads, subnormals, coincident points, zeros).
+TEST(TrimmedIntegers, CubicEqualsTheMpzCubic) {
+  const std::uint64_t n = test::at_least(test::scaled_count(200), 40);
+  int checked = 0;
+  for (const random_queries::Generator& g : random_queries::all_generators())
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const random_queries::DoubleQuery q = random_queries::generate(g, 11, i);
+      const IntegerCoordinates c = q.type == QueryType::vertex_face
+                                       ? integer_coordinates(q.vertex_face())
+                                       : integer_coordinates(q.edge_edge());
+      mpz_class plain[4], trimmed[4];
+      coplanarity_coefficients(c, plain);
+      trimmed_coplanarity_coefficients(c, trimmed);
+      for (int k = 0; k < 4; ++k)
+        ASSERT_EQ(trimmed[k], plain[k]) << g.name() << " #" << i << " coefficient " << k;
+      ++checked;
+    }
+  EXPECT_GT(checked, 100);
 }
 
 }  // namespace
