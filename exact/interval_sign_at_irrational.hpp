@@ -18,7 +18,7 @@
 namespace exactccd::exact {
 
 /// The sign of p at s = (P + tau sqrt(D)) / Q (Q != 0, D >= 0, tau = +-1) when an outward-
-/// rounded interval evaluation at some precision of 128 * 4^i bits, at most `max_bits`,
+/// rounded interval evaluation at some precision of 512 * 2^i bits, at most `max_bits`,
 /// excludes 0; nullopt otherwise (never for p(s) = 0 exactly).
 std::optional<int> interval_sign_at_irrational(const MpzPolynomial& p, const mpz_class& P,
                                                int tau, const mpz_class& D, const mpz_class& Q,
