@@ -20,6 +20,7 @@
 #include "exact/integer_cubic.hpp"
 #include "exact/root_isolation.hpp"
 #include "exact/small_polynomial.hpp"
+#include "integer_polynomial_support.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd::exact {
@@ -42,13 +43,7 @@ RationalPolynomial rational(const std::array<mpz_class, 4>& c, int degree) {
   return p;
 }
 
-/// A random integer of exactly `bits` bits (or 0), random sign.
-mpz_class random_integer(std::mt19937_64& rng, int bits) {
-  if (bits == 0) return 0;
-  mpz_class z = 1;
-  for (int b = 1; b < bits; ++b) z = 2 * z + static_cast<int>(rng() & 1);
-  return (rng() & 1) ? mpz_class(-z) : z;
-}
+using test::random_integer;
 
 /// A double in [0, 1]: 0, 1, full-precision values of every binade down to subnormals, and
 /// short dyadics.
@@ -143,16 +138,7 @@ TEST_F(SmallPolynomialTest, BernsteinSignsMatchRationalBernstein) {
 
 /// Products of (den t - num) for rational roots, times a positive constant.
 SmallPolynomial with_roots(const std::vector<Q>& roots, long scale = 1) {
-  std::vector<mpz_class> c = {mpz_class(scale)};
-  for (const Q& r : roots) {
-    std::vector<mpz_class> next(c.size() + 1, mpz_class(0));
-    for (std::size_t i = 0; i < c.size(); ++i) {
-      next[i + 1] += c[i] * r.get_den();
-      next[i] -= c[i] * r.get_num();
-    }
-    c = next;
-  }
-  return SmallPolynomial::from_mpz(c.data(), static_cast<int>(c.size()));
+  return test::with_roots(roots, mpz_class(scale));
 }
 
 Q pow2(int e) { return e >= 0 ? Q(mpz_class(1) << e) : Q(1, mpz_class(1) << -e); }

@@ -19,18 +19,14 @@
 #include "exact/interval_sign_at_irrational.hpp"
 #include "exact/small_polynomial.hpp"
 #include "exact/trimmed_integer.hpp"
+#include "integer_polynomial_support.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd::exact {
 namespace {
 
-/// A random integer of exactly `bits` bits (0 for bits = 0), random sign.
-mpz_class random_integer(std::mt19937_64& rng, int bits) {
-  if (bits == 0) return 0;
-  mpz_class z = 1;
-  for (int b = 1; b < bits; ++b) z = 2 * z + static_cast<int>(rng() & 1);
-  return (rng() & 1) ? mpz_class(-z) : z;
-}
+using test::random_integer;
+using test::with_roots;
 
 /// A random integer of at most `bits` bits whose set bits lie in a few islands far apart (the
 /// shape of values computed from doubles of widely spread exponents).
@@ -132,20 +128,6 @@ TEST_F(IntervalSignAtIrrational, EqualsTheExactSignOrDeclines) {
   EXPECT_GT(decided, n / 3);
   EXPECT_GT(near_zero_decided, n / 20);
   EXPECT_GT(zeros, n / 10);
-}
-
-/// Products of (den t - num) over the given roots times `scale`, as a SmallPolynomial.
-SmallPolynomial with_roots(const std::vector<mpq_class>& roots, const mpz_class& scale) {
-  std::vector<mpz_class> c = {scale};
-  for (const mpq_class& r : roots) {
-    std::vector<mpz_class> next(c.size() + 1, mpz_class(0));
-    for (std::size_t i = 0; i < c.size(); ++i) {
-      next[i + 1] += c[i] * r.get_den();
-      next[i] -= c[i] * r.get_num();
-    }
-    c = next;
-  }
-  return SmallPolynomial::from_mpz(c.data(), static_cast<int>(c.size()));
 }
 
 // A polynomial with a repeated root (rational, or the double root of an irreducible quadratic
