@@ -177,7 +177,8 @@ SmallPolynomial cubic_of(const IntegerCoordinates& q, const IntegerQuery* known)
       return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c.data(), 4).data(), 4);
     }
     mpz_class c[4];
-    trimmed_coplanarity_coefficients(q, c);
+    if (prefers_trimmed_integers(q)) trimmed_coplanarity_coefficients(q, c);
+    else coplanarity_coefficients(q, c);
     return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c, 4).data(), 4);
   }
   return with_limbs(limbs, [&](auto n) {
@@ -197,7 +198,8 @@ std::optional<CcdResult> at_doubles(const IntegerCoordinates& q, const CcdOption
     if (limbs != 0 && limbs <= 4) return decide<FixedInt<4>>(q, cubic, options);
     if (limbs != 0 && limbs <= 8) return decide<FixedInt<8>>(q, cubic, options);
     if (limbs != 0) return decide<FixedInt<16>>(q, cubic, options);
-    return decide<TrimmedInteger>(q, cubic, options);
+    if (prefers_trimmed_integers(q)) return decide<TrimmedInteger>(q, cubic, options);
+    return decide<mpz_class>(q, cubic, options);
   } catch (const UnresolvedAtDoubles&) {
     ++g_unresolved;
     return std::nullopt;

@@ -95,10 +95,12 @@ void IntegerQuery::compute_coefficients() {
   if (coefficient_limbs_ == 0) {
     ++g_gmp_computations;
     gmp_.emplace();
-    // GMP requested: the plain reference; beyond the fixed widths: without the coordinates'
-    // trailing zero bits (the same integers).
-    if (arithmetic_ == Arithmetic::gmp) coplanarity_coefficients(coords_, gmp_->c);
-    else trimmed_coplanarity_coefficients(coords_, gmp_->c);
+    // GMP requested: the plain reference; beyond the fixed widths, for wide coordinates:
+    // without their trailing zero bits (the same integers).
+    if (arithmetic_ == Arithmetic::fixed_first && prefers_trimmed_integers(coords_))
+      trimmed_coplanarity_coefficients(coords_, gmp_->c);
+    else
+      coplanarity_coefficients(coords_, gmp_->c);
     return;
   }
   fixed_coefficients(coords_, fixed_,
