@@ -35,17 +35,8 @@ Int scaled_value(const Int* c, int d, const Time& T, unsigned k) {
 /// The signs of the Bernstein coefficients of p (degree d) on [A 2^-K, (A + H) 2^-K]: the
 /// Taylor shift q(s) = 2^(d K) p((A + H s) 2^-K) by Horner's rule over polynomials in s, then
 /// M b_j = sum_i M C(j, i) / C(d, i) q_i with M = lcm_i C(d, i) (3, 2, 1, 1 for d = 3, 2, 1, 0).
+/// In place: q[j] is updated before q[j - 1], which it reads.
 /// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
-/// x *= f and out += x f, for the Taylor shift's factors A and H.
-template <class Int>
-void multiply_in_place(Int& x, const Int& f) {
-  x *= f;
-}
-template <class Int>
-void add_times(Int& out, const Int& x, const Int& f) {
-  add_product(out, x, f);
-}
-
 template <class Int>
 void bernstein_signs_of(const Int* c, int d, const Int& A, const Int& H, unsigned K,
                         int (&signs)[4]) {
@@ -53,12 +44,12 @@ void bernstein_signs_of(const Int* c, int d, const Int& A, const Int& H, unsigne
   for (int i = d - 1; i >= 0; --i) {
     const int deg = d - 1 - i;  // degree of q before this step
     q[deg + 1] = q[deg];
-    multiply_in_place(q[deg + 1], H);
+    q[deg + 1] *= H;
     for (int j = deg; j >= 1; --j) {
-      multiply_in_place(q[j], A);
-      add_times(q[j], q[j - 1], H);
+      q[j] *= A;
+      add_product(q[j], q[j - 1], H);
     }
-    multiply_in_place(q[0], A);
+    q[0] *= A;
     add_shifted(q[0], c[i], K * static_cast<unsigned>(d - i));
   }
   switch (d) {
@@ -236,6 +227,12 @@ std::array<mpz_class, 4> SmallPolynomial::mpz_coefficients() const {
   return {to_mpz(fixed_[0]), to_mpz(fixed_[1]), to_mpz(fixed_[2]), to_mpz(fixed_[3])};
 }
 
+const mpz_class* SmallPolynomial::gmp_coefficients(std::array<mpz_class, 4>* storage) const {
+  if (in_gmp_) return gmp_.data();
+  *storage = mpz_coefficients();
+  return storage->data();
+}
+
 int SmallPolynomial::sign_at(double t, Approximation* value) const {
   if (degree_ < 0) {
     if (value) *value = {};
@@ -248,9 +245,9 @@ int SmallPolynomial::sign_at(double t, Approximation* value) const {
   const long scale = static_cast<long>(degree_) * d.exponent;  // p(t) = 2^(-d k) r
   if (limbs == 0) {
     ++g_gmp_steps;
-    const std::array<mpz_class, 4> converted = in_gmp_ ? std::array<mpz_class, 4>{} : mpz_coefficients();
+    std::array<mpz_class, 4> converted;
     const mpz_class r =
-        scaled_value(in_gmp_ ? gmp_.data() : converted.data(), degree_, d.numerator, d.exponent);
+        scaled_value(gmp_coefficients(&converted), degree_, d.numerator, d.exponent);
     if (value) {
       *value = approximate(r);
       value->exponent -= scale;
@@ -290,12 +287,12 @@ int SmallPolynomial::bernstein_signs(double a, double b, int (&signs)[4]) const 
       in_gmp_ ? 0 : fixed_limbs_for(bernstein_bits(bits_, degree_, K));
   if (limbs == 0) {
     ++g_gmp_steps;
-    const std::array<mpz_class, 4> converted = in_gmp_ ? std::array<mpz_class, 4>{} : mpz_coefficients();
+    std::array<mpz_class, 4> converted;
     const mpz_class A =
         da.mantissa == 0 ? mpz_class(0) : scaled_integer<mpz_class>(da.mantissa, shift_a);
     const mpz_class H = scaled_integer<mpz_class>(db.mantissa, shift_b) - A;
-    bernstein_signs_of(in_gmp_ ? gmp_.data() : converted.data(), degree_, A, H,
-                       static_cast<unsigned>(K), signs);
+    bernstein_signs_of(gmp_coefficients(&converted), degree_, A, H, static_cast<unsigned>(K),
+                       signs);
     return degree_ + 1;
   }
   with_limbs(limbs, [&](auto n) {

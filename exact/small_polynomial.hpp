@@ -82,6 +82,9 @@ class SmallPolynomial final : public CubicAtDoubles {
 
  private:
   using Stored = FixedInt<kMaxFixedLimbs>;
+  /// The coefficients in GMP: gmp_ itself when held there (no copy), else converted into
+  /// *storage.
+  const mpz_class* gmp_coefficients(std::array<mpz_class, 4>* storage) const;
   /// Encloses the coefficients for the wide-range filter when bits_ > kWideFilterBits.
   void set_wide_enclosure();
   /// The certified sign from the filter, 0 when it cannot tell (then decide exactly).

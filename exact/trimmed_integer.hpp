@@ -66,7 +66,8 @@ class TrimmedInteger {
 
  private:
   static mpz_class mpz_from_i64(std::int64_t m) {
-    const std::uint64_t a = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
+    const std::uint64_t a =
+        m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
     mpz_class z = mpz_from_u64(a);
     return m < 0 ? mpz_class(-z) : z;
   }

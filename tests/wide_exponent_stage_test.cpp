@@ -95,7 +95,9 @@ TEST_F(IntervalSignAtIrrational, EqualsTheExactSignOrDeclines) {
   int decided = 0, near_zero_decided = 0, zeros = 0;
   for (int i = 0; i < n; ++i) {
     const int bits = 8 + static_cast<int>(rng() % 6000);
-    auto integer = [&](int b) { return (rng() & 1) ? random_integer(rng, b) : sparse_integer(rng, b); };
+    auto integer = [&](int b) {
+      return (rng() & 1) ? random_integer(rng, b) : sparse_integer(rng, b);
+    };
     mpz_class P = integer(bits), Q = integer(bits), D = abs(integer(2 * bits));
     if (sgn(Q) == 0) Q = 1;
     const int tau = (rng() & 1) ? 1 : -1;
@@ -104,12 +106,16 @@ TEST_F(IntervalSignAtIrrational, EqualsTheExactSignOrDeclines) {
     if (kind == 0) {
       const int degree = static_cast<int>(rng() % 4);
       std::vector<mpz_class> c;
-      for (int k = 0; k <= degree; ++k) c.push_back(integer(1 + static_cast<int>(rng() % (3 * bits))));
+      for (int k = 0; k <= degree; ++k)
+        c.push_back(integer(1 + static_cast<int>(rng() % (3 * bits))));
       p = polynomial(c);
     } else {
       const mpz_class h2 = Q * Q, h1 = -2 * P * Q, h0 = P * P - D;
-      const mpz_class a = integer(1 + static_cast<int>(rng() % 64)), b = integer(1 + static_cast<int>(rng() % 64));
-      const mpz_class e = kind == 1 ? mpz_class(random_integer(rng, 1 + static_cast<int>(rng() % 8))) : mpz_class(0);
+      const mpz_class a = integer(1 + static_cast<int>(rng() % 64)),
+                      b = integer(1 + static_cast<int>(rng() % 64));
+      const mpz_class e = kind == 1
+                              ? mpz_class(random_integer(rng, 1 + static_cast<int>(rng() % 8)))
+                              : mpz_class(0);
       p = polynomial({h0 * b + e, h0 * a + h1 * b, h1 * a + h2 * b, h2 * a});
     }
     const int truth = exact_sign(p, P, tau, D, Q);
@@ -155,10 +161,12 @@ TEST(SquareFreeByResidue, NeverClaimsARepeatedRootAndRecognisesDistinctOnes) {
     SmallPolynomial p = with_roots(roots, scale);
     bool has_repeated = false;
     for (std::size_t a = 0; a < roots.size(); ++a)
-      for (std::size_t b = a + 1; b < roots.size(); ++b) has_repeated = has_repeated || roots[a] == roots[b];
+      for (std::size_t b = a + 1; b < roots.size(); ++b)
+        has_repeated = has_repeated || roots[a] == roots[b];
     if (!has_repeated && (rng() % 4) == 0) {  // an irreducible-looking cubic: random coefficients
       std::vector<mpz_class> c;
-      for (int k = 0; k <= 3; ++k) c.push_back(random_integer(rng, 1 + static_cast<int>(rng() % bits)));
+      for (int k = 0; k <= 3; ++k)
+        c.push_back(random_integer(rng, 1 + static_cast<int>(rng() % bits)));
       if (sgn(c[3]) == 0) c[3] = 1;
       p = SmallPolynomial::from_mpz(c.data(), 4);
     }
@@ -250,11 +258,26 @@ TEST(TrimmedIntegers, ArithmeticEqualsMpz) {
     random_value(&a, &az);
     random_value(&b, &bz);
     switch (rng() % 6) {
-      case 0: acc += a; acc_z += az; break;
-      case 1: acc -= a; acc_z -= az; break;
-      case 2: acc = acc * a; acc_z *= az; break;
-      case 3: add_product(acc, a, b); acc_z += az * bz; break;
-      case 4: sub_product(acc, a, b); acc_z -= az * bz; break;
+      case 0:
+        acc += a;
+        acc_z += az;
+        break;
+      case 1:
+        acc -= a;
+        acc_z -= az;
+        break;
+      case 2:
+        acc = acc * a;
+        acc_z *= az;
+        break;
+      case 3:
+        add_product(acc, a, b);
+        acc_z += az * bz;
+        break;
+      case 4:
+        sub_product(acc, a, b);
+        acc_z -= az * bz;
+        break;
       default: {  // cancel exactly, or nearly
         const TrimmedInteger copy = acc;
         acc -= copy;

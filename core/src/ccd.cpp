@@ -261,9 +261,8 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& option
   }
   return filtered_ccd(query, options, filters::vertex_face_ccd_culling,
                       filters::vertex_face_ccd_filter,
-                      [](const VertexFaceQuery& q, const CcdOptions& o, const exact::IntegerQuery* known) {
-                        return exact_path_of(q, o, known);
-                      });
+                      [](const VertexFaceQuery& q, const CcdOptions& o,
+                         const exact::IntegerQuery* known) { return exact_path_of(q, o, known); });
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
@@ -281,9 +280,8 @@ CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
     case Mode::filtered: break;
   }
   return filtered_ccd(query, options, filters::edge_edge_ccd_culling, filters::edge_edge_ccd_filter,
-                      [](const EdgeEdgeQuery& q, const CcdOptions& o, const exact::IntegerQuery* known) {
-                        return exact_path_of(q, o, known);
-                      });
+                      [](const EdgeEdgeQuery& q, const CcdOptions& o,
+                         const exact::IntegerQuery* known) { return exact_path_of(q, o, known); });
 }
 
 }  // namespace exactccd
