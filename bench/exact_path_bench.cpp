@@ -188,6 +188,9 @@ class RecordingExact final : public exactccd::filters::ExactAtDoubles {
     calls_.emplace_back(lo, hi);
     return q_.bisect_root(lo, hi, 0.0);
   }
+  void cubic_coefficient_bounds(double (&lo)[4], double (&hi)[4]) override {
+    q_.scaled_coefficient_bounds(lo, hi);
+  }
 
  private:
   const IntegerQuery& q_;

@@ -7,7 +7,6 @@
 #include <utility>
 
 #include "core/predicates/coplanarity_cubic.hpp"
-#include "exact/integer_query.hpp"
 #include "filters/coplanarity_semistatic.hpp"
 #include "filters/swept_box_culling.hpp"
 
@@ -188,13 +187,13 @@ FilterOutcome no_contact() {
   return none;
 }
 
-/// The coplanarity cubic from its exact integer coefficients (exact/integer_query.hpp), scaled
-/// by a power of two and enclosed in intervals of one ulp (a point where exact): a positive
-/// multiple of the cubic, with its roots and signs. PROOF: proofs/filters.md#exact-cubic-retry
-template <class Query>
-predicates::FixedPoly<Interval, 3> exact_cubic(const Query& q) {
+/// The coplanarity cubic from its exact coefficients (ExactAtDoubles, whose exact cubic the
+/// exact path reuses), scaled by a power of two and enclosed in intervals of one ulp (a point
+/// where exact): a positive multiple of the cubic, with its roots and signs.
+/// PROOF: proofs/filters.md#exact-cubic-retry
+predicates::FixedPoly<Interval, 3> exact_cubic(ExactAtDoubles& exact) {
   double lo[4], hi[4];
-  exact::IntegerQuery(q).scaled_coefficient_bounds(lo, hi);
+  exact.cubic_coefficient_bounds(lo, hi);
   predicates::FixedPoly<Interval, 3> cubic;
   for (int i = 0; i < 4; ++i) cubic.c[i] = Interval(lo[i], hi[i]);
   return cubic;
@@ -203,16 +202,15 @@ predicates::FixedPoly<Interval, 3> exact_cubic(const Query& q) {
 /// The cubic filter, and where the interval cubic was too wide to isolate its roots, once more
 /// with the cubic from its exact coefficients (rare: massive cancellation in the coefficients,
 /// e.g. motions far smaller than the coordinates).
-template <class Query, class Inclusion>
-FilterOutcome cubic_filter_then_exact_cubic(const Query& q,
-                                            const predicates::FixedPoly<Interval, 3>& cubic,
+template <class Inclusion>
+FilterOutcome cubic_filter_then_exact_cubic(const predicates::FixedPoly<Interval, 3>& cubic,
                                             const CcdOptions& options, const Inclusion& inclusion,
                                             ExactAtDoubles& exact) {
   const FilterOutcome f =
       cubic_filter(cubic, options.t_max, options.toi_width, inclusion, exact, true);
   if (!f.roots_unresolved) return f;
   FilterOutcome g =
-      cubic_filter(exact_cubic(q), options.t_max, options.toi_width, inclusion, exact);
+      cubic_filter(exact_cubic(exact), options.t_max, options.toi_width, inclusion, exact);
   g.exact_used = true;
   return g;
 }
@@ -235,7 +233,7 @@ FilterOutcome vertex_face_ccd_filter(const VertexFaceQuery& q, const CcdOptions&
   if (inclusion.excluded_in_leading_projection(Interval(0.0, options.t_max))) return no_contact();
   // (A cubic certainly root-free on [0, t_max] is the cubic filter's first discarded node.)
   const auto cubic = predicates::vertex_face_coplanarity_cubic(p, a, b, c);
-  return cubic_filter_then_exact_cubic(q, cubic, options, inclusion, exact);
+  return cubic_filter_then_exact_cubic(cubic, options, inclusion, exact);
 }
 
 FilterOutcome edge_edge_ccd_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
@@ -252,7 +250,7 @@ FilterOutcome edge_edge_ccd_filter(const EdgeEdgeQuery& q, const CcdOptions& opt
   const EdgeEdgeInclusion inclusion(a0, a1, b0, b1, order);
   if (inclusion.excluded_in_leading_projection(Interval(0.0, options.t_max))) return no_contact();
   const auto cubic = predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1);
-  return cubic_filter_then_exact_cubic(q, cubic, options, inclusion, exact);
+  return cubic_filter_then_exact_cubic(cubic, options, inclusion, exact);
 }
 
 }  // namespace exactccd::filters

@@ -41,6 +41,11 @@ class ExactAtDoubles {
   /// The tightest pair of doubles around the only, simple root of the cubic in [lo, hi]
   /// (certain opposite non-zero signs at lo and hi); equal when the root is a double.
   virtual std::pair<double, double> bisect_root(double lo, double hi) = 0;
+  /// Enclosures in doubles of the cubic's exact coefficients times one positive power of two
+  /// (lo[i] <= c_i 2^-s <= hi[i]): a positive multiple of the cubic, for the filter's retry
+  /// where its interval cubic is too wide. From the same exact cubic the other answers use, so
+  /// it is computed once per query. PROOF: proofs/filters.md#exact-cubic-retry
+  virtual void cubic_coefficient_bounds(double (&lo)[4], double (&hi)[4]) = 0;
 
  protected:
   ~ExactAtDoubles() = default;

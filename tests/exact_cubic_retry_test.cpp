@@ -165,6 +165,9 @@ struct IntegerOracle final : filters::ExactAtDoubles {
   std::pair<double, double> bisect_root(double lo, double hi) override {
     return q_.bisect_root(lo, hi, 0.0);
   }
+  void cubic_coefficient_bounds(double (&lo)[4], double (&hi)[4]) override {
+    q_.scaled_coefficient_bounds(lo, hi);
+  }
 
  private:
   const IntegerQuery& q_;

@@ -186,6 +186,9 @@ TEST(CubicFilter, ContactBracketHoldsExactly) {
       std::pair<double, double> bisect_root(double, double) override {
         throw std::logic_error("exact consulted");
       }
+      void cubic_coefficient_bounds(double (&)[4], double (&)[4]) override {
+        throw std::logic_error("exact consulted");
+      }
     } forbidden;
     filters::FilterOutcome f;
     try {

@@ -136,6 +136,9 @@ class LazyExactAtDoubles final : public filters::ExactAtDoubles {
   std::pair<double, double> bisect_root(double lo, double hi) override {
     return integer().bisect_root(lo, hi, 0.0);
   }
+  void cubic_coefficient_bounds(double (&lo)[4], double (&hi)[4]) override {
+    integer().scaled_coefficient_bounds(lo, hi);
+  }
   const exact::IntegerQuery& integer() {
     if (!integer_) integer_.emplace(query_);
     return *integer_;
