@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 
 #include "core/predicates/inclusion.hpp"
 #include "exact/fixed_width_dispatch.hpp"
@@ -15,7 +16,9 @@
 #include "exact/integer_query.hpp"
 #include "exact/bracketed_root.hpp"
 #include "exact/small_polynomial.hpp"
+#include "exact/product_accumulator.hpp"
 #include "exact/trimmed_integer.hpp"
+#include "exact/wide_inclusion.hpp"
 
 namespace exactccd::exact {
 
@@ -94,6 +97,44 @@ bool contact_at(const IntegerCoordinates& q, const Moving<CI> (&x)[4], Bracketed
              : predicates::segments_intersect_at(x[0], x[1], x[2], x[3], sign_at);
 }
 
+/// The contact test at roots, for one query: for coordinates in GMP (beyond the fixed widths)
+/// first by wide_contact_at (exact/wide_inclusion.hpp), whose orientations are formed once per
+/// query; the general predicates decide what it leaves (degenerate triangles, parallel edges)
+/// and every query within the fixed widths. The moving points in CI are formed when first
+/// needed.
+template <class CI>
+class ContactTest {
+ public:
+  explicit ContactTest(const IntegerCoordinates& q) : q_(q), wide_(q) {}
+
+  bool at(BracketedRoot& r) {
+    if constexpr (kWideCoordinates) {
+      const int decided = wide_contact_at(wide_, r);
+      if (decided >= 0) return decided == 1;
+    }
+    return contact_at(q_, points(), r);
+  }
+
+  const Moving<CI> (&points())[4] {
+    if (!ready_) {
+      for (int i = 0; i < 4; ++i) x_[i] = moving_point<CI>(q_, i);
+      ready_ = true;
+    }
+    return x_;
+  }
+
+ private:
+  /// Coordinates in GMP: the orientations' coefficients span thousands of bits, and an exact
+  /// sign at an irrational root costs remainders over them.
+  static constexpr bool kWideCoordinates =
+      std::is_same_v<CI, TrimmedInteger> || std::is_same_v<CI, mpz_class>;
+
+  const IntegerCoordinates& q_;
+  WideInclusionPolynomials wide_;
+  Moving<CI> x_[4];
+  bool ready_ = false;
+};
+
 /// The same candidates as exact/exact_ccd.cpp (vertex_edge_candidates): the first non-zero
 /// component of cross(y - x, p - x), else (p - x).(p - y).
 /// PROOF: proofs/exact_ccd.md#lemma-vertex-edge-candidates
@@ -125,18 +166,18 @@ CcdResult contact(const BracketedRoot& root, const CcdOptions& options) {
 template <class CI>
 CcdResult decide(const IntegerCoordinates& q, const SmallPolynomial& cubic,
                  const CcdOptions& options) {
-  Moving<CI> x[4];
-  for (int i = 0; i < 4; ++i) x[i] = moving_point<CI>(q, i);
+  ContactTest<CI> test(q);
   if (!cubic.is_zero()) {  // contact implies coplanarity: only the cubic's roots are candidates
     SmallPolynomial square_free;
     RootIterator roots(cubic, options.t_max, &square_free);
     while (std::optional<BracketedRoot> r = roots.next())
-      if (contact_at(q, x, *r)) return contact(*r, options);
+      if (test.at(*r)) return contact(*r, options);
     return no_contact();
   }
   // Coplanar throughout: contact at t = 0, else the first contact lies on an edge.
   BracketedRoot zero = BracketedRoot::at(nullptr, 0.0);
-  if (contact_at(q, x, zero)) return contact(zero, options);
+  if (test.at(zero)) return contact(zero, options);
+  const Moving<CI>(&x)[4] = test.points();
   const long bits = inclusion_bits(q.bits);
   SmallPolynomial candidates[4], square_free[4];
   int count = 0;
@@ -157,7 +198,7 @@ CcdResult decide(const IntegerCoordinates& q, const SmallPolynomial& cubic,
     while (std::optional<BracketedRoot> r = roots.next()) {
       if (r->is_exact() && r->lo() == 0) continue;  // t = 0 was tried
       if (best && !earlier(*r, *best)) break;       // ascending: no later root is earlier
-      if (contact_at(q, x, *r)) {
+      if (test.at(*r)) {
         best = *r;
         break;
       }
@@ -177,8 +218,7 @@ SmallPolynomial cubic_of(const IntegerCoordinates& q, const IntegerQuery* known)
       return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c.data(), 4).data(), 4);
     }
     mpz_class c[4];
-    if (prefers_trimmed_integers(q)) trimmed_coplanarity_coefficients(q, c);
-    else coplanarity_coefficients(q, c);
+    accumulated_coplanarity_coefficients(q, c);
     return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c, 4).data(), 4);
   }
   return with_limbs(limbs, [&](auto n) {

@@ -228,20 +228,6 @@ bool critical_split_point(const SmallPolynomial& p, double lo, double hi, double
 
 }  // namespace
 
-bool split_point(double lo, double hi, double* m) {
-  double middle;  // of the doubles strictly inside, in bit order
-  if (!predicates::middle_double(lo, hi, &middle)) return false;
-  if ((lo == 0 && hi >= 0x1p-60) || (lo > 0 && hi <= 0x1p20 * lo)) {
-    const double mid = lo + (hi - lo) * 0.5;
-    if (lo < mid && mid < hi) {
-      *m = mid;
-      return true;
-    }
-  }
-  *m = middle;
-  return true;
-}
-
 bool BracketedRoot::refine() {
   double m;
   if (is_exact() || fine_ || !split_point(lo_, hi_, &m)) return false;
@@ -254,6 +240,65 @@ bool BracketedRoot::refine() {
 std::pair<double, double> BracketedRoot::enclosure(double width) const {
   if (is_exact() || fine_) return {lo_, hi_};
   return guided_bisection(*p_, lo_, hi_, width);
+}
+
+void BracketedRoot::narrow_by_filter(int max_steps) {
+  if (is_exact() || fine_) return;
+  p_->narrow_by_filter(&lo_, &hi_, sign_lo_, max_steps);
+}
+
+namespace {
+
+/// Doubles l <= x 2^-K <= h for an integer x >= 0 (mpz_get_d_2exp truncates toward zero: the
+/// truncation is a lower bound, one unit of its 53rd bit more an upper bound; both scaled
+/// exactly unless below 2^-1074, where the lower bound becomes 0 and the upper 2^-1074).
+std::pair<double, double> dyadic_enclosure(const mpz_class& x, unsigned K) {
+  if (sgn(x) == 0) return {0.0, 0.0};
+  long e = 0;
+  const double d = mpz_get_d_2exp(&e, x.get_mpz_t());  // x = (d + rho) 2^e, 0 <= rho < 2^-53
+  const long shift = e - static_cast<long>(K);
+  if (shift < -1021) {  // d 2^shift may not be a double: 0 <= x 2^-K < 2^shift
+    const double above = std::ldexp(1.0, static_cast<int>(std::max(shift, -1074L)));
+    return {0.0, above};
+  }
+  // d and d + 2^-53 (<= 1) have 53 significant bits, the lowest at 2^(shift - 53) >= 2^-1074.
+  return {std::ldexp(d, static_cast<int>(shift)),
+          std::ldexp(d + 0x1p-53, static_cast<int>(shift))};
+}
+
+}  // namespace
+
+std::optional<BracketedRoot> BracketedRoot::reflected(const SmallPolynomial* p_reflected) const {
+  if (!(lo_ >= 0.5 && hi_ <= 1.0)) return std::nullopt;
+  if (fine_) {
+    // u = 1 - r in (uA 2^-K, uB 2^-K), uA = 2^K - B, uB = 2^K - A: enclosed by doubles, then
+    // certified as a bracket of p_reflected's only root there by signs and Descartes' rule.
+    if (fine_->is_exact()) return std::nullopt;
+    const mpz_class one = mpz_class(1) << fine_->K;
+    const double u_lo = dyadic_enclosure(mpz_class(one - fine_->B), fine_->K).first;
+    const double u_hi = dyadic_enclosure(mpz_class(one - fine_->A), fine_->K).second;
+    if (!(u_lo < u_hi) || u_hi > 0.5) return std::nullopt;
+    const int s_lo = p_reflected->sign_at(u_lo), s_hi = p_reflected->sign_at(u_hi);
+    if (s_lo == 0 || s_hi != -s_lo) return std::nullopt;
+    int s[4];
+    const int n = p_reflected->bernstein_signs(u_lo, u_hi, s);
+    int changes = 0, last = 0;
+    for (int i = 0; i < n; ++i) {
+      if (s[i] == 0) continue;
+      if (last != 0 && s[i] != last) ++changes;
+      last = s[i];
+    }
+    if (changes != 1) return std::nullopt;
+    return BracketedRoot(p_reflected, u_lo, u_hi, s_lo);
+  }
+  if (is_exact()) return BracketedRoot::at(p_reflected, 1.0 - lo_);
+  // p(hi) has the sign -sign_lo (a simple root inside): the reflected bracket's lower end.
+  return BracketedRoot(p_reflected, 1.0 - hi_, 1.0 - lo_, -sign_lo_);
+}
+
+int BracketedRoot::certain_sign_of(const SmallPolynomial& g) const {
+  if (fine_ || g.is_zero()) return 0;
+  return is_exact() ? g.certain_sign_at(lo_) : g.certain_sign_on(lo_, hi_);
 }
 
 int BracketedRoot::sign_of(const SmallPolynomial& g) {

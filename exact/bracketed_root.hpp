@@ -21,12 +21,6 @@ namespace exactccd::exact {
 /// decides with the rational path.
 struct UnresolvedAtDoubles {};
 
-/// A double strictly inside (lo, hi), 0 <= lo < hi: the rounded arithmetic middle while the
-/// interval spans few binades (Descartes' rule needs short intervals), else the middle in bit
-/// order (a root near 0 is reached in at most 64 halvings); false when no double is inside.
-/// Any point inside is correct; the choice only sets the speed.
-bool split_point(double lo, double hi, double* m);
-
 /// A bracket on dyadic rationals beyond the doubles (GMP): [A 2^-K, B 2^-K], A < B, holding
 /// one simple root of p with p(A 2^-K) of sign `sign_lo` (non-zero) and p(B 2^-K) of the
 /// other; or the exact root A 2^-K when A == B.
@@ -60,6 +54,8 @@ class BracketedRoot {
       : p_(p), lo_(lo), hi_(hi), sign_lo_(0), fine_(std::move(fine)) {}
 
   bool is_exact() const { return lo_ == hi_; }
+  /// The polynomial whose root this is (nullptr for an exact root given without one).
+  const SmallPolynomial* polynomial() const { return p_; }
   double lo() const { return lo_; }
   double hi() const { return hi_; }
 
@@ -69,6 +65,22 @@ class BracketedRoot {
   /// The reported enclosure: exact; the adjacent doubles around a root beyond the doubles; or
   /// guided bisection to `width` (0: the tightest pair of doubles, canonical).
   std::pair<double, double> enclosure(double width) const;
+
+  /// Narrows the bracket of doubles by bisection with p's signs from the wide-range filter
+  /// alone (SmallPolynomial::certain_sign_at), until a sign is uncertain, no double is left
+  /// inside, or `max_steps` halvings: no exact step. Nothing for an exact root or a bracket
+  /// beyond the doubles. PROOF: proofs/exact_ccd.md#certain-signs-first
+  void narrow_by_filter(int max_steps);
+  /// The sign of g(r) when the wide-range filter certifies it on the bracket (g's enclosures of
+  /// one strict sign on all of [lo, hi], or at the exact root), else 0: no exact step, and
+  /// never 0 for g(r) = 0. PROOF: proofs/exact_ccd.md#certain-signs-first
+  int certain_sign_of(const SmallPolynomial& g) const;
+
+  /// For a bracket of doubles in [1/2, 1] (or an exact root there): the same root as a root u =
+  /// 1 - r of p_reflected = p(1 - u) (SmallPolynomial::reflected of p), bracketed by
+  /// [1 - hi, 1 - lo] (exact: Sterbenz); nullopt elsewhere. A sign of g(1 - u) at u is the
+  /// sign of g at r. PROOF: proofs/exact_ccd.md#certain-signs-first
+  std::optional<BracketedRoot> reflected(const SmallPolynomial* p_reflected) const;
 
   /// The exact sign of g(r); may narrow the bracket. Throws UnresolvedAtDoubles past the
   /// step cap. PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root

@@ -1,6 +1,6 @@
 #include "exact/integer_query.hpp"
 
-#include "exact/trimmed_integer.hpp"
+#include "exact/product_accumulator.hpp"
 
 #include "exact/fixed_width_dispatch.hpp"
 
@@ -97,8 +97,8 @@ void IntegerQuery::compute_coefficients() {
     gmp_.emplace();
     // GMP requested: the plain reference; beyond the fixed widths, for wide coordinates:
     // without their trailing zero bits (the same integers).
-    if (arithmetic_ == Arithmetic::fixed_first && prefers_trimmed_integers(coords_))
-      trimmed_coplanarity_coefficients(coords_, gmp_->c);
+    if (arithmetic_ == Arithmetic::fixed_first)
+      accumulated_coplanarity_coefficients(coords_, gmp_->c);
     else
       coplanarity_coefficients(coords_, gmp_->c);
     return;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/predicates/double_bits.hpp"
 #include "exact/fixed_width_dispatch.hpp"
 #include "core/predicates/fp_environment.hpp"
 #include "exact/integer_cubic.hpp"
@@ -37,19 +38,49 @@ Int scaled_value(const Int* c, int d, const Time& T, unsigned k) {
 /// M b_j = sum_i M C(j, i) / C(d, i) q_i with M = lcm_i C(d, i) (3, 2, 1, 1 for d = 3, 2, 1, 0).
 /// In place: q[j] is updated before q[j - 1], which it reads.
 /// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
+/// A GMP factor held as odd * 2^shift: a double's mantissa scaled to a common exponent carries
+/// up to 1,126 zero bits that a plain product would multiply limb by limb.
+struct ShiftedFactor {
+  mpz_class odd;
+  mp_bitcnt_t shift = 0;
+  explicit ShiftedFactor(const mpz_class& x) {
+    if (sgn(x) != 0) shift = mpz_scan1(x.get_mpz_t(), 0);
+    mpz_tdiv_q_2exp(odd.get_mpz_t(), x.get_mpz_t(), shift);  // exact: those bits are 0
+  }
+};
+
+inline void multiply_in_place(mpz_class& x, const ShiftedFactor& f) {
+  mpz_mul(x.get_mpz_t(), x.get_mpz_t(), f.odd.get_mpz_t());
+  mpz_mul_2exp(x.get_mpz_t(), x.get_mpz_t(), f.shift);
+}
+inline void add_product_by(mpz_class& out, const mpz_class& a, const ShiftedFactor& f) {
+  thread_local mpz_class product;  // scratch: its limbs are reused
+  mpz_mul(product.get_mpz_t(), a.get_mpz_t(), f.odd.get_mpz_t());
+  mpz_mul_2exp(product.get_mpz_t(), product.get_mpz_t(), f.shift);
+  out += product;
+}
 template <class Int>
-void bernstein_signs_of(const Int* c, int d, const Int& A, const Int& H, unsigned K,
+inline void multiply_in_place(Int& x, const Int& f) {
+  x *= f;
+}
+template <class Int>
+inline void add_product_by(Int& out, const Int& a, const Int& f) {
+  add_product(out, a, f);
+}
+
+template <class Int, class Factor>
+void bernstein_signs_of(const Int* c, int d, const Factor& A, const Factor& H, unsigned K,
                         int (&signs)[4]) {
   Int q[4] = {c[d], Int(0), Int(0), Int(0)};
   for (int i = d - 1; i >= 0; --i) {
     const int deg = d - 1 - i;  // degree of q before this step
     q[deg + 1] = q[deg];
-    q[deg + 1] *= H;
+    multiply_in_place(q[deg + 1], H);
     for (int j = deg; j >= 1; --j) {
-      q[j] *= A;
-      add_product(q[j], q[j - 1], H);
+      multiply_in_place(q[j], A);
+      add_product_by(q[j], q[j - 1], H);
     }
-    q[0] *= A;
+    multiply_in_place(q[0], A);
     add_shifted(q[0], c[i], K * static_cast<unsigned>(d - i));
   }
   switch (d) {
@@ -149,6 +180,50 @@ void SmallPolynomial::set_wide_enclosure() {
 #endif
 }
 
+bool split_point(double lo, double hi, double* m) {
+  double middle;  // of the doubles strictly inside, in bit order
+  if (!predicates::middle_double(lo, hi, &middle)) return false;
+  if ((lo == 0 && hi >= 0x1p-60) || (lo > 0 && hi <= 0x1p20 * lo)) {
+    const double mid = lo + (hi - lo) * 0.5;
+    if (lo < mid && mid < hi) {
+      *m = mid;
+      return true;
+    }
+  }
+  *m = middle;
+  return true;
+}
+
+#if EXACTCCD_WIDE_INTERVAL
+WideInterval SmallPolynomial::wide_value_at(double t) const {
+  // Times are in [0, 1] (t >= 0): each Horner step scales by a non-negative point.
+  WideInterval r = wide_c_[degree_];
+  for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, t) + wide_c_[i];
+  return r;
+}
+#endif
+
+void SmallPolynomial::narrow_by_filter(double* lo, double* hi, int sign_lo, int max_steps) const {
+#if EXACTCCD_WIDE_INTERVAL
+  if (!wide_ || degree_ < 0) return;
+  // One guard for the whole loop; each step's bounds pass through volatile stores, which stay
+  // ordered before the rounding mode is restored (as in filtered_sign_at).
+  const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
+  double m;
+  for (int step = 0; step < max_steps && split_point(*lo, *hi, &m); ++step) {
+    volatile long double l, h;
+    const WideInterval r = wide_value_at(m);
+    l = r.lo;
+    h = r.hi;
+    const int s = certain_sign({l, h});
+    if (s == 0) return;
+    (s == sign_lo ? *lo : *hi) = m;
+  }
+#else
+  (void)lo, (void)hi, (void)sign_lo, (void)max_steps;
+#endif
+}
+
 int SmallPolynomial::filtered_sign_at(double t, Approximation* value) const {
 #if EXACTCCD_WIDE_INTERVAL
   if (!wide_ || degree_ < 0) return 0;
@@ -157,9 +232,7 @@ int SmallPolynomial::filtered_sign_at(double t, Approximation* value) const {
   volatile long double lo, hi;
   {
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
-    const WideInterval x{t, t};
-    WideInterval r = wide_c_[degree_];
-    for (int i = degree_ - 1; i >= 0; --i) r = r * x + wide_c_[i];
+    const WideInterval r = wide_value_at(t);
     lo = r.lo;
     hi = r.hi;
   }
@@ -220,6 +293,14 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
   (void)a, (void)b, (void)signs;
   return false;
 #endif
+}
+
+int SmallPolynomial::certain_sign_on(double a, double b) const {
+  int s[4];
+  if (degree_ < 0 || !filtered_bernstein_signs(a, b, s)) return 0;
+  for (int j = 1; j <= degree_; ++j)
+    if (s[j] != s[0]) return 0;
+  return s[0];
 }
 
 std::array<mpz_class, 4> SmallPolynomial::mpz_coefficients() const {
@@ -291,7 +372,8 @@ int SmallPolynomial::bernstein_signs(double a, double b, int (&signs)[4]) const 
     const mpz_class A =
         da.mantissa == 0 ? mpz_class(0) : scaled_integer<mpz_class>(da.mantissa, shift_a);
     const mpz_class H = scaled_integer<mpz_class>(db.mantissa, shift_b) - A;
-    bernstein_signs_of(gmp_coefficients(&converted), degree_, A, H, static_cast<unsigned>(K),
+    bernstein_signs_of(gmp_coefficients(&converted), degree_, ShiftedFactor(A), ShiftedFactor(H),
+                       static_cast<unsigned>(K),
                        signs);
     return degree_ + 1;
   }
@@ -327,6 +409,21 @@ int SmallPolynomial::quadratic_discriminant_sign() const {
     multiply_by(four_c2, 4u);
     return (c1 * c1 - four_c2 * c0).sign();
   });
+}
+
+SmallPolynomial SmallPolynomial::reflected() const {
+  if (degree_ < 0) return {};
+  std::array<mpz_class, 4> storage;
+  const mpz_class* c = gmp_coefficients(&storage);
+  // sum_i c_i (1 - u)^i = sum_j (-1)^j (sum_{i >= j} C(i, j) c_i) u^j.
+  static constexpr unsigned long kBinomial[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0},
+                                                    {1, 3, 3, 1}};
+  mpz_class r[4];
+  for (int j = 0; j <= degree_; ++j) {
+    for (int i = j; i <= degree_; ++i) mpz_addmul_ui(r[j].get_mpz_t(), c[i].get_mpz_t(), kBinomial[i][j]);
+    if (j % 2 == 1) r[j] = -r[j];
+  }
+  return from_mpz(r, degree_ + 1);
 }
 
 SmallPolynomial SmallPolynomial::double_root_factor() const {

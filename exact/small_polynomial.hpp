@@ -34,6 +34,12 @@ constexpr long bernstein_bits(long coefficient_bits, int degree, long time_expon
 /// below it the fixed-size evaluations are already cheap.
 constexpr long kWideFilterBits = 320;
 
+/// A double strictly inside (lo, hi), 0 <= lo < hi: the rounded arithmetic middle while the
+/// interval spans few binades (Descartes' rule needs short intervals), else the middle in bit
+/// order (a root near 0 is reached in at most 64 halvings); false when no double is inside.
+/// Any point inside is correct; the choice only sets the speed.
+bool split_point(double lo, double hi, double* m);
+
 /// The integer polynomial sum c[i] t^i, degree <= 3.
 class SmallPolynomial final : public CubicAtDoubles {
  public:
@@ -75,6 +81,22 @@ class SmallPolynomial final : public CubicAtDoubles {
   /// For degree 2 with a zero discriminant: 2 c2 t + c1, whose only root is p's double root
   /// -c1 / (2 c2) (p = (2 c2 t + c1)^2 / (4 c2)). PROOF: proofs/exact_ccd.md#quadratic-discriminant
   SmallPolynomial double_root_factor() const;
+  /// p(1 - u) as a polynomial in u (exact integers, GMP): near t = 1, where doubles in t are
+  /// 2^-53 apart, u = 1 - t is resolved down to 2^-1074. PROOF: proofs/exact_ccd.md#certain-signs-first
+  SmallPolynomial reflected() const;
+
+  /// The wide-range filter alone (no exact step): the sign of p(t) at the double t, or of p on
+  /// all of [a, b] (0 <= a < b <= 1, all Bernstein coefficients of one certain strict sign),
+  /// when its enclosures certify it; 0 when they cannot tell or p has no enclosures (bits() <=
+  /// kWideFilterBits). Never 0 for "p vanishes": a certain sign is strict.
+  /// PROOF: proofs/exact_ccd.md#wide-interval-filter
+  int certain_sign_at(double t) const { return filtered_sign_at(t, nullptr); }
+  int certain_sign_on(double a, double b) const;
+  /// Bisects the bracket [*lo, *hi] of p's only root inside (p(*lo) of sign sign_lo, p(*hi) of
+  /// the other, both non-zero) at split_point's doubles with signs from the wide-range filter
+  /// alone, under one x87 guard, until a sign is uncertain, no double is left inside, or
+  /// max_steps halvings. PROOF: proofs/exact_ccd.md#certain-signs-first
+  void narrow_by_filter(double* lo, double* hi, int sign_lo, int max_steps) const;
 
   // CubicAtDoubles (guided_bisection): exact sign at a double t in [0, 1], rounded values.
   int sign_at(double t, Approximation* value) const override;
@@ -89,6 +111,10 @@ class SmallPolynomial final : public CubicAtDoubles {
   void set_wide_enclosure();
   /// The certified sign from the filter, 0 when it cannot tell (then decide exactly).
   int filtered_sign_at(double t, Approximation* value) const;
+#if EXACTCCD_WIDE_INTERVAL
+  /// The enclosure of p(t), t >= 0 a double; needs X87EnvironmentGuard(Rounding::upward).
+  WideInterval wide_value_at(double t) const;
+#endif
   bool filtered_bernstein_signs(double a, double b, int (&signs)[4]) const;
 
   int degree_ = -1;

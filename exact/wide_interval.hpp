@@ -38,13 +38,22 @@ inline WideInterval operator+(const WideInterval& a, const WideInterval& b) {
   return {-((-a.lo) - b.lo), a.hi + b.hi};
 }
 
+/// The larger of two finite bounds (no NaN arises: std::fmax's NaN rules, a libm call for long
+/// double, are not needed).
+inline long double larger(long double x, long double y) { return x > y ? x : y; }
+
 inline WideInterval operator*(const WideInterval& a, const WideInterval& b) {
   const long double h1 = a.lo * b.lo, h2 = a.lo * b.hi, h3 = a.hi * b.lo, h4 = a.hi * b.hi;
   const long double l1 = (-a.lo) * b.lo, l2 = (-a.lo) * b.hi, l3 = (-a.hi) * b.lo,
                     l4 = (-a.hi) * b.hi;
-  const long double hi = std::fmax(std::fmax(h1, h2), std::fmax(h3, h4));
-  const long double minus_lo = std::fmax(std::fmax(l1, l2), std::fmax(l3, l4));
+  const long double hi = larger(larger(h1, h2), larger(h3, h4));
+  const long double minus_lo = larger(larger(l1, l2), larger(l3, l4));
   return {-minus_lo, hi};
+}
+
+/// a t for a point t >= 0: the ends scale without changing order (two products, not eight).
+inline WideInterval times_nonnegative(const WideInterval& a, long double t) {
+  return {-((-a.lo) * t), a.hi * t};
 }
 
 /// +1 or -1 when the interval excludes 0, else 0 (uncertain: the caller decides exactly).

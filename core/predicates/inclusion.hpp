@@ -64,4 +64,79 @@ EXACTCCD_CERTIFIED bool segments_intersect_at(const Point& a0, const Point& a1,
          point_on_segment_at(b0, a0, a1, sign_at) || point_on_segment_at(b1, a0, a1, sign_at);
 }
 
+/// Lemma 3 (a) with the orientations' signs asked for by index, known signs first. `s` gives,
+/// at the instant under test, for the normal n_k = O_k(a, b, c) (`normal`) and the edge
+/// orientations O_k(a, b, p), O_k(b, c, p), O_k(c, a, p) (`edge`, i = 0, 1, 2):
+///   s.certain_normal(k), s.certain_edge(k, i): the sign when known cheaply (+1 or -1, never
+///     wrong), else 0 ("unknown", never "zero");
+///   s.normal(k), s.edge(k, i): the exact sign (-1, 0, +1).
+/// Every projection whose normal has a known sign is tried with known signs alone (an edge of
+/// sign -s: outside; all three of sign s: inside); then one projection with n_k != 0 (a known
+/// one first, else the first exact non-zero) decides with exact signs where none is known.
+/// Returns 1 (p in the triangle), 0 (not), or -1 when n = 0 (a degenerate triangle: the caller
+/// decides by Lemma 3 (b), as point_in_triangle_at does). Any projection with n_k != 0 gives
+/// the exact answer, so the first that decides is right. PROOF: proofs/exact_ccd.md#certain-signs-first
+template <class Signs>
+EXACTCCD_CERTIFIED int point_in_triangle_by_projections(Signs& s) {
+  int normal[3], edge[3][3] = {};
+  for (int k = 0; k < 3; ++k) {
+    normal[k] = s.certain_normal(k);
+    if (normal[k] == 0) continue;
+    bool inside = true;
+    for (int i = 0; i < 3; ++i) {
+      edge[k][i] = s.certain_edge(k, i);
+      if (edge[k][i] == -normal[k]) return 0;
+      inside = inside && edge[k][i] == normal[k];
+    }
+    if (inside) return 1;
+  }
+  int k = 0;
+  while (k < 3 && normal[k] == 0) ++k;
+  if (k == 3) {
+    for (k = 0; k < 3; ++k) {
+      normal[k] = s.normal(k);
+      if (normal[k] != 0) break;
+    }
+    if (k == 3) return -1;
+  }
+  for (int i = 0; i < 3; ++i) {
+    const int e = edge[k][i] != 0 ? edge[k][i] : s.edge(k, i);
+    if (e == -normal[k]) return 0;
+  }
+  return 1;
+}
+
+/// Lemma 4 (a) in the same way: `normal` is m_k = (d_a x d_b)_k, `edge` (i = 0 ... 3) the
+/// orientations O_k(a0, a1, b0), O_k(a0, a1, b1), O_k(b0, b1, a0), O_k(b0, b1, a1). A
+/// projection with m_k of known sign decides with known signs alone when o1 = o2 or o3 = o4
+/// (both known: no contact), or all four known with o1 = -o2 and o3 = -o4 (contact). Returns
+/// 1, 0, or -1 when m = 0 (parallel or degenerate: the caller decides by Lemma 4 (b)).
+/// PROOF: proofs/exact_ccd.md#certain-signs-first
+template <class Signs>
+EXACTCCD_CERTIFIED int segments_intersect_by_projections(Signs& s) {
+  int normal[3], edge[3][4] = {};
+  for (int k = 0; k < 3; ++k) {
+    normal[k] = s.certain_normal(k);
+    if (normal[k] == 0) continue;
+    int* o = edge[k];
+    o[0] = s.certain_edge(k, 0), o[1] = s.certain_edge(k, 1);
+    if (o[0] != 0 && o[0] == o[1]) return 0;
+    o[2] = s.certain_edge(k, 2), o[3] = s.certain_edge(k, 3);
+    if (o[2] != 0 && o[2] == o[3]) return 0;
+    if (o[0] != 0 && o[1] == -o[0] && o[2] != 0 && o[3] == -o[2]) return 1;
+  }
+  int k = 0;
+  while (k < 3 && normal[k] == 0) ++k;
+  if (k == 3) {
+    for (k = 0; k < 3; ++k) {
+      normal[k] = s.normal(k);
+      if (normal[k] != 0) break;
+    }
+    if (k == 3) return -1;
+  }
+  auto sign = [&](int i) { return edge[k][i] != 0 ? edge[k][i] : s.edge(k, i); };
+  if (sign(0) * sign(1) > 0) return 0;
+  return sign(2) * sign(3) <= 0 ? 1 : 0;
+}
+
 }  // namespace exactccd::predicates
