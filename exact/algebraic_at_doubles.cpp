@@ -129,8 +129,13 @@ class ContactTest {
   static constexpr bool kWideCoordinates =
       std::is_same_v<CI, TrimmedInteger> || std::is_same_v<CI, mpz_class>;
 
+  /// Within the fixed widths: nothing (the polynomials' storage would be a large, unused frame).
+  struct NoWidePolynomials {
+    explicit NoWidePolynomials(const IntegerCoordinates&) {}
+  };
+
   const IntegerCoordinates& q_;
-  WideInclusionPolynomials wide_;
+  std::conditional_t<kWideCoordinates, WideInclusionPolynomials, NoWidePolynomials> wide_;
   Moving<CI> x_[4];
   bool ready_ = false;
 };
