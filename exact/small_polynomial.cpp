@@ -263,9 +263,11 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
     WideInterval q[4] = {wide_c_[d], {0, 0}, {0, 0}, {0, 0}};
     for (int i = d - 1; i >= 0; --i) {
       const int deg = d - 1 - i;
-      q[deg + 1] = q[deg] * H;
-      for (int j = deg; j >= 1; --j) q[j] = q[j] * A + q[j - 1] * H;
-      q[0] = q[0] * A + wide_c_[i];
+      // a >= 0, and H's lower end -(a - b) >= 0 (a - b < 0 rounds up to at most 0).
+      q[deg + 1] = times_nonnegative(q[deg], H.lo, H.hi);
+      for (int j = deg; j >= 1; --j)
+        q[j] = times_nonnegative(q[j], A.lo) + times_nonnegative(q[j - 1], H.lo, H.hi);
+      q[0] = times_nonnegative(q[0], A.lo) + wide_c_[i];
     }
     const WideInterval two{2, 2}, three{3, 3};
     WideInterval beta[4] = {};
@@ -296,7 +298,21 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
 }
 
 int SmallPolynomial::certain_sign_on(double a, double b) const {
-  int s[4];
+#if EXACTCCD_WIDE_INTERVAL
+  if (!wide_ || degree_ < 0) return 0;
+  // The range of p over [a, b] by Horner's rule on the interval (each step's interval holds
+  // the partial value at every t in [a, b]): enough on the short brackets it is asked about.
+  volatile long double lo, hi;  // leave the guard's scope as in filtered_sign_at
+  {
+    const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
+    WideInterval r = wide_c_[degree_];
+    for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, a, b) + wide_c_[i];
+    lo = r.lo;
+    hi = r.hi;
+  }
+  if (const int sign = certain_sign({lo, hi})) return sign;
+#endif
+  int s[4];  // the Bernstein enclosures, tighter on longer brackets
   if (degree_ < 0 || !filtered_bernstein_signs(a, b, s)) return 0;
   for (int j = 1; j <= degree_; ++j)
     if (s[j] != s[0]) return 0;

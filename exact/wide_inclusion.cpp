@@ -10,9 +10,11 @@ namespace exactccd::exact {
 
 namespace {
 
-/// At most this many halvings of a root's bracket with filtered signs before the orientations'
-/// signs (each a few long-double operations; 64 reach adjacent doubles from any bracket).
-constexpr int kFilteredNarrowingSteps = 80;
+/// Halvings of a root's bracket with filtered signs (a few long-double operations each): first
+/// a few, which decide most signs; all the way (64 reach adjacent doubles from any bracket)
+/// only when a sign is still unknown. Speed settings only.
+constexpr int kFirstNarrowingSteps = 24;
+constexpr int kFullNarrowingSteps = 80;
 
 /// The coefficients divided by their common power of two (a positive factor).
 SmallPolynomial without_common_power_of_two(mpz_class (&c)[3]) {
@@ -35,36 +37,51 @@ class CertainSigns {
  public:
   CertainSigns(WideInclusionPolynomials& polynomials, BracketedRoot& r)
       : polynomials_(polynomials), r_(r) {
-    r_.narrow_by_filter(kFilteredNarrowingSteps);
-    const SmallPolynomial* p = r.polynomial();
-    if (r.lo() >= 0.5 && (p != nullptr || r.is_exact())) {
-      if (p != nullptr) p_reflected_ = p->reflected();
-      u_ = r.reflected(&p_reflected_);
-      if (u_) u_->narrow_by_filter(kFilteredNarrowingSteps);
-    }
+    narrow(kFirstNarrowingSteps);
   }
   // Lemma 3 / 4 signs by index (core/predicates/inclusion.hpp).
-  int certain_normal(int k) {
-    return u_ ? u_->certain_sign_of(polynomials_.reflected_normal(k))
-              : r_.certain_sign_of(polynomials_.normal(k));
-  }
-  int certain_edge(int k, int i) {
-    return u_ ? u_->certain_sign_of(polynomials_.reflected_edge(k, i))
-              : r_.certain_sign_of(polynomials_.edge(k, i));
-  }
+  int certain_normal(int k) { return certain(k); }
+  int certain_edge(int k, int i) { return certain(3 + 4 * k + i); }
   int normal(int k) { return r_.sign_of(polynomials_.normal(k)); }
   int edge(int k, int i) { return r_.sign_of(polynomials_.edge(k, i)); }
 
  private:
+  /// Narrows r's bracket, then, once it lies in [1/2, 1], the bracket of u = 1 - r.
+  void narrow(int steps) {
+    if (!u_) {
+      r_.narrow_by_filter(steps);
+      const SmallPolynomial* p = r_.polynomial();
+      if (r_.lo() >= 0.5 && (p != nullptr || r_.is_exact())) {
+        if (p != nullptr) p_reflected_ = p->reflected();
+        u_ = r_.reflected(&p_reflected_);
+      }
+    }
+    if (u_) u_->narrow_by_filter(steps);
+  }
+  int certain_now(int slot) {
+    return u_ ? u_->certain_sign_of(polynomials_.reflected(slot))
+              : r_.certain_sign_of(polynomials_.polynomial(slot));
+  }
+  int certain(int slot) {
+    int s = certain_now(slot);
+    if (s == 0 && !fully_narrowed_) {
+      fully_narrowed_ = true;
+      narrow(kFullNarrowingSteps);
+      s = certain_now(slot);
+    }
+    return s;
+  }
+
   WideInclusionPolynomials& polynomials_;
   BracketedRoot& r_;
   SmallPolynomial p_reflected_;
   std::optional<BracketedRoot> u_;
+  bool fully_narrowed_ = false;
 };
 
 }  // namespace
 
-const SmallPolynomial& WideInclusionPolynomials::get(int slot) {
+const SmallPolynomial& WideInclusionPolynomials::polynomial(int slot) {
   std::optional<SmallPolynomial>& p = poly_[slot];
   if (p) return *p;
   mpz_class c[3];
@@ -93,9 +110,9 @@ const SmallPolynomial& WideInclusionPolynomials::get(int slot) {
   return *p;
 }
 
-const SmallPolynomial& WideInclusionPolynomials::get_reflected(int slot) {
+const SmallPolynomial& WideInclusionPolynomials::reflected(int slot) {
   std::optional<SmallPolynomial>& p = reflected_[slot];
-  if (!p) p = get(slot).reflected();
+  if (!p) p = polynomial(slot).reflected();
   return *p;
 }
 

@@ -28,15 +28,16 @@ class WideInclusionPolynomials {
  public:
   explicit WideInclusionPolynomials(const IntegerCoordinates& q) : q_(q) {}
   const IntegerCoordinates& coordinates() const { return q_; }
-  const SmallPolynomial& normal(int k) { return get(k); }
-  const SmallPolynomial& edge(int k, int i) { return get(3 + 4 * k + i); }
-  const SmallPolynomial& reflected_normal(int k) { return get_reflected(k); }
-  const SmallPolynomial& reflected_edge(int k, int i) { return get_reflected(3 + 4 * k + i); }
+  const SmallPolynomial& normal(int k) { return polynomial(k); }
+  const SmallPolynomial& edge(int k, int i) { return polynomial(3 + 4 * k + i); }
+  const SmallPolynomial& reflected_normal(int k) { return reflected(k); }
+  const SmallPolynomial& reflected_edge(int k, int i) { return reflected(3 + 4 * k + i); }
+  /// By slot: normal k at k, edge (k, i) at 3 + 4 k + i.
+  const SmallPolynomial& polynomial(int slot);
+  const SmallPolynomial& reflected(int slot);
 
  private:
   static constexpr int kSlots = 15;
-  const SmallPolynomial& get(int slot);
-  const SmallPolynomial& get_reflected(int slot);
   const IntegerCoordinates& q_;
   std::optional<SmallPolynomial> poly_[kSlots], reflected_[kSlots];
 };

@@ -56,6 +56,12 @@ inline WideInterval times_nonnegative(const WideInterval& a, long double t) {
   return {-((-a.lo) * t), a.hi * t};
 }
 
+/// a [t_lo, t_hi] for 0 <= t_lo <= t_hi: the least product is a.lo times t_hi when a.lo < 0,
+/// else times t_lo; the greatest a.hi times t_hi when a.hi > 0, else times t_lo.
+inline WideInterval times_nonnegative(const WideInterval& a, long double t_lo, long double t_hi) {
+  return {-((-a.lo) * (a.lo < 0 ? t_hi : t_lo)), a.hi * (a.hi > 0 ? t_hi : t_lo)};
+}
+
 /// +1 or -1 when the interval excludes 0, else 0 (uncertain: the caller decides exactly).
 inline int certain_sign(const WideInterval& x) { return x.lo > 0 ? 1 : (x.hi < 0 ? -1 : 0); }
 
