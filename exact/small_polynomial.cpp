@@ -177,6 +177,11 @@ void SmallPolynomial::set_wide_enclosure() {
   const predicates::X87EnvironmentGuard extended(predicates::Rounding::upward);
   for (int i = 0; i < 4; ++i) wide_c_[i] = in_gmp_ ? enclosure_of(gmp_[i]) : enclosure_of(fixed_[i]);
   wide_ = true;
+  if (in_gmp_ && degree_ >= 1) {
+    const std::array<mpz_class, 4> r = reflected_coefficients();
+    for (int i = 0; i < 4; ++i) wide_reflected_c_[i] = enclosure_of(r[static_cast<std::size_t>(i)]);
+    wide_reflected_ = true;
+  }
 #endif
 }
 
@@ -195,10 +200,19 @@ bool split_point(double lo, double hi, double* m) {
 }
 
 #if EXACTCCD_WIDE_INTERVAL
+const WideInterval* SmallPolynomial::wide_coefficients_for(double* t) const {
+  if (wide_reflected_ && *t >= 0.5 && *t <= 1.0) {
+    *t = 1.0 - *t;  // exact (Sterbenz)
+    return wide_reflected_c_;
+  }
+  return wide_c_;
+}
+
 WideInterval SmallPolynomial::wide_value_at(double t) const {
   // Times are in [0, 1] (t >= 0): each Horner step scales by a non-negative point.
-  WideInterval r = wide_c_[degree_];
-  for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, t) + wide_c_[i];
+  const WideInterval* c = wide_coefficients_for(&t);
+  WideInterval r = c[degree_];
+  for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, t) + c[i];
   return r;
 }
 #endif
@@ -257,17 +271,25 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
     // The Taylor shift q(s) = p(a + h s), h = b - a enclosed, by Horner's rule over polynomials
     // in s; then the Bernstein coefficients times lcm C(d, i), as in the exact evaluation.
+    // On [a, b] within [1/2, 1]: p(1 - u)'s on [1 - b, 1 - a] (both ends exact), whose
+    // Bernstein coefficients are p's in reverse order (t = 1 - u reverses the interval).
+    const bool reflect = wide_reflected_ && a >= 0.5;
+    const WideInterval* c = reflect ? wide_reflected_c_ : wide_c_;
+    if (reflect) {
+      const double u_lo = 1.0 - b, u_hi = 1.0 - a;
+      a = u_lo, b = u_hi;
+    }
     const WideInterval A{a, a};
     const WideInterval H{-(static_cast<long double>(a) - b), static_cast<long double>(b) - a};
     const int d = degree_;
-    WideInterval q[4] = {wide_c_[d], {0, 0}, {0, 0}, {0, 0}};
+    WideInterval q[4] = {c[d], {0, 0}, {0, 0}, {0, 0}};
     for (int i = d - 1; i >= 0; --i) {
       const int deg = d - 1 - i;
       // a >= 0, and H's lower end -(a - b) >= 0 (a - b < 0 rounds up to at most 0).
       q[deg + 1] = times_nonnegative(q[deg], H.lo, H.hi);
       for (int j = deg; j >= 1; --j)
         q[j] = times_nonnegative(q[j], A.lo) + times_nonnegative(q[j - 1], H.lo, H.hi);
-      q[0] = times_nonnegative(q[0], A.lo) + wide_c_[i];
+      q[0] = times_nonnegative(q[0], A.lo) + c[i];
     }
     const WideInterval two{2, 2}, three{3, 3};
     WideInterval beta[4] = {};
@@ -282,8 +304,9 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
         beta[3] = q[0] + q[1] + q[2] + q[3];
     }
     for (int j = 0; j <= d; ++j) {
-      lo[j] = beta[j].lo;
-      hi[j] = beta[j].hi;
+      const int k = reflect ? d - j : j;
+      lo[k] = beta[j].lo;
+      hi[k] = beta[j].hi;
     }
   }
   for (int j = 0; j <= degree_; ++j) {
@@ -305,8 +328,14 @@ int SmallPolynomial::certain_sign_on(double a, double b) const {
   volatile long double lo, hi;  // leave the guard's scope as in filtered_sign_at
   {
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
-    WideInterval r = wide_c_[degree_];
-    for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, a, b) + wide_c_[i];
+    double t_lo = a, t_hi = b;
+    const WideInterval* c = wide_c_;
+    if (wide_reflected_ && a >= 0.5) {  // p(1 - u) on [1 - b, 1 - a], exact ends
+      c = wide_reflected_c_;
+      t_lo = 1.0 - b, t_hi = 1.0 - a;
+    }
+    WideInterval r = c[degree_];
+    for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, t_lo, t_hi) + c[i];
     lo = r.lo;
     hi = r.hi;
   }
@@ -427,19 +456,25 @@ int SmallPolynomial::quadratic_discriminant_sign() const {
   });
 }
 
-SmallPolynomial SmallPolynomial::reflected() const {
-  if (degree_ < 0) return {};
-  std::array<mpz_class, 4> storage;
+std::array<mpz_class, 4> SmallPolynomial::reflected_coefficients() const {
+  std::array<mpz_class, 4> storage, r;
+  if (degree_ < 0) return r;
   const mpz_class* c = gmp_coefficients(&storage);
   // sum_i c_i (1 - u)^i = sum_j (-1)^j (sum_{i >= j} C(i, j) c_i) u^j.
   static constexpr unsigned long kBinomial[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0},
                                                     {1, 3, 3, 1}};
-  mpz_class r[4];
   for (int j = 0; j <= degree_; ++j) {
-    for (int i = j; i <= degree_; ++i) mpz_addmul_ui(r[j].get_mpz_t(), c[i].get_mpz_t(), kBinomial[i][j]);
-    if (j % 2 == 1) r[j] = -r[j];
+    mpz_class& rj = r[static_cast<std::size_t>(j)];
+    for (int i = j; i <= degree_; ++i)
+      mpz_addmul_ui(rj.get_mpz_t(), c[i].get_mpz_t(), kBinomial[i][j]);
+    if (j % 2 == 1) rj = -rj;
   }
-  return from_mpz(r, degree_ + 1);
+  return r;
+}
+
+SmallPolynomial SmallPolynomial::reflected() const {
+  if (degree_ < 0) return {};
+  return from_mpz(reflected_coefficients().data(), degree_ + 1);
 }
 
 SmallPolynomial SmallPolynomial::double_root_factor() const {

@@ -84,6 +84,7 @@ class SmallPolynomial final : public CubicAtDoubles {
   /// p(1 - u) as a polynomial in u (exact integers, GMP): near t = 1, where doubles in t are
   /// 2^-53 apart, u = 1 - t is resolved down to 2^-1074. PROOF: proofs/exact_ccd.md#certain-signs-first
   SmallPolynomial reflected() const;
+  std::array<mpz_class, 4> reflected_coefficients() const;
 
   /// The wide-range filter alone (no exact step): the sign of p(t) at the double t, or of p on
   /// all of [a, b] (0 <= a < b <= 1, all Bernstein coefficients of one certain strict sign),
@@ -114,6 +115,9 @@ class SmallPolynomial final : public CubicAtDoubles {
 #if EXACTCCD_WIDE_INTERVAL
   /// The enclosure of p(t), t >= 0 a double; needs X87EnvironmentGuard(Rounding::upward).
   WideInterval wide_value_at(double t) const;
+  /// The enclosures to evaluate at the time t in [0, 1]: p's at t, or for t >= 1/2 (when held)
+  /// p(1 - u)'s at u = 1 - t (exact).
+  const WideInterval* wide_coefficients_for(double* t) const;
 #endif
   bool filtered_bernstein_signs(double a, double b, int (&signs)[4]) const;
 
@@ -126,6 +130,10 @@ class SmallPolynomial final : public CubicAtDoubles {
 #if EXACTCCD_WIDE_INTERVAL
   bool wide_ = false;
   WideInterval wide_c_[4];
+  /// For GMP coefficients: enclosures of p(1 - u)'s, which near t = 1 (u = 1 - t, exact for
+  /// t >= 1/2) avoid the cancellation of p's terms there.
+  bool wide_reflected_ = false;
+  WideInterval wide_reflected_c_[4];
 #endif
 };
 
