@@ -148,6 +148,11 @@ DyadicTime unit_time(double t) {
 std::uint64_t gmp_polynomial_steps_in_this_thread() noexcept { return g_gmp_steps; }
 
 SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count) {
+  return from_mpz(c, count, nullptr);
+}
+
+SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count,
+                                          const SmallPolynomial* reflection) {
   ++g_gmp_steps;
   SmallPolynomial p;
   long bits = 0;
@@ -163,14 +168,14 @@ SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count) {
     for (int i = 0; i < 4; ++i)
       p.fixed_[i] = i < count ? fixed_from_mpz<kMaxFixedLimbs>(c[i]) : Stored(0);
   }
-  if (bits > kWideFilterBits) p.set_wide_enclosure();
+  if (bits > kWideFilterBits) p.set_wide_enclosure(reflection);
   return p;
 }
 
 // ---- the wide-range interval filter ------------------------------------------------------------
 // PROOF: proofs/exact_ccd.md#wide-interval-filter
 
-void SmallPolynomial::set_wide_enclosure() {
+void SmallPolynomial::set_wide_enclosure(const SmallPolynomial* reflection) {
 #if EXACTCCD_WIDE_INTERVAL
   // The ends are exact long doubles only at 64-bit precision: never under the caller's x87
   // precision control (FpEnvironment.X87ControlWordUnmaskedDoesNotTrapAndIsRestored).
@@ -178,8 +183,14 @@ void SmallPolynomial::set_wide_enclosure() {
   for (int i = 0; i < 4; ++i) wide_c_[i] = in_gmp_ ? enclosure_of(gmp_[i]) : enclosure_of(fixed_[i]);
   wide_ = true;
   if (in_gmp_ && degree_ >= 1) {
-    const std::array<mpz_class, 4> r = reflected_coefficients();
-    for (int i = 0; i < 4; ++i) wide_reflected_c_[i] = enclosure_of(r[static_cast<std::size_t>(i)]);
+    if (reflection != nullptr && reflection->wide_) {
+      // p is the reflection of `reflection`, whose own enclosures are those of p(1 - u).
+      for (int i = 0; i < 4; ++i) wide_reflected_c_[i] = reflection->wide_c_[i];
+    } else {
+      const std::array<mpz_class, 4> r = reflected_coefficients();
+      for (int i = 0; i < 4; ++i)
+        wide_reflected_c_[i] = enclosure_of(r[static_cast<std::size_t>(i)]);
+    }
     wide_reflected_ = true;
   }
 #endif
@@ -474,7 +485,7 @@ std::array<mpz_class, 4> SmallPolynomial::reflected_coefficients() const {
 
 SmallPolynomial SmallPolynomial::reflected() const {
   if (degree_ < 0) return {};
-  return from_mpz(reflected_coefficients().data(), degree_ + 1);
+  return from_mpz(reflected_coefficients().data(), degree_ + 1, this);
 }
 
 SmallPolynomial SmallPolynomial::double_root_factor() const {

@@ -109,7 +109,11 @@ class SmallPolynomial final : public CubicAtDoubles {
   /// *storage.
   const mpz_class* gmp_coefficients(std::array<mpz_class, 4>* storage) const;
   /// Encloses the coefficients for the wide-range filter when bits_ > kWideFilterBits.
-  void set_wide_enclosure();
+  /// `reflection`: the polynomial this one is the reflection of (its enclosures are this one's
+  /// reflected enclosures), or nullptr.
+  void set_wide_enclosure(const SmallPolynomial* reflection = nullptr);
+  static SmallPolynomial from_mpz(const mpz_class* c, int count,
+                                  const SmallPolynomial* reflection);
   /// The certified sign from the filter, 0 when it cannot tell (then decide exactly).
   int filtered_sign_at(double t, Approximation* value) const;
 #if EXACTCCD_WIDE_INTERVAL
