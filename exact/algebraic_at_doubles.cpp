@@ -25,6 +25,7 @@ namespace exactccd::exact {
 namespace {
 
 thread_local std::uint64_t g_unresolved = 0;
+thread_local bool g_wide_contact_test = true;
 
 template <int N, int D>
 SmallPolynomial small(const predicates::FixedPoly<FixedInt<N>, D>& g, long bits) {
@@ -109,8 +110,10 @@ class ContactTest {
 
   bool at(BracketedRoot& r) {
     if constexpr (kWideCoordinates) {
-      const int decided = wide_contact_at(wide_, r);
-      if (decided >= 0) return decided == 1;
+      if (g_wide_contact_test) {
+        const int decided = wide_contact_at(wide_, r);
+        if (decided >= 0) return decided == 1;
+      }
     }
     return contact_at(q_, points(), r);
   }
@@ -266,5 +269,7 @@ std::optional<CcdResult> edge_edge_ccd_at_doubles(const EdgeEdgeQuery& q,
 }
 
 std::uint64_t unresolved_at_doubles_in_this_thread() noexcept { return g_unresolved; }
+
+void use_wide_contact_test_in_this_thread(bool on) noexcept { g_wide_contact_test = on; }
 
 }  // namespace exactccd::exact

@@ -33,4 +33,9 @@ std::optional<CcdResult> edge_edge_ccd_at_doubles(const EdgeEdgeQuery& q,
 /// How many queries of the calling thread this stage left to the rational path (tests).
 std::uint64_t unresolved_at_doubles_in_this_thread() noexcept;
 
+/// For differential tests: whether the calling thread's stage takes the contact test at roots
+/// for coordinates in GMP from exact/wide_inclusion.hpp (true, the default) or from the general
+/// predicates with exact signs only (false: the route before it, kept as its reference).
+void use_wide_contact_test_in_this_thread(bool on) noexcept;
+
 }  // namespace exactccd::exact

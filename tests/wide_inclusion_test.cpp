@@ -8,6 +8,7 @@
 // PROOF: proofs/exact_ccd.md#certain-signs-first
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -15,7 +16,10 @@
 #include "core/predicates/fp_environment.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "corpus/random_queries.hpp"
+#include "exact/algebraic_at_doubles.hpp"
 #include "exact/bracketed_root.hpp"
+#include "exactccd/ccd.hpp"
+#include "exact/fixed_width_dispatch.hpp"
 #include "exact/integer_cubic.hpp"
 #include "exact/product_accumulator.hpp"
 #include "exact/small_polynomial.hpp"
@@ -302,6 +306,51 @@ TEST(BracketedRootReflection, KeepsTheRootAndCertainSignsAreExact) {
   }
   EXPECT_GT(reflected, n / 2);
   EXPECT_GT(certain, n);
+}
+
+// The stage at double brackets with the wide contact test against the same stage with the
+// general predicates and exact signs only (the route before it, its reference), on every
+// generator whose coordinates exceed the fixed widths: the same verdict and the same tightest
+// TOI pair, query by query. Also through the default pipeline (its filters first).
+TEST(WideContactTest, AgreesWithTheGeneralRouteOnWideGenerators) {
+  predicates::FpEnvironmentGuard nearest{predicates::Rounding::to_nearest};
+  const std::uint64_t n = test::at_least(test::scaled_count(1500), 200);
+  int wide = 0, contacts = 0;
+  for (const random_queries::Generator& g : random_queries::all_generators())
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const random_queries::DoubleQuery q = random_queries::generate(g, 37, i);
+      // Within the fixed widths (inclusion polynomials below 2^(2L + 6), Lemma 10a) the stage
+      // never takes the wide contact test.
+      if (fixed_limbs_for(2L * coordinates_of(q).bits + 6) != 0) {
+        if (i >= 8) break;  // this generator stays within the fixed widths: a few suffice
+        continue;
+      }
+      ++wide;
+      const bool vf = q.type == QueryType::vertex_face;
+      CcdOptions o;
+      o.toi_width = 0;
+      auto run = [&](bool on) {
+        use_wide_contact_test_in_this_thread(on);
+        const auto r = vf ? vertex_face_ccd_at_doubles(q.vertex_face(), o)
+                          : edge_edge_ccd_at_doubles(q.edge_edge(), o);
+        use_wide_contact_test_in_this_thread(true);
+        return r;
+      };
+      const auto fast = run(true), reference = run(false);
+      ASSERT_TRUE(fast && reference) << g.name() << " #" << i;
+      ASSERT_EQ(fast->collides, reference->collides) << g.name() << " #" << i;
+      if (reference->collides) {
+        ++contacts;
+        ASSERT_EQ(fast->toi_lo, reference->toi_lo) << g.name() << " #" << i;
+        ASSERT_EQ(fast->toi_hi, reference->toi_hi) << g.name() << " #" << i;
+      }
+      const CcdResult pipeline = vf ? vertex_face_ccd(q.vertex_face(), o)
+                                    : edge_edge_ccd(q.edge_edge(), o);
+      ASSERT_EQ(pipeline.collides, reference->collides) << g.name() << " #" << i;
+    }
+  std::printf("[ wide     ] %d queries with coordinates in GMP, %d contacts\n", wide, contacts);
+  EXPECT_GT(wide, 1000);
+  EXPECT_GT(contacts, 20);
 }
 
 // The filter's sign of a wide polynomial over a bracket (Horner on the interval, then the
