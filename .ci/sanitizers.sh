@@ -43,8 +43,8 @@ echo "== libFuzzer: ${fuzz_seconds} s per harness"
 fuzz() {  # fuzz HARNESS: runs it, its log in build-san/fuzz/HARNESS/log.txt
   local out=build-san/fuzz/$1
   mkdir -p "$out/new"
-  # -timeout: one input running longer is a failure (the harnesses skip the inputs that are
-  # slow by design, fuzz_support.hpp kMaxExponentSpread).
+  # -timeout: one input running longer is a failure (every finite query is checked, the widest
+  # exponent spreads included: fuzz_support.hpp kMaxExponentSpread).
   if build-san/tests/fuzz/"$1"_fuzz -max_total_time="$fuzz_seconds" -timeout=60 \
       -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix="$out/" \
       "$out/new" tests/fuzz/corpus/"$1" >"$out/log.txt" 2>&1; then
