@@ -64,6 +64,18 @@ EXACTCCD_CERTIFIED bool segments_intersect_at(const Point& a0, const Point& a1,
          point_on_segment_at(b0, a0, a1, sign_at) || point_on_segment_at(b1, a0, a1, sign_at);
 }
 
+/// The projection the exact phase of the two functions below decides in: the first k whose
+/// normal sign is already known (normal[k] != 0), else the first whose exact sign s.normal(k) is
+/// non-zero (stored in normal[k]); -1 when every normal vanishes.
+template <class Signs>
+EXACTCCD_CERTIFIED int projection_with_nonzero_normal(int (&normal)[3], Signs& s) {
+  for (int k = 0; k < 3; ++k)
+    if (normal[k] != 0) return k;
+  for (int k = 0; k < 3; ++k)
+    if ((normal[k] = s.normal(k)) != 0) return k;
+  return -1;
+}
+
 /// Lemma 3 (a) with the orientations' signs asked for by index, known signs first. `s` gives,
 /// at the instant under test, for the normal n_k = O_k(a, b, c) (`normal`) and the edge
 /// orientations O_k(a, b, p), O_k(b, c, p), O_k(c, a, p) (`edge`, i = 0, 1, 2):
@@ -90,15 +102,8 @@ EXACTCCD_CERTIFIED int point_in_triangle_by_projections(Signs& s) {
     }
     if (inside) return 1;
   }
-  int k = 0;
-  while (k < 3 && normal[k] == 0) ++k;
-  if (k == 3) {
-    for (k = 0; k < 3; ++k) {
-      normal[k] = s.normal(k);
-      if (normal[k] != 0) break;
-    }
-    if (k == 3) return -1;
-  }
+  const int k = projection_with_nonzero_normal(normal, s);
+  if (k < 0) return -1;
   for (int i = 0; i < 3; ++i) {
     const int e = edge[k][i] != 0 ? edge[k][i] : s.edge(k, i);
     if (e == -normal[k]) return 0;
@@ -125,15 +130,8 @@ EXACTCCD_CERTIFIED int segments_intersect_by_projections(Signs& s) {
     if (o[2] != 0 && o[2] == o[3]) return 0;
     if (o[0] != 0 && o[1] == -o[0] && o[2] != 0 && o[3] == -o[2]) return 1;
   }
-  int k = 0;
-  while (k < 3 && normal[k] == 0) ++k;
-  if (k == 3) {
-    for (k = 0; k < 3; ++k) {
-      normal[k] = s.normal(k);
-      if (normal[k] != 0) break;
-    }
-    if (k == 3) return -1;
-  }
+  const int k = projection_with_nonzero_normal(normal, s);
+  if (k < 0) return -1;
   auto sign = [&](int i) { return edge[k][i] != 0 ? edge[k][i] : s.edge(k, i); };
   if (sign(0) * sign(1) > 0) return 0;
   return sign(2) * sign(3) <= 0 ? 1 : 0;
