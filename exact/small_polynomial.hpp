@@ -82,7 +82,8 @@ class SmallPolynomial final : public CubicAtDoubles {
   /// -c1 / (2 c2) (p = (2 c2 t + c1)^2 / (4 c2)). PROOF: proofs/exact_ccd.md#quadratic-discriminant
   SmallPolynomial double_root_factor() const;
   /// p(1 - u) as a polynomial in u (exact integers, GMP): near t = 1, where doubles in t are
-  /// 2^-53 apart, u = 1 - t is resolved down to 2^-1074. PROOF: proofs/exact_ccd.md#certain-signs-first
+  /// 2^-53 apart, u = 1 - t is resolved down to 2^-1074.
+  /// PROOF: proofs/exact_ccd.md#certain-signs-first
   SmallPolynomial reflected() const;
   std::array<mpz_class, 4> reflected_coefficients() const;
 

@@ -1,6 +1,7 @@
 // PROOF: proofs/exact_ccd.md#certain-signs-first
 #include "exact/wide_inclusion.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "core/predicates/inclusion.hpp"
@@ -26,7 +27,8 @@ SmallPolynomial without_common_power_of_two(mpz_class (&c)[3]) {
   return SmallPolynomial::from_mpz(c, 3);
 }
 
-/// O_k(x, y, z) = cross2(x, y) + cross2(y, z) + cross2(z, x). PROOF: proofs/exact_ccd.md#product-accumulator
+/// O_k(x, y, z) = cross2(x, y) + cross2(y, z) + cross2(z, x).
+/// PROOF: proofs/exact_ccd.md#product-accumulator
 std::array<Cross2Term, 3> orientation(int x, int y, int z) {
   return {Cross2Term{x, y, false}, Cross2Term{y, z, false}, Cross2Term{z, x, false}};
 }
@@ -92,7 +94,8 @@ const SmallPolynomial& WideInclusionPolynomials::polynomial(int slot) {
       const auto terms = orientation(1, 2, 3);  // a, b, c
       accumulated_cross2_coefficients(q_, k, terms.data(), 3, c);
     } else {
-      // cross2(a1 - a0, b1 - b0) = cross2(a1, b1) - cross2(a1, b0) - cross2(a0, b1) + cross2(a0, b0)
+      // cross2(a1 - a0, b1 - b0)
+      //   = cross2(a1, b1) - cross2(a1, b0) - cross2(a0, b1) + cross2(a0, b0)
       const Cross2Term terms[4] = {{1, 3, false}, {1, 2, true}, {0, 3, true}, {0, 2, false}};
       accumulated_cross2_coefficients(q_, k, terms, 4, c);
     }

@@ -366,7 +366,8 @@ TEST(CertainSignOn, NeverContradictsExactSigns) {
     const int bits = 400 + static_cast<int>(rng() % 2600);
     double a = unit(rng), b = unit(rng);
     if (a > b) std::swap(a, b);
-    if (rng() % 2 == 0) b = std::nextafter(a, 2.0) + (b - a) * std::ldexp(1.0, -static_cast<int>(rng() % 50));
+    if (rng() % 2 == 0)  // a short bracket
+      b = std::nextafter(a, 2.0) + (b - a) * std::ldexp(1.0, -static_cast<int>(rng() % 50));
     if (!(a < b && b <= 1)) continue;
     SmallPolynomial p;
     if (rng() % 2 == 0) {
@@ -374,7 +375,8 @@ TEST(CertainSignOn, NeverContradictsExactSigns) {
       for (auto& ci : c) ci = random_integer(rng, bits - static_cast<int>(rng() % 64));
       p = SmallPolynomial::from_mpz(c, 4);
     } else {  // a root just outside or inside [a, b]
-      const mpq_class r = mpq_class(b) + mpq_class(static_cast<long>(rng() % 5) - 2, mpz_class(1) << (60 + rng() % 60));
+      const mpq_class r = mpq_class(b) + mpq_class(static_cast<long>(rng() % 5) - 2,
+                                                   mpz_class(1) << (60 + rng() % 60));
       p = with_roots({r, mpq_class(static_cast<long>(rng() % 7), 3)}, random_integer(rng, bits));
     }
     const int s = p.certain_sign_on(a, b);

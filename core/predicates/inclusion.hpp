@@ -87,7 +87,8 @@ EXACTCCD_CERTIFIED int projection_with_nonzero_normal(int (&normal)[3], Signs& s
 /// one first, else the first exact non-zero) decides with exact signs where none is known.
 /// Returns 1 (p in the triangle), 0 (not), or -1 when n = 0 (a degenerate triangle: the caller
 /// decides by Lemma 3 (b), as point_in_triangle_at does). Any projection with n_k != 0 gives
-/// the exact answer, so the first that decides is right. PROOF: proofs/exact_ccd.md#certain-signs-first
+/// the exact answer, so the first that decides is right.
+/// PROOF: proofs/exact_ccd.md#certain-signs-first
 template <class Signs>
 EXACTCCD_CERTIFIED int point_in_triangle_by_projections(Signs& s) {
   int normal[3], edge[3][3] = {};
