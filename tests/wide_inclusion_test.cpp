@@ -349,7 +349,9 @@ TEST(WideContactTest, AgreesWithTheGeneralRouteOnWideGenerators) {
       ASSERT_EQ(pipeline.collides, reference->collides) << g.name() << " #" << i;
     }
   std::printf("[ wide     ] %d queries with coordinates in GMP, %d contacts\n", wide, contacts);
-  EXPECT_GT(wide, 1000);
+  // The +-300 and +-1000 spreads and the huge-against-subnormal generators leave the fixed
+  // widths: about 3 n queries in all, at any test scale.
+  EXPECT_GT(wide, static_cast<int>(2 * n));
   EXPECT_GT(contacts, 20);
 }
 
