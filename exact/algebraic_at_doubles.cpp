@@ -31,27 +31,10 @@ template <int N, int D>
 SmallPolynomial small(const predicates::FixedPoly<FixedInt<N>, D>& g, long bits) {
   return SmallPolynomial::from_fixed(g.c.data(), D + 1, bits);
 }
-/// The coefficients divided by their common power of two (a positive factor: the same signs
-/// and roots, which is all the stage asks of a polynomial). Wide exponent spreads leave
-/// hundreds of such trailing zero bits, which every product would carry.
-/// PROOF: proofs/exact_ccd.md#exact-at-double-brackets
-template <std::size_t N>
-std::array<mpz_class, N> without_power_of_two_content(const mpz_class* c, int count) {
-  std::array<mpz_class, N> out;
-  mp_bitcnt_t shift = ~mp_bitcnt_t(0);
-  for (int i = 0; i < count; ++i)
-    if (sgn(c[i]) != 0) shift = std::min(shift, mpz_scan1(c[i].get_mpz_t(), 0));
-  for (int i = 0; i < count; ++i) {
-    if (shift == ~mp_bitcnt_t(0)) out[static_cast<std::size_t>(i)] = c[i];
-    else mpz_tdiv_q_2exp(out[static_cast<std::size_t>(i)].get_mpz_t(), c[i].get_mpz_t(), shift);
-  }
-  return out;
-}
 
 template <int D>
 SmallPolynomial small(const predicates::FixedPoly<mpz_class, D>& g, long) {
-  return SmallPolynomial::from_mpz(
-      without_power_of_two_content<D + 1>(g.c.data(), D + 1).data(), D + 1);
+  return SmallPolynomial::from_mpz_without_power_of_two(g.c.data(), D + 1);
 }
 
 /// The same from TrimmedInteger coefficients: their common power of two is the least exponent.
@@ -223,11 +206,11 @@ SmallPolynomial cubic_of(const IntegerCoordinates& q, const IntegerQuery* known)
   if (limbs == 0) {
     if (known && known->coefficient_limbs() == 0) {
       const std::array<mpz_class, 4> c = known->coefficients();
-      return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c.data(), 4).data(), 4);
+      return SmallPolynomial::from_mpz_without_power_of_two(c.data(), 4);
     }
     mpz_class c[4];
     accumulated_coplanarity_coefficients(q, c);
-    return SmallPolynomial::from_mpz(without_power_of_two_content<4>(c, 4).data(), 4);
+    return SmallPolynomial::from_mpz_without_power_of_two(c, 4);
   }
   return with_limbs(limbs, [&](auto n) {
     FixedInt<decltype(n)::value> c[4];

@@ -281,14 +281,7 @@ std::optional<BracketedRoot> BracketedRoot::reflected(const SmallPolynomial* p_r
     const int s_lo = p_reflected->sign_at(u_lo), s_hi = p_reflected->sign_at(u_hi);
     if (s_lo == 0 || s_hi != -s_lo) return std::nullopt;
     int s[4];
-    const int n = p_reflected->bernstein_signs(u_lo, u_hi, s);
-    int changes = 0, last = 0;
-    for (int i = 0; i < n; ++i) {
-      if (s[i] == 0) continue;
-      if (last != 0 && s[i] != last) ++changes;
-      last = s[i];
-    }
-    if (changes != 1) return std::nullopt;
+    if (variations(s, p_reflected->bernstein_signs(u_lo, u_hi, s)) != 1) return std::nullopt;
     return BracketedRoot(p_reflected, u_lo, u_hi, s_lo);
   }
   if (is_exact()) return BracketedRoot::at(p_reflected, 1.0 - lo_);

@@ -45,11 +45,13 @@ inline Dyadic dyadic(double x) {
   return {(bits >> 63) != 0 ? -signed_m : signed_m, e + zeros};
 }
 
-/// The bits of |mantissa| (1 to 53).
-inline int mantissa_bits(std::int64_t m) {
-  const std::uint64_t a = m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
-  return 64 - __builtin_clzll(a);
+/// |m| as an unsigned integer (exact for every int64, the most negative included).
+inline std::uint64_t magnitude_of(std::int64_t m) {
+  return m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
 }
+
+/// The bits of |mantissa| (1 to 53).
+inline int mantissa_bits(std::int64_t m) { return 64 - __builtin_clzll(magnitude_of(m)); }
 
 /// A query's coordinates as integers: every input double is X 2^E with the integer
 /// X = mantissa 2^(exponent - E), and |X| < 2^bits.

@@ -1,8 +1,7 @@
 #include "exact/integer_query.hpp"
 
-#include "exact/product_accumulator.hpp"
-
 #include "exact/fixed_width_dispatch.hpp"
+#include "exact/product_accumulator.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -95,8 +94,8 @@ void IntegerQuery::compute_coefficients() {
   if (coefficient_limbs_ == 0) {
     ++g_gmp_computations;
     gmp_.emplace();
-    // GMP requested: the plain reference; beyond the fixed widths, for wide coordinates:
-    // without their trailing zero bits (the same integers).
+    // GMP requested: the plain reference; beyond the fixed widths: sums of mantissa products
+    // (exact/product_accumulator.hpp, the same integers).
     if (arithmetic_ == Arithmetic::fixed_first)
       accumulated_coplanarity_coefficients(coords_, gmp_->c);
     else

@@ -11,10 +11,6 @@ namespace {
 
 using u128 = unsigned __int128;
 
-std::uint64_t magnitude(std::int64_t m) {
-  return m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
-}
-
 }  // namespace
 
 ProductAccumulator::ProductAccumulator(int limbs) : limbs_(limbs) {
@@ -59,7 +55,7 @@ void ProductAccumulator::add_at(std::uint64_t (&sum)[kMaxLimbs], const std::uint
 void ProductAccumulator::add_product(std::int64_t m1, std::int64_t m2, unsigned long s,
                                      bool negative) {
   if (m1 == 0 || m2 == 0) return;
-  const u128 p = static_cast<u128>(magnitude(m1)) * magnitude(m2);
+  const u128 p = static_cast<u128>(magnitude_of(m1)) * magnitude_of(m2);
   const std::uint64_t v[3] = {static_cast<std::uint64_t>(p), static_cast<std::uint64_t>(p >> 64),
                               0};
   const bool minus = negative != ((m1 < 0) != (m2 < 0));
@@ -69,8 +65,8 @@ void ProductAccumulator::add_product(std::int64_t m1, std::int64_t m2, unsigned 
 void ProductAccumulator::add_product(std::int64_t m1, std::int64_t m2, std::int64_t m3,
                                      unsigned long s, bool negative) {
   if (m1 == 0 || m2 == 0 || m3 == 0) return;
-  const u128 p = static_cast<u128>(magnitude(m1)) * magnitude(m2);
-  const std::uint64_t c = magnitude(m3);
+  const u128 p = static_cast<u128>(magnitude_of(m1)) * magnitude_of(m2);
+  const std::uint64_t c = magnitude_of(m3);
   const u128 low = static_cast<u128>(static_cast<std::uint64_t>(p)) * c;
   const u128 high = static_cast<u128>(static_cast<std::uint64_t>(p >> 64)) * c + (low >> 64);
   const std::uint64_t v[3] = {static_cast<std::uint64_t>(low), static_cast<std::uint64_t>(high),

@@ -33,11 +33,6 @@ Int scaled_value(const Int* c, int d, const Time& T, unsigned k) {
   return r;
 }
 
-/// The signs of the Bernstein coefficients of p (degree d) on [A 2^-K, (A + H) 2^-K]: the
-/// Taylor shift q(s) = 2^(d K) p((A + H s) 2^-K) by Horner's rule over polynomials in s, then
-/// M b_j = sum_i M C(j, i) / C(d, i) q_i with M = lcm_i C(d, i) (3, 2, 1, 1 for d = 3, 2, 1, 0).
-/// In place: q[j] is updated before q[j - 1], which it reads.
-/// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
 /// A GMP factor held as odd * 2^shift: a double's mantissa scaled to a common exponent carries
 /// up to 1,126 zero bits that a plain product would multiply limb by limb.
 struct ShiftedFactor {
@@ -68,6 +63,11 @@ inline void add_product_by(Int& out, const Int& a, const Int& f) {
   add_product(out, a, f);
 }
 
+/// The signs of the Bernstein coefficients of p (degree d) on [A 2^-K, (A + H) 2^-K]: the
+/// Taylor shift q(s) = 2^(d K) p((A + H s) 2^-K) by Horner's rule over polynomials in s, then
+/// M b_j = sum_i M C(j, i) / C(d, i) q_i with M = lcm_i C(d, i) (3, 2, 1, 1 for d = 3, 2, 1, 0).
+/// In place: q[j] is updated before q[j - 1], which it reads.
+/// PROOF: proofs/exact_ccd.md#small-polynomial-bounds
 template <class Int, class Factor>
 void bernstein_signs_of(const Int* c, int d, const Factor& A, const Factor& H, unsigned K,
                         int (&signs)[4]) {
@@ -151,6 +151,17 @@ SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count) {
   return from_mpz(c, count, nullptr);
 }
 
+SmallPolynomial SmallPolynomial::from_mpz_without_power_of_two(const mpz_class* c, int count) {
+  mp_bitcnt_t shift = ~mp_bitcnt_t(0);
+  for (int i = 0; i < count; ++i)
+    if (sgn(c[i]) != 0) shift = std::min(shift, mpz_scan1(c[i].get_mpz_t(), 0));
+  if (shift == ~mp_bitcnt_t(0) || shift == 0) return from_mpz(c, count);
+  mpz_class out[4];
+  for (int i = 0; i < count; ++i)
+    mpz_tdiv_q_2exp(out[i].get_mpz_t(), c[i].get_mpz_t(), shift);  // exact: those bits are 0
+  return from_mpz(out, count);
+}
+
 SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count,
                                           const SmallPolynomial* reflection) {
   ++g_gmp_steps;
@@ -219,6 +230,15 @@ const WideInterval* SmallPolynomial::wide_coefficients_for(double* t) const {
   return wide_c_;
 }
 
+const WideInterval* SmallPolynomial::wide_coefficients_on(double* a, double* b) const {
+  if (wide_reflected_ && *a >= 0.5 && *b <= 1.0) {
+    const double u_lo = 1.0 - *b, u_hi = 1.0 - *a;  // exact (Sterbenz)
+    *a = u_lo, *b = u_hi;
+    return wide_reflected_c_;
+  }
+  return wide_c_;
+}
+
 WideInterval SmallPolynomial::wide_value_at(double t) const {
   // Times are in [0, 1] (t >= 0): each Horner step scales by a non-negative point.
   const WideInterval* c = wide_coefficients_for(&t);
@@ -282,14 +302,10 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
     // The Taylor shift q(s) = p(a + h s), h = b - a enclosed, by Horner's rule over polynomials
     // in s; then the Bernstein coefficients times lcm C(d, i), as in the exact evaluation.
-    // On [a, b] within [1/2, 1]: p(1 - u)'s on [1 - b, 1 - a] (both ends exact), whose
-    // Bernstein coefficients are p's in reverse order (t = 1 - u reverses the interval).
-    const bool reflect = wide_reflected_ && a >= 0.5;
-    const WideInterval* c = reflect ? wide_reflected_c_ : wide_c_;
-    if (reflect) {
-      const double u_lo = 1.0 - b, u_hi = 1.0 - a;
-      a = u_lo, b = u_hi;
-    }
+    // Within [1/2, 1]: p(1 - u)'s Bernstein coefficients on [1 - b, 1 - a], which are p's in
+    // reverse order (t = 1 - u reverses the interval).
+    const WideInterval* c = wide_coefficients_on(&a, &b);
+    const bool reflect = c == wide_reflected_c_;
     const WideInterval A{a, a};
     const WideInterval H{-(static_cast<long double>(a) - b), static_cast<long double>(b) - a};
     const int d = degree_;
@@ -340,11 +356,7 @@ int SmallPolynomial::certain_sign_on(double a, double b) const {
   {
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
     double t_lo = a, t_hi = b;
-    const WideInterval* c = wide_c_;
-    if (wide_reflected_ && a >= 0.5) {  // p(1 - u) on [1 - b, 1 - a], exact ends
-      c = wide_reflected_c_;
-      t_lo = 1.0 - b, t_hi = 1.0 - a;
-    }
+    const WideInterval* c = wide_coefficients_on(&t_lo, &t_hi);
     WideInterval r = c[degree_];
     for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, t_lo, t_hi) + c[i];
     lo = r.lo;
@@ -429,8 +441,7 @@ int SmallPolynomial::bernstein_signs(double a, double b, int (&signs)[4]) const 
         da.mantissa == 0 ? mpz_class(0) : scaled_integer<mpz_class>(da.mantissa, shift_a);
     const mpz_class H = scaled_integer<mpz_class>(db.mantissa, shift_b) - A;
     bernstein_signs_of(gmp_coefficients(&converted), degree_, ShiftedFactor(A), ShiftedFactor(H),
-                       static_cast<unsigned>(K),
-                       signs);
+                       static_cast<unsigned>(K), signs);
     return degree_ + 1;
   }
   with_limbs(limbs, [&](auto n) {

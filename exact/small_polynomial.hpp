@@ -49,6 +49,11 @@ class SmallPolynomial final : public CubicAtDoubles {
   template <int N>
   static SmallPolynomial from_fixed(const FixedInt<N>* c, int count, long bits);
   static SmallPolynomial from_mpz(const mpz_class* c, int count);
+  /// The same with the coefficients divided by their common power of two (a positive factor:
+  /// the same signs and roots, which is all the exact stage asks of a polynomial). Wide
+  /// exponent spreads leave hundreds of such trailing zero bits, which every product would
+  /// carry. PROOF: proofs/exact_ccd.md#exact-at-double-brackets
+  static SmallPolynomial from_mpz_without_power_of_two(const mpz_class* c, int count);
 
   int degree() const { return degree_; }  ///< -1 for the zero polynomial
   bool is_zero() const { return degree_ < 0; }
@@ -123,6 +128,9 @@ class SmallPolynomial final : public CubicAtDoubles {
   /// The enclosures to evaluate at the time t in [0, 1]: p's at t, or for t >= 1/2 (when held)
   /// p(1 - u)'s at u = 1 - t (exact).
   const WideInterval* wide_coefficients_for(double* t) const;
+  /// The same for an interval [a, b] in [0, 1]: within [1/2, 1] (when held) p(1 - u)'s on
+  /// [1 - b, 1 - a], both ends exact.
+  const WideInterval* wide_coefficients_on(double* a, double* b) const;
 #endif
   bool filtered_bernstein_signs(double a, double b, int (&signs)[4]) const;
 

@@ -2,9 +2,11 @@
 // coordinate are not stored. A query's doubles become integers over their common power of two,
 // so a coordinate of exponent 2,000 above the smallest is a 53-bit mantissa followed by 2,000
 // zero bits; an mpz multiplies all of them, M 2^e multiplies the 53. Sums align on the smaller
-// exponent (dense only over the spread of their operands). The exact stage at double brackets
-// forms the coplanarity cubic and the inclusion polynomials with it where the coordinates
-// exceed the fixed widths, then converts them to mpz.
+// exponent (dense only over the spread of their operands). The general route of the exact stage
+// at double brackets (degenerate triangles, parallel edges, motion coplanar throughout) forms
+// its inclusion polynomials with it where the coordinates span more than 1,024 bits, then
+// converts them to mpz; the cubic and the contact orientations at roots come from the product
+// accumulator (exact/product_accumulator.hpp).
 // PROOF: proofs/exact_ccd.md#trimmed-integers
 #pragma once
 
@@ -66,9 +68,7 @@ class TrimmedInteger {
 
  private:
   static mpz_class mpz_from_i64(std::int64_t m) {
-    const std::uint64_t a =
-        m < 0 ? 0 - static_cast<std::uint64_t>(m) : static_cast<std::uint64_t>(m);
-    mpz_class z = mpz_from_u64(a);
+    mpz_class z = mpz_from_u64(magnitude_of(m));
     return m < 0 ? mpz_class(-z) : z;
   }
   /// this += (or -=) x 2^f.
@@ -123,21 +123,13 @@ struct ScaledInteger<TrimmedInteger> {
 
 /// Coordinates of more bits than this are formed in TrimmedInteger, fewer in plain mpz_class:
 /// under it the zero limbs a coordinate carries are too few to pay for the alignments and
-/// trims (callgrind on the stage: exponents within +-300, about 650 bits, 0.89x in plain mpz;
-/// within +-1000, about 2,100 bits, 0.92x in TrimmedInteger). A speed setting only: both
-/// compute the same integers.
+/// trims (callgrind on the stage when it formed everything this way: exponents within +-300,
+/// about 650 bits, 0.89x in plain mpz; within +-1000, about 2,100 bits, 0.92x in
+/// TrimmedInteger). A speed setting only: both compute the same integers.
 constexpr int kTrimmedCoordinateBits = 1024;
 
 inline bool prefers_trimmed_integers(const IntegerCoordinates& q) {
   return q.bits > kTrimmedCoordinateBits;
-}
-
-/// The coplanarity cubic's coefficients (exact/integer_cubic.hpp, the same template) formed in
-/// TrimmedInteger: the same integers as with mpz_class throughout.
-inline void trimmed_coplanarity_coefficients(const IntegerCoordinates& q, mpz_class (&c)[4]) {
-  TrimmedInteger t[4];
-  coplanarity_coefficients(q, t);
-  for (int i = 0; i < 4; ++i) c[i] = t[i].to_mpz();
 }
 
 }  // namespace exactccd::exact

@@ -1,7 +1,6 @@
 // PROOF: proofs/exact_ccd.md#certain-signs-first
 #include "exact/wide_inclusion.hpp"
 
-#include <algorithm>
 #include <array>
 
 #include "core/predicates/inclusion.hpp"
@@ -16,16 +15,6 @@ namespace {
 /// only when a sign is still unknown. Speed settings only.
 constexpr int kFirstNarrowingSteps = 24;
 constexpr int kFullNarrowingSteps = 80;
-
-/// The coefficients divided by their common power of two (a positive factor).
-SmallPolynomial without_common_power_of_two(mpz_class (&c)[3]) {
-  mp_bitcnt_t shift = ~mp_bitcnt_t(0);
-  for (const mpz_class& ci : c)
-    if (sgn(ci) != 0) shift = std::min(shift, mpz_scan1(ci.get_mpz_t(), 0));
-  if (shift != ~mp_bitcnt_t(0) && shift != 0)
-    for (mpz_class& ci : c) mpz_tdiv_q_2exp(ci.get_mpz_t(), ci.get_mpz_t(), shift);  // exact
-  return SmallPolynomial::from_mpz(c, 3);
-}
 
 /// O_k(x, y, z) = cross2(x, y) + cross2(y, z) + cross2(z, x).
 /// PROOF: proofs/exact_ccd.md#product-accumulator
@@ -42,8 +31,8 @@ class CertainSigns {
     narrow(kFirstNarrowingSteps);
   }
   // Lemma 3 / 4 signs by index (core/predicates/inclusion.hpp).
-  int certain_normal(int k) { return certain(k); }
-  int certain_edge(int k, int i) { return certain(3 + 4 * k + i); }
+  int certain_normal(int k) { return certain(WideInclusionPolynomials::normal_slot(k)); }
+  int certain_edge(int k, int i) { return certain(WideInclusionPolynomials::edge_slot(k, i)); }
   int normal(int k) { return r_.sign_of(polynomials_.normal(k)); }
   int edge(int k, int i) { return r_.sign_of(polynomials_.edge(k, i)); }
 
@@ -109,7 +98,7 @@ const SmallPolynomial& WideInclusionPolynomials::polynomial(int slot) {
     const auto terms = orientation(rows[0], rows[1], rows[2]);
     accumulated_cross2_coefficients(q_, k, terms.data(), 3, c);
   }
-  p = without_common_power_of_two(c);
+  p = SmallPolynomial::from_mpz_without_power_of_two(c, 3);
   return *p;
 }
 

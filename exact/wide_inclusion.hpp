@@ -19,7 +19,7 @@
 namespace exactccd::exact {
 
 /// The orientations of Lemmas 3 and 4 as polynomials in t, each formed when first asked for,
-/// with its reflection p(1 - u). Vertex-face (rows p, a, b, c): normal(k) = O_k(a, b, c),
+/// and its reflection p(1 - u) when first asked for. Vertex-face (rows p, a, b, c): normal(k) = O_k(a, b, c),
 /// edge(k, i) = O_k(a, b, p), O_k(b, c, p), O_k(c, a, p). Edge-edge (rows a0, a1, b0, b1):
 /// normal(k) = ((a1 - a0) x (b1 - b0))_k, edge(k, i) = O_k(a0, a1, b0), O_k(a0, a1, b1),
 /// O_k(b0, b1, a0), O_k(b0, b1, a1). Positive multiples (common powers of two removed): the
@@ -28,11 +28,12 @@ class WideInclusionPolynomials {
  public:
   explicit WideInclusionPolynomials(const IntegerCoordinates& q) : q_(q) {}
   const IntegerCoordinates& coordinates() const { return q_; }
-  const SmallPolynomial& normal(int k) { return polynomial(k); }
-  const SmallPolynomial& edge(int k, int i) { return polynomial(3 + 4 * k + i); }
-  const SmallPolynomial& reflected_normal(int k) { return reflected(k); }
-  const SmallPolynomial& reflected_edge(int k, int i) { return reflected(3 + 4 * k + i); }
-  /// By slot: normal k at k, edge (k, i) at 3 + 4 k + i.
+  /// Slots: normal k at k, edge (k, i) at 3 + 4 k + i.
+  static constexpr int normal_slot(int k) { return k; }
+  static constexpr int edge_slot(int k, int i) { return 3 + 4 * k + i; }
+  const SmallPolynomial& normal(int k) { return polynomial(normal_slot(k)); }
+  const SmallPolynomial& edge(int k, int i) { return polynomial(edge_slot(k, i)); }
+  const SmallPolynomial& reflected_edge(int k, int i) { return reflected(edge_slot(k, i)); }
   const SmallPolynomial& polynomial(int slot);
   const SmallPolynomial& reflected(int slot);
 
