@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "corpus/simulation_queries.hpp"
-#include "exact/rational.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 

@@ -5,7 +5,7 @@
 // The "per_query" and "per_bracket" counters are seconds per query / per bracket (shown in
 // the time unit of the table).
 //
-// kernels/...: the integer kernels of the exact stage at double times (exact/integer_cubic.hpp)
+// kernels/...: the integer kernels of the exact stage at double times (exact/stages/integer_cubic.hpp)
 // on the sample and scene queries that reach that stage, per query: the cubic's coefficients,
 // one exact value at a double time, one contact test; in the stack integers the library uses
 // (FixedInt, width chosen from the proven bounds), in GMP (the same templates with mpz_class)
@@ -30,10 +30,10 @@
 #include <vector>
 
 #include "corpus/random_queries.hpp"
-#include "exact/integer_bounds.hpp"
-#include "exact/integer_cubic.hpp"
-#include "exact/integer_query.hpp"
-#include "exact/rational.hpp"
+#include "exact/arithmetic/integer_bounds.hpp"
+#include "exact/stages/integer_cubic.hpp"
+#include "exact/stages/integer_query.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "filters/ccd_filters.hpp"
 

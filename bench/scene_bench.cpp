@@ -30,7 +30,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "bench/scenes/meshes.hpp"
+#include "corpus/meshes.hpp"
 #include "corpus/broad_phase.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/scene.hpp"

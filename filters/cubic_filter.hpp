@@ -30,7 +30,7 @@ struct FilterOutcome {
 };
 
 /// Exact answers at double times, consulted only where the interval tests cannot decide
-/// (the default path implements it with exact integer arithmetic, exact/integer_query.hpp).
+/// (the default path implements it with exact integer arithmetic, exact/stages/integer_query.hpp).
 /// Must not depend on the rounding mode.
 class ExactAtDoubles {
  public:

@@ -6,7 +6,7 @@
 // integers, the positions at t = m 2^e computed exactly as integers (scaled by 2^-e), and the
 // one polynomial asked for evaluated on them. Every region polynomial is homogeneous in the
 // coordinates and delta, so the common positive scale changes no sign. The kernels run in
-// fixed-width integers chosen from proven bounds (exact/separation_integers.hpp: no
+// fixed-width integers chosen from proven bounds (exact/stages/separation_integers.hpp: no
 // allocation); the others, and the kernels beyond the widest fixed width, in GMP (allocates).
 // PROOF: proofs/min_separation.md#interval-search
 // PROOF: proofs/min_separation.md#fixed-width-signs
@@ -21,7 +21,7 @@
 #include <optional>
 
 #include "core/predicates/motion.hpp"
-#include "exact/separation_integers.hpp"
+#include "exact/stages/separation_integers.hpp"
 #include "filters/double_double.hpp"
 #include "filters/double_double_bounds.hpp"
 #include "filters/interval.hpp"
@@ -157,7 +157,7 @@ class ExactSignsAtDoubles {
   int kernel_sign(const IntegerKernel& kernel, double t) const;
   /// A kernel's polynomial from its differences at a time, in the number type T: double (a
   /// guess's value) or double-double with an error bound (dd::Bounded, a certified sign). The
-  /// same expressions as exact/separation_integers.hpp's kernels.
+  /// same expressions as exact/stages/separation_integers.hpp's kernels.
   template <class T>
   static T kernel_expression(KernelKind kind, const T (&d)[3][3], const T& delta2) {
     switch (kind) {

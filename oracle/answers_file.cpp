@@ -1,6 +1,6 @@
 #include "oracle/answers_file.hpp"
 
-#include "core/src/trim.hpp"
+#include "pipeline/trim.hpp"
 #include "exactccd/query_file.hpp"
 #include "oracle/common.hpp"
 

@@ -1,6 +1,6 @@
 #include "oracle/exact_doubles.hpp"
 
-#include "exact/rational.hpp"
+#include "exact/arithmetic/rational.hpp"
 
 namespace exactccd::oracle {
 

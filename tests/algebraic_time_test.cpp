@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "exact/algebraic_time.hpp"
-#include "exact/root_isolation.hpp"
+#include "exact/polynomials/algebraic_time.hpp"
+#include "exact/polynomials/root_isolation.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // functions through counters as well, then checks that every query decided by Stage::culling or
 // Stage::filter allocated nothing. The exact stages at double times (filter_exact_toi,
 // exact_at_double) allocate nothing either when all their computations fit the fixed-size
-// integers (exact/integer_query.hpp counts those that needed GMP). The rational exact path does
+// integers (exact/stages/integer_query.hpp counts those that needed GMP). The rational exact path does
 // allocate (GMP numbers, polynomials): its counts are reported, and a test asserts that it is
 // seen allocating, which proves the counters see the library's allocations.
 #include <gmp.h>
@@ -23,10 +23,10 @@
 
 #include "corpus/random_queries.hpp"
 #include "corpus/rigid_queries.hpp"
-#include "exact/exact_ccd.hpp"
-#include "exact/integer_query.hpp"
-#include "exact/rational.hpp"
-#include "exact/small_polynomial.hpp"
+#include "exact/reference/exact_ccd.hpp"
+#include "exact/stages/integer_query.hpp"
+#include "exact/arithmetic/rational.hpp"
+#include "exact/polynomials/small_polynomial.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rigid.hpp"
 #include "filters/separation_exact_signs.hpp"

@@ -21,8 +21,8 @@
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "corpus/random_queries.hpp"
-#include "exact/integer_query.hpp"
-#include "exact/root_isolation.hpp"
+#include "exact/stages/integer_query.hpp"
+#include "exact/polynomials/root_isolation.hpp"
 
 namespace exactccd::test {
 

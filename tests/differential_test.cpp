@@ -22,7 +22,7 @@
 
 #include "corpus/random_queries.hpp"
 #include "corpus/simulation_queries.hpp"
-#include "exact/rational.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "tests/test_scale.hpp"
 

@@ -1,5 +1,5 @@
 // The discrete baseline (exactccd/discrete.hpp) and its exact closed-triangle test
-// (exact/triangle_intersection.hpp).
+// (exact/reference/triangle_intersection.hpp).
 //
 // (a) triangles_intersect: hand-built cases whose answers follow from the geometry (crossing,
 //     touching at a vertex or an edge point, coplanar overlap and separation, one-ulp gaps,
@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "exact/triangle_intersection.hpp"
+#include "exact/reference/triangle_intersection.hpp"
 #include "exactccd/discrete.hpp"
 #include "exactccd/rational_query.hpp"
 #include "exactccd/scene.hpp"

@@ -1,7 +1,7 @@
 // Unit tests of the exact arithmetic under the exact path: rational polynomials
-// (exact/polynomial.hpp), real root isolation (exact/root_isolation.hpp), signs at algebraic
-// times (exact/algebraic_time.hpp) and the exact relation of rationals to doubles
-// (exact/rational.hpp). Expected values are worked out by hand in the comments.
+// (exact/polynomials/polynomial.hpp), real root isolation (exact/polynomials/root_isolation.hpp), signs at algebraic
+// times (exact/polynomials/algebraic_time.hpp) and the exact relation of rationals to doubles
+// (exact/arithmetic/rational.hpp). Expected values are worked out by hand in the comments.
 #include <gtest/gtest.h>
 
 #include <cfloat>
@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "exact/algebraic_time.hpp"
-#include "exact/polynomial.hpp"
-#include "exact/rational.hpp"
-#include "exact/root_isolation.hpp"
+#include "exact/polynomials/algebraic_time.hpp"
+#include "exact/polynomials/polynomial.hpp"
+#include "exact/arithmetic/rational.hpp"
+#include "exact/polynomials/root_isolation.hpp"
 
 namespace exactccd::exact {
 namespace {

@@ -1,4 +1,4 @@
-// Differential tests of the exact stage at double times (exact/integer_query.hpp): the
+// Differential tests of the exact stage at double times (exact/stages/integer_query.hpp): the
 // fixed-size instantiation of the integer kernels against the same templates instantiated with
 // mpz_class (IntegerQuery::Arithmetic::gmp, the reference), against the exact rational
 // evaluation of the predicate templates, and the whole default path against Mode::exact.
@@ -26,7 +26,7 @@
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "corpus/random_queries.hpp"
-#include "exact/integer_query.hpp"
+#include "exact/stages/integer_query.hpp"
 #include "tests/test_scale.hpp"
 
 namespace exactccd::test {

@@ -1,6 +1,6 @@
-// The exact stage at double brackets (exact/algebraic_at_doubles.hpp: integer Bernstein
+// The exact stage at double brackets (exact/stages/algebraic_at_doubles.hpp: integer Bernstein
 // coefficients, common factors, dyadic refinement) against the rational path it replaced and
-// keeps as the reference (exact/exact_ccd.hpp: GMP rationals and Sturm sequences), called
+// keeps as the reference (exact/reference/exact_ccd.hpp: GMP rationals and Sturm sequences), called
 // directly, below the public API: the same verdict and the identical tightest TOI pair, and a
 // coarse toi_width enclosure holding the reference's contact time, with t_max < 1 on one query
 // in four. Random and adversarial generators (corpus/random_queries.hpp, every family and
@@ -19,8 +19,8 @@
 #include <string>
 
 #include "corpus/random_queries.hpp"
-#include "exact/algebraic_at_doubles.hpp"
-#include "exact/exact_ccd.hpp"
+#include "exact/stages/algebraic_at_doubles.hpp"
+#include "exact/reference/exact_ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "test_support.hpp"
 

@@ -13,7 +13,7 @@
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "corpus/random_queries.hpp"
-#include "exact/integer_query.hpp"
+#include "exact/stages/integer_query.hpp"
 #include "filters/cubic_filter.hpp"
 #include "filters/interval.hpp"
 #include "fixed_int_support.hpp"

@@ -9,7 +9,7 @@
 #include <random>
 
 #include "core/predicates/coplanarity_cubic.hpp"
-#include "exact/integer_query.hpp"
+#include "exact/stages/integer_query.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/rational_query.hpp"
 #include "filters/ccd_filters.hpp"

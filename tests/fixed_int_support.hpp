@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "exact/fixed_int.hpp"
+#include "exact/arithmetic/fixed_int.hpp"
 
 namespace exactccd::test {
 

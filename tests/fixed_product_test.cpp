@@ -8,8 +8,8 @@
 #include <random>
 #include <string>
 
-#include "exact/fixed_int.hpp"
-#include "exact/integer_arithmetic.hpp"
+#include "exact/arithmetic/fixed_int.hpp"
+#include "exact/arithmetic/integer_arithmetic.hpp"
 #include "test_support.hpp"
 #include "fixed_int_support.hpp"
 

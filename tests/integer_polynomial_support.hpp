@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "exact/small_polynomial.hpp"
+#include "exact/polynomials/small_polynomial.hpp"
 
 namespace exactccd::test {
 

@@ -1,4 +1,4 @@
-// Exact power-of-two normalisation before the filters (core/src/power_of_two_scaling.hpp):
+// Exact power-of-two normalisation before the filters (pipeline/power_of_two_scaling.hpp):
 //  - the normalising exponent: none for data near unit scale or when scaling would lose a bit,
 //    else the one bringing the largest |coordinate| into [1/2, 1), exactly;
 //  - magnitude independence: every sample query scaled (exactly) by 2^k, k in [-1000, 1000],
@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "core/predicates/double_bits.hpp"
-#include "core/src/power_of_two_scaling.hpp"
+#include "pipeline/power_of_two_scaling.hpp"
 #include "corpus/random_queries.hpp"
-#include "exact/rational.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "tests/test_support.hpp"
 
 namespace exactccd::test {

@@ -15,10 +15,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "exact/exact_ccd.hpp"
+#include "exact/reference/exact_ccd.hpp"
 #include "core/predicates/separation.hpp"
-#include "exact/earliest_contact.hpp"
-#include "exact/min_separation.hpp"
+#include "exact/reference/earliest_contact.hpp"
+#include "exact/reference/min_separation.hpp"
 #include "filters/separation_exact_signs.hpp"
 #include "filters/separation_filter.hpp"
 #include "exactccd/ccd.hpp"

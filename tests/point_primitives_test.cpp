@@ -1,4 +1,4 @@
-// Point-edge and point-point CCD (core/src/point_ccd.cpp), thin reductions to edge_edge_ccd with
+// Point-edge and point-point CCD (pipeline/point_ccd.cpp), thin reductions to edge_edge_ccd with
 // zero-length segments: the same results as the explicit reduction in every mode, and, as
 // independent checks, the same verdict and tightest TOI as a different reduction on the rational
 // exact path (a degenerate triangle), as the closed form of point-point contact (per-axis linear

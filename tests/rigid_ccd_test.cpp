@@ -17,7 +17,7 @@
 
 #include "corpus/rigid_exact_pose.hpp"
 #include "corpus/rigid_queries.hpp"
-#include "exact/rigid_ccd.hpp"
+#include "exact/reference/rigid_ccd.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/rigid.hpp"
 #include "sample_double_queries.hpp"

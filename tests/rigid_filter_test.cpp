@@ -16,8 +16,8 @@
 
 #include "core/predicates/rigid_coplanarity.hpp"
 #include "corpus/rigid_queries.hpp"
-#include "exact/rigid_ccd.hpp"
-#include "exact/stack_dyadic.hpp"
+#include "exact/reference/rigid_ccd.hpp"
+#include "exact/arithmetic/stack_dyadic.hpp"
 #include "exactccd/rigid.hpp"
 #include "filters/extended_interval.hpp"
 #include "filters/interval.hpp"

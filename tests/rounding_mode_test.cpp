@@ -26,7 +26,7 @@
 
 #include "core/predicates/fp_environment.hpp"
 #include "corpus/random_queries.hpp"
-#include "exact/rational.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "exactccd/query_file.hpp"
 #include "filters/coplanarity_semistatic.hpp"
 #include "tests/sample_double_queries.hpp"

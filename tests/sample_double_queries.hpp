@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "corpus/random_queries.hpp"
-#include "exact/rational.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "exactccd/query_file.hpp"
 
 namespace exactccd::test {

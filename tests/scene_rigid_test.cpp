@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "core/src/scene/rigid_boxes.hpp"
-#include "core/src/scene/rigid_cylinder_ranges.hpp"
+#include "pipeline/scene/rigid_boxes.hpp"
+#include "pipeline/scene/rigid_cylinder_ranges.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/rigid.hpp"
 #include "exactccd/scene.hpp"
@@ -649,7 +649,7 @@ TEST(SceneRigid, BadInputThrows) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// 3. The arc boxes (core/src/scene/rigid_boxes.hpp) hold the exact positions
+// 3. The arc boxes (pipeline/scene/rigid_boxes.hpp) hold the exact positions
 
 using Q3 = std::array<mpq_class, 3>;
 

@@ -1,6 +1,6 @@
 // The fixed-width exact values at double times of the minimum-separation region polynomial 0,
 // the capsules' sides, the end spheres and the sides' projections
-// (exact/separation_integers.hpp) against GMP and the rationals:
+// (exact/stages/separation_integers.hpp) against GMP and the rationals:
 //  - every FixedInt width at least the one its bound selects gives the same integer as the same
 //    kernel in GMP, and that integer is 2^(d(k-E)) times the polynomial of
 //    core/predicates/separation.hpp (degree d) evaluated over the rationals at the same time;
@@ -21,8 +21,8 @@
 #include <string>
 
 #include "core/predicates/separation.hpp"
-#include "exact/integer_arithmetic.hpp"
-#include "exact/separation_integers.hpp"
+#include "exact/arithmetic/integer_arithmetic.hpp"
+#include "exact/stages/separation_integers.hpp"
 #include "filters/separation_exact_signs.hpp"
 #include "separation_rational.hpp"
 #include "test_scale.hpp"

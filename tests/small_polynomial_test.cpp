@@ -1,5 +1,5 @@
-// The integer polynomials of the exact stage at double brackets (exact/small_polynomial.hpp)
-// and their bracketed roots (exact/bracketed_root.hpp), against rational arithmetic written
+// The integer polynomials of the exact stage at double brackets (exact/polynomials/small_polynomial.hpp)
+// and their bracketed roots (exact/polynomials/bracketed_root.hpp), against rational arithmetic written
 // here independently (GMP mpq: direct evaluation, Taylor shift by composition, the Bernstein
 // coefficients from their definition, roots known from the construction).
 // PROOF: proofs/exact_ccd.md#small-polynomial-bounds
@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "core/predicates/fp_environment.hpp"
-#include "exact/bracketed_root.hpp"
-#include "exact/integer_cubic.hpp"
-#include "exact/root_isolation.hpp"
-#include "exact/small_polynomial.hpp"
+#include "exact/polynomials/bracketed_root.hpp"
+#include "exact/stages/integer_cubic.hpp"
+#include "exact/polynomials/root_isolation.hpp"
+#include "exact/polynomials/small_polynomial.hpp"
 #include "integer_polynomial_support.hpp"
 #include "test_scale.hpp"
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "exact/rational.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rational_query.hpp"

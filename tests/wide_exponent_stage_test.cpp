@@ -1,8 +1,8 @@
 // The exact stage's steps for widely spread exponents, against exact integer arithmetic written
 // here or GMP: the sign of an integer polynomial at a quadratic irrational from enclosures
-// (exact/interval_sign_at_irrational.hpp), the square-free test by a residue of the
-// discriminant (exact/small_polynomial.hpp), integers without their trailing zero bits
-// (exact/trimmed_integer.hpp), and the stage on such queries against the rational path.
+// (exact/polynomials/interval_sign_at_irrational.hpp), the square-free test by a residue of the
+// discriminant (exact/polynomials/small_polynomial.hpp), integers without their trailing zero bits
+// (exact/arithmetic/trimmed_integer.hpp), and the stage on such queries against the rational path.
 // PROOF: proofs/exact_ccd.md#interval-sign-at-an-irrational
 // PROOF: proofs/exact_ccd.md#square-free-by-a-residue
 // PROOF: proofs/exact_ccd.md#trimmed-integers
@@ -13,12 +13,12 @@
 
 #include "core/predicates/fp_environment.hpp"
 #include "corpus/random_queries.hpp"
-#include "exact/algebraic_at_doubles.hpp"
-#include "exact/exact_ccd.hpp"
-#include "exact/integer_query.hpp"
-#include "exact/interval_sign_at_irrational.hpp"
-#include "exact/small_polynomial.hpp"
-#include "exact/trimmed_integer.hpp"
+#include "exact/stages/algebraic_at_doubles.hpp"
+#include "exact/reference/exact_ccd.hpp"
+#include "exact/stages/integer_query.hpp"
+#include "exact/polynomials/interval_sign_at_irrational.hpp"
+#include "exact/polynomials/small_polynomial.hpp"
+#include "exact/arithmetic/trimmed_integer.hpp"
 #include "integer_polynomial_support.hpp"
 #include "test_scale.hpp"
 

@@ -1,6 +1,6 @@
-// The contact test at roots for wide coordinates (exact/wide_inclusion.hpp) and what it is made
+// The contact test at roots for wide coordinates (exact/stages/wide_inclusion.hpp) and what it is made
 // of, against independent exact arithmetic: the product accumulator's sums and polynomials
-// (exact/product_accumulator.hpp) against GMP and the generic predicates over mpz_class; the
+// (exact/arithmetic/product_accumulator.hpp) against GMP and the generic predicates over mpz_class; the
 // reflection p(1 - u) against an expansion written here; the projection-by-projection
 // inclusion predicates with partly known signs against point_in_triangle_at and
 // segments_intersect_at; brackets narrowed and reflected against exact signs.
@@ -16,14 +16,14 @@
 #include "core/predicates/fp_environment.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "corpus/random_queries.hpp"
-#include "exact/algebraic_at_doubles.hpp"
-#include "exact/bracketed_root.hpp"
+#include "exact/stages/algebraic_at_doubles.hpp"
+#include "exact/polynomials/bracketed_root.hpp"
 #include "exactccd/ccd.hpp"
-#include "exact/fixed_width_dispatch.hpp"
-#include "exact/integer_cubic.hpp"
-#include "exact/product_accumulator.hpp"
-#include "exact/small_polynomial.hpp"
-#include "exact/wide_inclusion.hpp"
+#include "exact/arithmetic/fixed_width_dispatch.hpp"
+#include "exact/stages/integer_cubic.hpp"
+#include "exact/arithmetic/product_accumulator.hpp"
+#include "exact/polynomials/small_polynomial.hpp"
+#include "exact/stages/wide_inclusion.hpp"
 #include "integer_polynomial_support.hpp"
 #include "test_scale.hpp"
 

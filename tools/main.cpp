@@ -69,7 +69,7 @@ std::string study_program() {
 }
 
 // `exactccd study ARGS` runs `exactccd_study ARGS`: the study is a program of the benchmarks
-// (bench/study). Returns only when it cannot be run.
+// (study). Returns only when it cannot be run.
 int forward_to_study(int argc, char** argv) {
   const std::string program = study_program();
   if (program.empty()) {
@@ -243,7 +243,7 @@ int main(int argc, char** argv) {
           ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
           ->capture_default_str();
 
-  // `exactccd study` runs the study program of the benchmarks (bench/study): see forward_to_study.
+  // `exactccd study` runs the study program of the benchmarks (study): see forward_to_study.
   app.add_subcommand(
       "study",
       "Numerical-stability study: each method or setting (float_only; the tolerance method, "

@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "bench/fcl_comparison/fcl_adapter.hpp"
-#include "bench/scenes/assembly/assembly_step.hpp"
-#include "bench/scenes/assembly/lock_and_key.hpp"
+#include "corpus/assembly/assembly_step.hpp"
+#include "corpus/assembly/lock_and_key.hpp"
 #include "corpus/rigid_queries.hpp"
 
 namespace {

@@ -86,7 +86,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/scenes/meshes.hpp"
+#include "corpus/meshes.hpp"
 #include "exactccd/discrete.hpp"
 #include "exactccd/scene.hpp"
 

@@ -37,7 +37,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/scenes/meshes.hpp"
+#include "corpus/meshes.hpp"
 #include "bench/scenes/scene_cli.hpp"
 #include "exactccd/discrete.hpp"
 #include "exactccd/scene.hpp"

@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <string>
 
-#include "bench/study/study.hpp"
+#include "study/study.hpp"
 #include "exactccd/query_file.hpp"
 #include "fuzz_support.hpp"
 #include "oracle/common.hpp"

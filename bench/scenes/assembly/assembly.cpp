@@ -30,9 +30,9 @@
 #include <string>
 #include <vector>
 
-#include "bench/scenes/assembly/assembly_step.hpp"
-#include "bench/scenes/assembly/lock_and_key.hpp"
-#include "bench/scenes/assembly/rigid_broad_phase.hpp"
+#include "corpus/assembly/assembly_step.hpp"
+#include "corpus/assembly/lock_and_key.hpp"
+#include "corpus/assembly/rigid_broad_phase.hpp"
 #include "bench/scenes/scene_cli.hpp"
 
 namespace {

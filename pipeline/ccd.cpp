@@ -1,0 +1,290 @@
+// The public entry points: input validation, then the path the options choose.
+#include "exactccd/ccd.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <optional>
+#include <tuple>
+
+#include "core/predicates/fp_environment.hpp"
+#include "pipeline/ccd_options_check.hpp"
+#include "core/float_only/float_only_ccd.hpp"
+#include "pipeline/power_of_two_scaling.hpp"
+#include "exact/stages/algebraic_at_doubles.hpp"
+#include "exact/reference/exact_ccd.hpp"
+#include "exact/reference/min_separation.hpp"
+#include "core/float_only/tolerance_ccd.hpp"
+#include "filters/separation_filter.hpp"
+#include "exact/stages/integer_query.hpp"
+#include "filters/ccd_filters.hpp"
+#include "exactccd/rational_query.hpp"
+
+namespace exactccd {
+
+const char* to_string(Stage stage) noexcept {
+  switch (stage) {
+    case Stage::culling: return "culling";
+    case Stage::filter: return "filter";
+    case Stage::filter_exact_toi: return "filter_exact_toi";
+    case Stage::exact_at_double: return "exact_at_double";
+    case Stage::exact: return "exact";
+    case Stage::float_only: return "float_only";
+  }
+  return "unknown";
+}
+
+const char* to_string(Mode mode) noexcept {
+  switch (mode) {
+    case Mode::filtered: return "default";
+    case Mode::float_only: return "float_only";
+    case Mode::exact: return "exact";
+  }
+  return "unknown";
+}
+
+const char* to_string(QueryType type) noexcept {
+  return type == QueryType::vertex_face ? "vertex-face" : "edge-edge";
+}
+
+namespace {
+
+/// The float stages assume round-to-nearest and gradual underflow (the semi-static bounds,
+/// float_only); the caller's whole FP state is restored on every return, exceptions included.
+/// PROOF: proofs/filters.md#fp-environment
+class RoundToNearest : predicates::FpEnvironmentGuard {
+ public:
+  RoundToNearest() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
+};
+
+RationalPoint rational(const Eigen::Vector3d& x, const char* name) {
+  if (!x.allFinite())
+    throw std::invalid_argument(std::string("exactccd: non-finite coordinate in ") + name);
+  return {mpq_class(x.x()), mpq_class(x.y()), mpq_class(x.z())};
+}
+
+}  // namespace
+
+RationalQuery to_rational(const VertexFaceQuery& q) {
+  return {QueryType::vertex_face,
+          {rational(q.p_t0, "p_t0"), rational(q.a_t0, "a_t0"), rational(q.b_t0, "b_t0"),
+           rational(q.c_t0, "c_t0"), rational(q.p_t1, "p_t1"), rational(q.a_t1, "a_t1"),
+           rational(q.b_t1, "b_t1"), rational(q.c_t1, "c_t1")}};
+}
+
+RationalQuery to_rational(const EdgeEdgeQuery& q) {
+  return {QueryType::edge_edge,
+          {rational(q.ea0_t0, "ea0_t0"), rational(q.ea1_t0, "ea1_t0"),
+           rational(q.eb0_t0, "eb0_t0"), rational(q.eb1_t0, "eb1_t0"),
+           rational(q.ea0_t1, "ea0_t1"), rational(q.ea1_t1, "ea1_t1"),
+           rational(q.eb0_t1, "eb0_t1"), rational(q.eb1_t1, "eb1_t1")}};
+}
+
+CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
+  const RoundToNearest nearest;  // the TOI's conversions to doubles compare doubles
+  check_ccd_options(options);
+  if (options.min_separation > 0)
+    return exact_ccd(query, mpq_class(options.min_separation), options);
+  return query.type == QueryType::vertex_face ? exact::vertex_face_ccd_exact(query, options)
+                                              : exact::edge_edge_ccd_exact(query, options);
+}
+
+CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
+                    const CcdOptions& options) {
+  const RoundToNearest nearest;
+  check_ccd_options(options);
+  if (sgn(min_separation) < 0)
+    throw std::invalid_argument("exactccd: min_separation must be >= 0");
+  if (sgn(min_separation) == 0) {
+    CcdOptions contact = options;
+    contact.min_separation = 0.0;
+    return exact_ccd(query, contact);
+  }
+  return query.type == QueryType::vertex_face
+             ? exact::vertex_face_min_separation_exact(query, min_separation, options)
+             : exact::edge_edge_min_separation_exact(query, min_separation, options);
+}
+
+namespace {
+
+/// The exact path of a double query: the exact stage at double brackets, and the rational path
+/// (the reference) past the stage's step caps (never reached on any test or benchmark set).
+/// PROOF: proofs/exact_ccd.md#exact-at-double-brackets
+CcdResult exact_path_of(const VertexFaceQuery& q, const CcdOptions& options,
+                        const exact::IntegerQuery* known = nullptr) {
+  if (std::optional<CcdResult> r = exact::vertex_face_ccd_at_doubles(q, options, known)) return *r;
+  return exact::vertex_face_ccd_exact(to_rational(q), options);
+}
+
+CcdResult exact_path_of(const EdgeEdgeQuery& q, const CcdOptions& options,
+                        const exact::IntegerQuery* known = nullptr) {
+  if (std::optional<CcdResult> r = exact::edge_edge_ccd_at_doubles(q, options, known)) return *r;
+  return exact::edge_edge_ccd_exact(to_rational(q), options);
+}
+
+/// Exact answers at double times in integer arithmetic (exact/stages/integer_query.hpp), built
+/// lazily (queries the float stages decide never build it): fixed-size stack integers within
+/// the proven bounds, GMP beyond them.
+/// PROOF: proofs/filters.md#exact-at-double-times
+/// PROOF: proofs/filters.md#fixed-size-exact-at-doubles
+template <class Query>
+class LazyExactAtDoubles final : public filters::ExactAtDoubles {
+ public:
+  explicit LazyExactAtDoubles(const Query& q) : query_(q) {}
+  int cubic_sign_at(double t) override { return integer().cubic_sign_at(t); }
+  bool contact_at(double t) override { return integer().contact_at(t); }
+  std::pair<double, double> bisect_root(double lo, double hi) override {
+    return integer().bisect_root(lo, hi, 0.0);
+  }
+  void cubic_coefficient_bounds(double (&lo)[4], double (&hi)[4]) override {
+    integer().scaled_coefficient_bounds(lo, hi);
+  }
+  const exact::IntegerQuery& integer() {
+    if (!integer_) integer_.emplace(query_);
+    return *integer_;
+  }
+  /// The integer query if a stage built it, else nullptr (the exact path then reuses it).
+  const exact::IntegerQuery* built() const { return integer_ ? &*integer_ : nullptr; }
+
+ private:
+  const Query& query_;
+  std::optional<exact::IntegerQuery> integer_;
+};
+
+/// The default pipeline after culling: filters, exact path.
+template <class Query, class Filter, class Exact>
+CcdResult filters_then_exact(const Query& q, const CcdOptions& options, Filter filter,
+                             Exact exact_path) {
+  CcdResult r;
+  LazyExactAtDoubles<Query> exact_at_doubles(q);
+  const filters::FilterOutcome f = filter(q, options, exact_at_doubles);
+  switch (f.verdict) {
+    case filters::FilterOutcome::Verdict::no_contact:
+      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
+      return r;
+    case filters::FilterOutcome::Verdict::contact:
+      r.collides = true;
+      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
+      r.toi_lo = f.toi_lo;
+      r.toi_hi = f.toi_hi;
+      if (!f.toi_final) {
+        if (r.decided_by == Stage::filter) r.decided_by = Stage::filter_exact_toi;
+        std::tie(r.toi_lo, r.toi_hi) =
+            exact_at_doubles.integer().bisect_root(r.toi_lo, r.toi_hi, options.toi_width);
+      }
+      return r;
+    case filters::FilterOutcome::Verdict::uncertain: break;
+  }
+  return exact_path(q, options, exact_at_doubles.built());
+}
+
+/// The default pipeline: culling, filters, exact path. The culling and filter stages make no
+/// heap allocation, nor do the exact stages at double times within their fixed-size bounds;
+/// the rational exact path does. A query far from unit scale is first scaled by a power of two
+/// when that is exact (the same verdict and TOI; culling, exact, is unaffected by it).
+/// PROOF: proofs/filters.md#power-of-two-normalisation
+template <class Query, class Culled, class Filter, class Exact>
+CcdResult filtered_ccd(const Query& q, const CcdOptions& options, Culled culled, Filter filter,
+                       Exact exact_path) {
+  if (culled(q)) {
+    CcdResult r;
+    r.decided_by = Stage::culling;
+    return r;
+  }
+  if (const int s = detail::normalising_exponent(q); s != 0)
+    return filters_then_exact(detail::scaled_by_power_of_two(q, s), options, filter, exact_path);
+  return filters_then_exact(q, options, filter, exact_path);
+}
+
+/// Minimum-separation CCD, delta = options.min_separation > 0: culling and filters with delta,
+/// then the exact procedure; or the common practice (uncertified) in Mode::float_only.
+/// PROOF: proofs/min_separation.md#pipeline
+template <class Query, class Culled, class Filter, class Exact, class Tolerance>
+CcdResult min_separation_ccd(const Query& q, const CcdOptions& options, Culled culled,
+                             Filter filter, Exact exact_path, Tolerance tolerance) {
+  const double delta = options.min_separation;
+  CcdResult r;
+  switch (options.mode) {
+    case Mode::float_only: return tolerance(q, delta, options.t_max);
+    case Mode::exact: return exact_path(to_rational(q), mpq_class(delta), options, {});
+    case Mode::filtered: break;
+  }
+  if (culled(q, delta)) {
+    r.decided_by = Stage::culling;
+    return r;
+  }
+  const filters::SeparationOutcome f = filter(q, options);
+  switch (f.verdict) {
+    case filters::SeparationVerdict::never_within:
+      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
+      return r;
+    case filters::SeparationVerdict::contact:
+      r.collides = true;
+      r.toi_lo = f.toi_lo;
+      r.toi_hi = f.toi_hi;
+      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
+      return r;
+    case filters::SeparationVerdict::uncertain: break;
+  }
+  exact::SeparationHint hint;
+  hint.t_from = f.cleared_until;
+  if (f.bracketed) {
+    hint.t_to = f.within_at;
+    hint.known_signs = f.known_signs.data();
+  }
+  return exact_path(to_rational(q), mpq_class(delta), options, hint);
+}
+
+bool all_finite(const VertexFaceQuery& q) {
+  return q.p_t0.allFinite() && q.a_t0.allFinite() && q.b_t0.allFinite() && q.c_t0.allFinite() &&
+         q.p_t1.allFinite() && q.a_t1.allFinite() && q.b_t1.allFinite() && q.c_t1.allFinite();
+}
+
+bool all_finite(const EdgeEdgeQuery& q) {
+  return q.ea0_t0.allFinite() && q.ea1_t0.allFinite() && q.eb0_t0.allFinite() &&
+         q.eb1_t0.allFinite() && q.ea0_t1.allFinite() && q.ea1_t1.allFinite() &&
+         q.eb0_t1.allFinite() && q.eb1_t1.allFinite();
+}
+
+}  // namespace
+
+CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& options) {
+  const RoundToNearest nearest;
+  check_ccd_options(options);
+  if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
+  if (options.min_separation > 0)
+    return min_separation_ccd(query, options, filters::vertex_face_separation_culling,
+                              filters::vertex_face_separation_filter,
+                              exact::vertex_face_min_separation_exact,
+                              methods::tolerance_vertex_face_ccd);
+  switch (options.mode) {
+    case Mode::float_only: return float_only::vertex_face_ccd(query, options);
+    case Mode::exact: return exact_path_of(query, options);
+    case Mode::filtered: break;
+  }
+  return filtered_ccd(query, options, filters::vertex_face_ccd_culling,
+                      filters::vertex_face_ccd_filter,
+                      [](const VertexFaceQuery& q, const CcdOptions& o,
+                         const exact::IntegerQuery* known) { return exact_path_of(q, o, known); });
+}
+
+CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
+  const RoundToNearest nearest;
+  check_ccd_options(options);
+  if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
+  if (options.min_separation > 0)
+    return min_separation_ccd(query, options, filters::edge_edge_separation_culling,
+                              filters::edge_edge_separation_filter,
+                              exact::edge_edge_min_separation_exact,
+                              methods::tolerance_edge_edge_ccd);
+  switch (options.mode) {
+    case Mode::float_only: return float_only::edge_edge_ccd(query, options);
+    case Mode::exact: return exact_path_of(query, options);
+    case Mode::filtered: break;
+  }
+  return filtered_ccd(query, options, filters::edge_edge_ccd_culling, filters::edge_edge_ccd_filter,
+                      [](const EdgeEdgeQuery& q, const CcdOptions& o,
+                         const exact::IntegerQuery* known) { return exact_path_of(q, o, known); });
+}
+
+}  // namespace exactccd

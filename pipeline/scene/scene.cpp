@@ -1,0 +1,941 @@
+// Scene-level CCD (core/include/exactccd/scene.hpp): meshes, their hierarchies, the broad
+// phase and the parallel narrow phase. PROOF: proofs/scene.md
+#include "exactccd/scene.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
+
+#include "pipeline/ccd_options_check.hpp"
+#include "pipeline/scene/bvh.hpp"
+#include "pipeline/scene/rigid_boxes.hpp"
+#include "pipeline/scene/rigid_cylinder_ranges.hpp"
+#include "pipeline/scene/time_window.hpp"
+#include "exactccd/ccd.hpp"
+
+namespace exactccd {
+
+bool operator<(const ScenePair& a, const ScenePair& b) {
+  return std::tie(a.type, a.first_mesh, a.first_index, a.second_mesh, a.second_index) <
+         std::tie(b.type, b.first_mesh, b.first_index, b.second_mesh, b.second_index);
+}
+
+const char* to_string(BroadPhase broad_phase) noexcept {
+  switch (broad_phase) {
+    case BroadPhase::swept_bvh: return "swept_bvh";
+    case BroadPhase::static_bvh: return "static_bvh";
+  }
+  return "unknown";
+}
+
+namespace {
+
+using scene::Box;
+using scene::Bvh;
+
+/// Round to nearest and gradual underflow on this thread (the caller's state comes back on
+/// return). Held by the entry points and by every parallel body: TBB workers may run with the
+/// host's FP state. PROOF: proofs/filters.md#fp-environment
+class FpGuard : predicates::FpEnvironmentGuard {
+ public:
+  FpGuard() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
+};
+
+/// Which positions a hierarchy bounds.
+enum class Span : int { swept = 0, start = 1, end = 2 };
+
+/// The three hierarchies (vertices, edges, triangles) of one mesh over one span.
+struct Hierarchies {
+  Bvh vertices, edges, faces;
+  bool built = false;
+  bool stale = false;      ///< positions changed since the last refit
+  double raised_by = 0.0;  ///< the min_separation the boxes' upper corners were raised by
+};
+
+struct Mesh {
+  bool is_static = false;
+  bool is_rigid = false;  ///< a rigid body: moves with `motion`; `end` is for display only
+  RigidMotion motion;     ///< a rigid body's motion (zero until set_rigid_motion)
+  Positions start, end;
+  Triangles triangles;
+  Edges edges;
+  Hierarchies spans[3];
+  /// Cylinder ranges of the start positions about recently used lines (rigid_cylinder_ranges.hpp),
+  /// dropped when the start positions change.
+  std::vector<std::shared_ptr<const scene::MeshCylinderRanges>> cylinder_cache;
+};
+
+/// At most this many lines' ranges are kept per mesh (a few bodies turning about different axes).
+constexpr std::size_t kCylinderCacheSize = 4;
+
+/// What a mesh's motion keeps (rigid_cylinder_ranges.hpp). Needs upward rounding.
+scene::KeptAxes kept_axes_of(const Mesh& m) {
+  if (m.is_static) return {scene::KeptAxes::any, scene::AxisLine{}};
+  if (m.is_rigid) return scene::kept_axes(m.motion);
+  return {};  // a linearly moving mesh
+}
+
+/// The mesh's ranges about `line`, from the cache or computed (and cached). Needs upward rounding.
+std::shared_ptr<const scene::MeshCylinderRanges> cylinder_ranges(Mesh& m,
+                                                                 const scene::AxisLine& line) {
+  for (const auto& r : m.cylinder_cache)
+    if (r->line == line) return r;
+  auto r = std::make_shared<const scene::MeshCylinderRanges>(
+      scene::mesh_ranges(line, m.start, m.edges, m.triangles));
+  if (m.cylinder_cache.size() >= kCylinderCacheSize) m.cylinder_cache.erase(m.cylinder_cache.begin());
+  m.cylinder_cache.push_back(r);
+  return r;
+}
+
+/// The cylinder cull of one mesh pair: both sides' ranges about their common line, h widened by
+/// each side's slide along it. PROOF: proofs/scene.md#cylinder-ranges
+struct CylinderCull {
+  std::shared_ptr<const scene::MeshCylinderRanges> first, second;
+};
+
+/// The cull of the mesh pair (a, b), or nullopt when no line is kept by both motions (always
+/// when neither is a rigid body: scenes without rigid bodies are unchanged).
+std::optional<CylinderCull> cylinder_cull(std::vector<Mesh>& meshes, MeshId a, MeshId b) {
+  Mesh& ma = meshes[a];
+  Mesh& mb = meshes[b];
+  if (a == b || !(ma.is_rigid || mb.is_rigid)) return std::nullopt;
+  const filters::RoundingGuard upward;
+  const std::optional<scene::AxisLine> line =
+      scene::common_axis(kept_axes_of(ma), kept_axes_of(mb));
+  if (!line) return std::nullopt;
+  const auto side = [&](Mesh& m) {
+    auto r = cylinder_ranges(m, *line);
+    if (!m.is_rigid || m.motion.translation.isZero(0)) return r;
+    return std::shared_ptr<const scene::MeshCylinderRanges>(std::make_shared<
+        const scene::MeshCylinderRanges>(scene::shifted(*r, scene::h_shift(*line, m.motion.translation))));
+  };
+  return CylinderCull{side(ma), side(mb)};
+}
+
+Edges edges_of(const Triangles& triangles) {
+  std::vector<std::pair<std::int32_t, std::int32_t>> sides;
+  sides.reserve(static_cast<std::size_t>(triangles.rows()) * 3);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = triangles(f, k), b = triangles(f, (k + 1) % 3);
+      sides.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(sides.begin(), sides.end());
+  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+  Edges edges(static_cast<Eigen::Index>(sides.size()), 2);
+  for (std::size_t e = 0; e < sides.size(); ++e) {
+    edges(static_cast<Eigen::Index>(e), 0) = sides[e].first;
+    edges(static_cast<Eigen::Index>(e), 1) = sides[e].second;
+  }
+  return edges;
+}
+
+void check_positions(const Positions& x, const char* what) {
+  if (!x.allFinite())
+    throw std::invalid_argument(std::string("exactccd: non-finite coordinate in ") + what);
+}
+
+void check_triangles(const Triangles& triangles, Eigen::Index vertex_count) {
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    for (int k = 0; k < 3; ++k)
+      if (triangles(f, k) < 0 || triangles(f, k) >= vertex_count)
+        throw std::invalid_argument("exactccd: triangle " + std::to_string(f) +
+                                    " has a vertex index out of range");
+    if (triangles(f, 0) == triangles(f, 1) || triangles(f, 1) == triangles(f, 2) ||
+        triangles(f, 0) == triangles(f, 2))
+      throw std::invalid_argument("exactccd: triangle " + std::to_string(f) +
+                                  " repeats a vertex");
+  }
+  if (vertex_count > std::numeric_limits<std::int32_t>::max())
+    throw std::invalid_argument("exactccd: too many vertices in one mesh");
+}
+
+/// The limits of rigid motion (rigid.hpp) for a scene holding a rigid body.
+void check_rigid_options(const SceneOptions& o) {
+  if (o.min_separation != 0.0)
+    throw std::invalid_argument(
+        "exactccd: SceneOptions::min_separation must be 0 in a scene with a rigid body "
+        "(minimum separation is not supported for rigid motion)");
+  if (o.ccd.mode == Mode::float_only)
+    throw std::invalid_argument(
+        "exactccd: Mode::float_only has no rigid-motion test; a scene with a rigid body needs "
+        "Mode::filtered or Mode::exact");
+}
+
+void check_options(const SceneOptions& o) {
+  check_ccd_options(o.ccd);
+  if (o.max_threads < 0) throw std::invalid_argument("exactccd: max_threads must be >= 0");
+  if (!(o.min_separation >= 0.0) || !std::isfinite(o.min_separation))
+    throw std::invalid_argument("exactccd: SceneOptions::min_separation must be finite and >= 0");
+  if (o.ccd.min_separation != 0.0 && o.ccd.min_separation != o.min_separation)
+    throw std::invalid_argument(
+        "exactccd: SceneOptions::ccd.min_separation must be 0 or equal to "
+        "SceneOptions::min_separation, the scene's minimum separation (its broad phase inflates "
+        "the boxes by that one)");
+}
+
+/// The options each pair is decided with: the caller's, with min_separation as the pairs' delta.
+SceneOptions with_pair_separation(SceneOptions o) {
+  o.ccd.min_separation = o.min_separation;
+  return o;
+}
+
+Eigen::Vector3d row(const Positions& x, std::int32_t i) { return x.row(i).transpose(); }
+
+/// Rows of K vertex indices (edges: K = 2, triangles: K = 3).
+template <int K>
+using IndexRows = Eigen::Matrix<std::int32_t, Eigen::Dynamic, K, Eigen::RowMajor>;
+
+/// Boxes of a mesh's primitives over a span: min/max of input doubles only, so exact. A moving
+/// primitive stays in the box of its start and end positions (proofs/scene.md#swept-boxes).
+/// With delta > 0 each box's upper corner is then raised by delta, rounded upwards
+/// (proofs/scene.md#min-separation).
+template <int K>
+std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* indices,
+                                 Eigen::Index count, double delta) {
+  std::vector<Box> boxes(static_cast<std::size_t>(count));
+  const bool use_start = span != Span::end || m.is_static;
+  const bool use_end = span != Span::start && !m.is_static;
+  const Positions& first = use_start ? m.start : m.end;
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      // min/max by comparison: no denormals-are-zero; the raise by delta
+                      // rounds upwards (min/max are exact in either mode).
+                      const predicates::FpEnvironmentGuard fp(
+                          delta > 0.0 ? predicates::Rounding::upward
+                                      : predicates::Rounding::to_nearest);
+                      for (Eigen::Index p = r.begin(); p != r.end(); ++p) {
+                        // Vertex k of primitive p: p itself for vertices (no index matrix).
+                        const auto vertex = [&](int k) {
+                          return indices ? (*indices)(p, k) : static_cast<std::int32_t>(p);
+                        };
+                        Box box = scene::point_box(first.row(vertex(0)));
+                        for (int k = 0; k < K; ++k) {
+                          if (use_start) scene::grow(box, m.start.row(vertex(k)));
+                          if (use_end) scene::grow(box, m.end.row(vertex(k)));
+                        }
+                        if (delta > 0.0) scene::raise_upper_corner(box, delta);
+                        boxes[static_cast<std::size_t>(p)] = box;
+                      }
+                    });
+  return boxes;
+}
+
+/// Certified boxes of a rigid body's vertices over the span (swept: s in [0, 1]; start: s = 0;
+/// end: s = 1): unions of interval enclosures of each vertex's arc over pieces of the span
+/// (rigid_boxes.hpp, proofs/scene.md#rigid-boxes).
+std::vector<Box> rigid_vertex_boxes(const Mesh& m, Span span) {
+  const double s_lo = span == Span::end ? 1.0 : 0.0;
+  const double s_hi = span == Span::start ? 0.0 : 1.0;
+  const scene::Pieces ends = scene::pieces_for(m.motion, s_lo, s_hi);
+  const scene::ArcPieces pieces = [&] {
+    const filters::RoundingGuard upward;  // Interval_nt<false>
+    return scene::arc_pieces(m.motion.cayley, ends);
+  }();
+  std::vector<Box> boxes(static_cast<std::size_t>(m.start.rows()));
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, m.start.rows(), 1024),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      const filters::RoundingGuard upward;
+                      for (Eigen::Index v = r.begin(); v != r.end(); ++v) {
+                        Box box = scene::empty_box();
+                        const auto x0 = row(m.start, static_cast<std::int32_t>(v));
+                        scene::grow_by_arc(box, scene::arc_point(m.motion, x0), pieces);
+                        boxes[static_cast<std::size_t>(v)] = box;
+                      }
+                    });
+  return boxes;
+}
+
+/// Boxes of primitives of K vertices (rows of `indices`) as the merge of their vertices' boxes:
+/// each vertex lies in its box at every s of the span, so the primitive (their convex hull) lies
+/// in the merge. With delta > 0 the upper corners are raised as in primitive_boxes.
+template <int K>
+std::vector<Box> merged_boxes(const std::vector<Box>& vertex_boxes, const IndexRows<K>& indices,
+                              double delta) {
+  std::vector<Box> boxes(static_cast<std::size_t>(indices.rows()));
+  const predicates::FpEnvironmentGuard fp(delta > 0.0 ? predicates::Rounding::upward
+                                                      : predicates::Rounding::to_nearest);
+  for (Eigen::Index p = 0; p < indices.rows(); ++p) {
+    Box box = vertex_boxes[static_cast<std::size_t>(indices(p, 0))];
+    for (int k = 1; k < K; ++k)
+      box = scene::merge(box, vertex_boxes[static_cast<std::size_t>(indices(p, k))]);
+    if (delta > 0.0) scene::raise_upper_corner(box, delta);
+    boxes[static_cast<std::size_t>(p)] = box;
+  }
+  return boxes;
+}
+
+void update(Bvh& bvh, const std::vector<Box>& boxes, bool built, SceneStats& stats) {
+  if (built) {
+    ++stats.hierarchies_refitted;
+    if (bvh.refit_or_rebuild(boxes)) ++stats.hierarchies_built;
+    return;
+  }
+  bvh.build(boxes);
+  ++stats.hierarchies_built;
+}
+
+/// Builds, refits or rebuilds (when degraded) the hierarchies of one mesh over one span, boxes
+/// raised by delta; a change of delta since the last call refits them as a change of positions.
+Hierarchies& prepare(Mesh& m, Span span, double delta, SceneStats& stats) {
+  // A static mesh has one set of positions: one set of hierarchies serves every span.
+  Hierarchies& h = m.spans[m.is_static ? 0 : static_cast<int>(span)];
+  if (h.built && !h.stale && h.raised_by == delta) return h;
+  if (m.is_rigid) {
+    std::vector<Box> vertex_boxes = rigid_vertex_boxes(m, span);
+    update(h.edges, merged_boxes<2>(vertex_boxes, m.edges, delta), h.built, stats);
+    update(h.faces, merged_boxes<3>(vertex_boxes, m.triangles, delta), h.built, stats);
+    if (delta > 0.0) {
+      const predicates::FpEnvironmentGuard upward(predicates::Rounding::upward);
+      for (Box& box : vertex_boxes) scene::raise_upper_corner(box, delta);
+    }
+    update(h.vertices, vertex_boxes, h.built, stats);
+    h.built = true;
+    h.stale = false;
+    h.raised_by = delta;
+    return h;
+  }
+  update(h.vertices, primitive_boxes<1>(m, span, nullptr, m.start.rows(), delta), h.built, stats);
+  update(h.edges, primitive_boxes<2>(m, span, &m.edges, m.edges.rows(), delta), h.built, stats);
+  update(h.faces, primitive_boxes<3>(m, span, &m.triangles, m.triangles.rows(), delta), h.built,
+         stats);
+  h.built = true;
+  h.stale = false;
+  h.raised_by = delta;
+  return h;
+}
+
+bool triangle_has_vertex(const Triangles& t, std::uint32_t f, std::int32_t v) {
+  const auto fi = static_cast<Eigen::Index>(f);
+  return t(fi, 0) == v || t(fi, 1) == v || t(fi, 2) == v;
+}
+
+bool edges_share_vertex(const Edges& e, std::uint32_t i, std::uint32_t j) {
+  const auto a = static_cast<Eigen::Index>(i), b = static_cast<Eigen::Index>(j);
+  return e(a, 0) == e(b, 0) || e(a, 0) == e(b, 1) || e(a, 1) == e(b, 0) || e(a, 1) == e(b, 1);
+}
+
+/// The ordered mesh pairs a call visits: vertex-face (A, B) for A != B unless both are static,
+/// and (A, A) for a moving mesh (not a rigid body) with self-collision; edge-edge the same with
+/// A <= B.
+template <class F>
+void for_each_mesh_pair(const std::vector<Mesh>& meshes, bool self, bool ordered, F&& f) {
+  for (std::size_t a = 0; a < meshes.size(); ++a)
+    for (std::size_t b = ordered ? 0 : a; b < meshes.size(); ++b) {
+      if (meshes[a].is_static && meshes[b].is_static) continue;
+      if (a == b && (!self || meshes[a].is_rigid)) continue;
+      f(static_cast<MeshId>(a), static_cast<MeshId>(b));
+    }
+}
+
+/// A pair's answer: the verdict with the TOI in s, and the contact time where defined.
+struct Decision {
+  CcdResult ccd;
+  bool has_time = false;
+  double time_lo = kNoContactToi, time_hi = kNoContactToi;
+
+  SceneContact contact(const ScenePair& p) const {
+    return {p, ccd.toi_lo, ccd.toi_hi, has_time, time_lo, time_hi};
+  }
+};
+
+}  // namespace
+
+struct Scene::Impl {
+  std::vector<Mesh> meshes;
+
+  bool any_rigid() const {
+    return std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return m.is_rigid; });
+  }
+
+  bool involves_rigid(const ScenePair& p) const {
+    return meshes[p.first_mesh].is_rigid || meshes[p.second_mesh].is_rigid;
+  }
+
+  /// One side of a rigid query: the body's motion, or straight lines from start to end rows
+  /// (equal for a static mesh) of the given vertices.
+  template <std::size_t N>
+  static SideMotion side_of(const Mesh& m, const std::array<std::int32_t, N>& vertices) {
+    if (m.is_rigid) return SideMotion::of(m.motion);
+    SideMotion side;
+    side.kind = PathKind::linear;
+    for (std::size_t i = 0; i < N; ++i) side.linear_end[i] = row(m.end, vertices[i]);
+    return side;
+  }
+
+  RigidVertexFaceQuery rigid_vertex_face(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& b = mesh(p.second_mesh);
+    const std::array<std::int32_t, 1> v{static_cast<std::int32_t>(p.first_index)};
+    const auto f = static_cast<Eigen::Index>(p.second_index);
+    const std::array<std::int32_t, 3> t{b.triangles(f, 0), b.triangles(f, 1), b.triangles(f, 2)};
+    return {row(a.start, v[0]), row(b.start, t[0]), row(b.start, t[1]), row(b.start, t[2]),
+            side_of(a, v),      side_of(b, t)};
+  }
+
+  RigidEdgeEdgeQuery rigid_edge_edge(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& b = mesh(p.second_mesh);
+    const auto i = static_cast<Eigen::Index>(p.first_index);
+    const auto j = static_cast<Eigen::Index>(p.second_index);
+    const std::array<std::int32_t, 2> ea{a.edges(i, 0), a.edges(i, 1)};
+    const std::array<std::int32_t, 2> eb{b.edges(j, 0), b.edges(j, 1)};
+    return {row(a.start, ea[0]), row(a.start, ea[1]), row(b.start, eb[0]), row(b.start, eb[1]),
+            side_of(a, ea),      side_of(b, eb)};
+  }
+
+  /// Grows `box` to hold the given vertices of `m` over s in [0, window] (rigid_boxes.hpp).
+  /// Needs upward rounding.
+  template <std::size_t N>
+  static void grow_over_window(Box& box, const Mesh& m, const std::array<std::int32_t, N>& vertices,
+                               double window) {
+    if (m.is_rigid) {
+      const scene::ArcPieces pieces =
+          scene::arc_pieces(m.motion.cayley, scene::pieces_for(m.motion, 0.0, window));
+      for (std::int32_t v : vertices)
+        scene::grow_by_arc(box, scene::arc_point(m.motion, row(m.start, v)), pieces);
+      return;
+    }
+    for (std::int32_t v : vertices)
+      scene::grow_by_segment(box, row(m.start, v), row(m.end, v), 0.0, window);
+  }
+
+  /// True when the two sides of a pair involving a rigid body cannot meet at any s in
+  /// [0, window]: their certified boxes over the window are apart on some axis
+  /// (proofs/scene.md#rigid-boxes). Needs upward rounding.
+  template <std::size_t NA, std::size_t NB>
+  static bool rigid_sides_disjoint(const Mesh& a, const std::array<std::int32_t, NA>& va,
+                                   const Mesh& b, const std::array<std::int32_t, NB>& vb,
+                                   double window) {
+    Box box_a = scene::empty_box(), box_b = scene::empty_box();
+    grow_over_window(box_a, a, va, window);
+    grow_over_window(box_b, b, vb, window);
+    for (int k = 0; k < 3; ++k)
+      if (box_a.hi[k] < box_b.lo[k] || box_b.hi[k] < box_a.lo[k]) return true;
+    return false;
+  }
+
+  bool rigid_disjoint_over_window(const ScenePair& p, double window) const {
+    const Mesh& a = meshes[p.first_mesh];
+    const Mesh& b = meshes[p.second_mesh];
+    if (p.type == QueryType::vertex_face) {
+      const auto f = static_cast<Eigen::Index>(p.second_index);
+      return rigid_sides_disjoint(
+          a, std::array<std::int32_t, 1>{static_cast<std::int32_t>(p.first_index)}, b,
+          std::array<std::int32_t, 3>{b.triangles(f, 0), b.triangles(f, 1), b.triangles(f, 2)},
+          window);
+    }
+    const auto i = static_cast<Eigen::Index>(p.first_index);
+    const auto j = static_cast<Eigen::Index>(p.second_index);
+    return rigid_sides_disjoint(a, std::array<std::int32_t, 2>{a.edges(i, 0), a.edges(i, 1)}, b,
+                                std::array<std::int32_t, 2>{b.edges(j, 0), b.edges(j, 1)}, window);
+  }
+
+  const Mesh& mesh(MeshId id) const {
+    if (id >= meshes.size()) throw std::invalid_argument("exactccd: no mesh " + std::to_string(id));
+    return meshes[id];
+  }
+
+  VertexFaceQuery vertex_face(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& b = mesh(p.second_mesh);
+    const auto v = static_cast<std::int32_t>(p.first_index);
+    const auto f = static_cast<Eigen::Index>(p.second_index);
+    return {row(a.start, v), row(b.start, b.triangles(f, 0)), row(b.start, b.triangles(f, 1)),
+            row(b.start, b.triangles(f, 2)), row(a.end, v), row(b.end, b.triangles(f, 0)),
+            row(b.end, b.triangles(f, 1)), row(b.end, b.triangles(f, 2))};
+  }
+
+  EdgeEdgeQuery edge_edge(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& b = mesh(p.second_mesh);
+    const auto i = static_cast<Eigen::Index>(p.first_index);
+    const auto j = static_cast<Eigen::Index>(p.second_index);
+    return {row(a.start, a.edges(i, 0)), row(a.start, a.edges(i, 1)),
+            row(b.start, b.edges(j, 0)), row(b.start, b.edges(j, 1)),
+            row(a.end, a.edges(i, 0)),   row(a.end, a.edges(i, 1)),
+            row(b.end, b.edges(j, 0)),   row(b.end, b.edges(j, 1))};
+  }
+
+  /// The cylinder culls of the mesh pairs the calls visit, indexed a * mesh count + b
+  /// (cylinder_cull); computed before the parallel traversals, which only read them.
+  std::vector<std::optional<CylinderCull>> cylinder_culls(const SceneOptions& o) {
+    const std::size_t n = meshes.size();
+    std::vector<std::optional<CylinderCull>> culls(n * n);
+    if (!any_rigid()) return culls;
+    for_each_mesh_pair(meshes, o.self_collision, true,
+                       [&](MeshId a, MeshId b) { culls[a * n + b] = cylinder_cull(meshes, a, b); });
+    return culls;
+  }
+
+  /// Appends every candidate pair of the hierarchies `at(mesh)` (one span) to `found`: pairs
+  /// of primitives whose boxes overlap, pairs within a mesh sharing a vertex excluded, pairs
+  /// whose cylinder ranges are apart (`culls`) counted in `culled` and excluded.
+  template <class At>
+  void gather_candidates(const SceneOptions& o, const At& at,
+                         const std::vector<std::optional<CylinderCull>>& culls,
+                         tbb::enumerable_thread_specific<std::vector<ScenePair>>& found,
+                         tbb::enumerable_thread_specific<std::uint64_t>& culled) const {
+    const std::size_t n = meshes.size();
+    for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
+      const Mesh& mb = meshes[b];
+      const auto& cull = culls[a * n + b];
+      const Bvh& va = at(meshes[a]).vertices;
+      const Bvh& fb = at(mb).faces;
+      const auto pair = [&](std::uint32_t v, std::uint32_t f) {
+        if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v))) return;
+        if (cull && scene::apart(cull->first->vertices[v], cull->second->faces[f])) {
+          ++culled.local();
+          return;
+        }
+        found.local().push_back({QueryType::vertex_face, a, v, b, f});
+      };
+      if (cull)
+        va.parallel_for_each_overlap(fb, pair,
+                                     node_cull(va, cull->first->vertices, fb, cull->second->faces,
+                                               culled));
+      else
+        va.parallel_for_each_overlap(fb, pair);
+    });
+    for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
+      const Mesh& ma = meshes[a];
+      if (a == b) {
+        at(ma).edges.parallel_for_each_self_overlap([&](std::uint32_t i, std::uint32_t j) {
+          if (edges_share_vertex(ma.edges, i, j)) return;
+          found.local().push_back({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)});
+        });
+      } else {
+        const auto& cull = culls[a * n + b];
+        const Bvh& ea = at(ma).edges;
+        const Bvh& eb = at(meshes[b]).edges;
+        const auto pair = [&](std::uint32_t i, std::uint32_t j) {
+          if (cull && scene::apart(cull->first->edges[i], cull->second->edges[j])) {
+            ++culled.local();
+            return;
+          }
+          found.local().push_back({QueryType::edge_edge, a, i, b, j});
+        };
+        if (cull)
+          ea.parallel_for_each_overlap(
+              eb, pair, node_cull(ea, cull->first->edges, eb, cull->second->edges, culled));
+        else
+          ea.parallel_for_each_overlap(eb, pair);
+      }
+    });
+  }
+
+  /// The node test of a traversal with a cylinder cull: a node's ranges merge those of the
+  /// primitives below it, so apart nodes hold no pair that is not apart (each cut counted).
+  struct NodeCull {
+    std::vector<scene::CylinderRange> first, second;
+    tbb::enumerable_thread_specific<std::uint64_t>* culled;
+    bool operator()(std::uint32_t a, std::uint32_t b) const {
+      if (!scene::apart(first[a], second[b])) return true;
+      ++culled->local();
+      return false;
+    }
+  };
+  static NodeCull node_cull(const Bvh& a, const std::vector<scene::CylinderRange>& ra,
+                            const Bvh& b, const std::vector<scene::CylinderRange>& rb,
+                            tbb::enumerable_thread_specific<std::uint64_t>& culled) {
+    return {a.node_values(ra, scene::merge_ranges), b.node_values(rb, scene::merge_ranges),
+            &culled};
+  }
+
+  static std::uint64_t total(const tbb::enumerable_thread_specific<std::uint64_t>& counts) {
+    std::uint64_t sum = 0;
+    for (std::uint64_t c : counts) sum += c;
+    return sum;
+  }
+
+  /// The candidate pairs of the swept hierarchies, in no particular order.
+  std::vector<ScenePair> swept_candidates(const SceneOptions& o, SceneStats& stats) {
+    for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats);
+    const auto culls = cylinder_culls(o);
+    tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+    tbb::enumerable_thread_specific<std::uint64_t> culled(0);
+    gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, culls,
+                      found, culled);
+    stats.cylinder_culled += total(culled);
+    return concatenate(found);
+  }
+
+  static std::vector<ScenePair> concatenate(
+      tbb::enumerable_thread_specific<std::vector<ScenePair>>& parts) {
+    std::size_t total = 0;
+    for (const auto& part : parts) total += part.size();
+    std::vector<ScenePair> all;
+    all.reserve(total);
+    for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+    return all;
+  }
+
+  /// The candidates of the older scheme: pairs whose boxes overlap at the start or at the end,
+  /// sorted, each once.
+  std::vector<ScenePair> static_candidates(const SceneOptions& o, SceneStats& stats) {
+    tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+    tbb::enumerable_thread_specific<std::uint64_t> culled(0);
+    const auto culls = cylinder_culls(o);
+    for (Span span : {Span::start, Span::end}) {
+      for (Mesh& m : meshes) prepare(m, span, o.min_separation, stats);
+      gather_candidates(
+          o,
+          [span](const Mesh& m) -> const Hierarchies& {
+            return m.spans[m.is_static ? 0 : static_cast<int>(span)];
+          },
+          culls, found, culled);
+    }
+    stats.cylinder_culled += total(culled);
+    std::vector<ScenePair> all = concatenate(found);
+    tbb::parallel_sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    return all;
+  }
+
+  static CcdResult decide_query(const VertexFaceQuery& q, const CcdOptions& options) {
+    return vertex_face_ccd(q, options);
+  }
+  static CcdResult decide_query(const EdgeEdgeQuery& q, const CcdOptions& options) {
+    return edge_edge_ccd(q, options);
+  }
+
+  /// The pair's test over [0, options.t_max].
+  CcdResult test(const ScenePair& p, const CcdOptions& options) const {
+    return p.type == QueryType::vertex_face ? vertex_face_ccd(vertex_face(p), options)
+                                            : edge_edge_ccd(edge_edge(p), options);
+  }
+
+  static Decision with_time(const RigidCcdResult& r) {
+    return {r.ccd, r.has_time, r.time_lo, r.time_hi};
+  }
+
+  /// The pair's answer over [0, options.t_max]: a pair involving a rigid body by the rigid test
+  /// of rigid.hpp, any other by `test` (time = s).
+  Decision decide(const ScenePair& p, const CcdOptions& options) const {
+    if (involves_rigid(p))
+      return with_time(p.type == QueryType::vertex_face
+                           ? vertex_face_ccd(rigid_vertex_face(p), options)
+                           : edge_edge_ccd(rigid_edge_edge(p), options));
+    const CcdResult c = test(p, options);
+    return {c, true, c.toi_lo, c.toi_hi};
+  }
+
+  SceneResult find_contacts(const SceneOptions& o) {
+    SceneResult result;
+    std::vector<ScenePair> candidates = o.broad_phase == BroadPhase::swept_bvh
+                                            ? swept_candidates(o, result.stats)
+                                            : static_candidates(o, result.stats);
+    // The narrow phase over a flat list: work stealing balances clusters of costly pairs.
+    tbb::enumerable_thread_specific<std::vector<SceneContact>> found;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        const FpGuard fp;
+                        auto& local = found.local();
+                        for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                          const Decision d = decide(candidates[k], o.ccd);
+                          if (d.ccd.collides) local.push_back(d.contact(candidates[k]));
+                        }
+                      });
+    for (const auto& part : found)
+      result.contacts.insert(result.contacts.end(), part.begin(), part.end());
+    count(candidates, result.stats);
+    result.stats.narrow_phase_tests = candidates.size();
+    // Sorted output: the same whatever the number of threads and the order they ran in.
+    const auto by_pair = [](const SceneContact& a, const SceneContact& b) { return a.pair < b.pair; };
+    tbb::parallel_sort(result.contacts.begin(), result.contacts.end(), by_pair);
+    if (o.record_candidates) {
+      tbb::parallel_sort(candidates.begin(), candidates.end());
+      result.candidates = std::move(candidates);
+    }
+    result.earliest = earliest_of(result.contacts);
+    return result;
+  }
+
+  static void count(const std::vector<ScenePair>& candidates, SceneStats& stats) {
+    for (const ScenePair& p : candidates)
+      ++(p.type == QueryType::vertex_face ? stats.vertex_face_candidates
+                                          : stats.edge_edge_candidates);
+  }
+
+  /// Smallest toi_lo, ties broken by pair order (`contacts` sorted by pair). A contact's toi_lo
+  /// is finite, so starting from the no-contact +infinity needs no special case for none.
+  static SceneContact earliest_of(const std::vector<SceneContact>& contacts) {
+    SceneContact best;
+    for (const SceneContact& c : contacts)
+      if (c.toi_lo < best.toi_lo) best = c;
+    return best;
+  }
+
+  EarliestContact earliest_contact(const SceneOptions& o);
+};
+
+/// The earliest contact with pruning. A shared bound T only decreases; every pair is tested
+/// over [0, T] only (after a certified cull over that window). When a test finds contact with
+/// interval [lo, hi], T becomes the double just above hi + toi_width: any pair whose contact time
+/// exceeds that bound has a toi_lo strictly above the found pair's, so it cannot be the earliest
+/// (proofs/scene.md#earliest-contact). Pairs found along the way are decided again with the
+/// caller's options at the end, so the answer is exactly find_contacts' earliest, whatever the
+/// order in which threads met the pairs.
+EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
+  EarliestContact out;
+  const double t_max = o.ccd.t_max;
+  std::atomic<double> bound{t_max};
+  const std::vector<ScenePair> candidates = swept_candidates(o, out.stats);
+  count(candidates, out.stats);
+  struct Found {
+    std::vector<SceneContact> contacts;
+    std::uint64_t tests = 0;
+  };
+  tbb::enumerable_thread_specific<Found> locals;
+  const auto batch = tbb::blocked_range<std::size_t>(0, candidates.size(), 64);
+  tbb::parallel_for(batch, [&](const tbb::blocked_range<std::size_t>& range) {
+    Found& local = locals.local();
+    // Upward rounding for the window culls (time_window.hpp); each pair's test sets and restores
+    // its own mode, and the bound below only gets larger under upward rounding (still valid).
+    const filters::RoundingGuard upward;
+    for (std::size_t k = range.begin(); k != range.end(); ++k) {
+      const ScenePair& p = candidates[k];
+      const double window = bound.load(std::memory_order_relaxed);
+      CcdOptions options = o.ccd;
+      options.t_max = window;
+      // One query per pair: culled over the window when the bound has shrunk, else decided.
+      const auto decide_linear = [&](const auto& query) -> std::optional<CcdResult> {
+        if (window < t_max && scene::disjoint_over_window(query, window, o.min_separation))
+          return std::nullopt;
+        ++local.tests;
+        return decide_query(query, options);
+      };
+      std::optional<CcdResult> decided;
+      if (involves_rigid(p)) {
+        // The same over the arcs: certified boxes over [0, window], then the rigid test.
+        if (!(window < t_max && rigid_disjoint_over_window(p, window))) {
+          ++local.tests;
+          decided = p.type == QueryType::vertex_face
+                        ? vertex_face_ccd(rigid_vertex_face(p), options).ccd
+                        : edge_edge_ccd(rigid_edge_edge(p), options).ccd;
+        }
+      } else {
+        decided = p.type == QueryType::vertex_face ? decide_linear(vertex_face(p))
+                                                   : decide_linear(edge_edge(p));
+      }
+      if (!decided) continue;
+      const CcdResult& r = *decided;
+      if (!r.collides) continue;
+      local.contacts.push_back({p, r.toi_lo, r.toi_hi});
+      const double next = std::min(
+          t_max,
+          std::nextafter(r.toi_hi + o.ccd.toi_width, std::numeric_limits<double>::infinity()));
+      double current = bound.load(std::memory_order_relaxed);
+      while (next < current && !bound.compare_exchange_weak(current, next)) {
+      }
+    }
+  });
+  const double final_bound = bound.load();
+  std::vector<SceneContact> found;
+  for (Found& local : locals) {
+    out.stats.narrow_phase_tests += local.tests;
+    for (const SceneContact& c : local.contacts)
+      if (c.toi_lo <= final_bound) found.push_back(c);
+  }
+  if (found.empty()) return out;
+  // Decide the survivors again over the caller's window: their intervals are then exactly
+  // those find_contacts reports.
+  for (SceneContact& c : found) c = decide(c.pair, o.ccd).contact(c.pair);
+  std::sort(found.begin(), found.end(),
+            [](const SceneContact& a, const SceneContact& b) { return a.pair < b.pair; });
+  out.collides = true;
+  out.contact = earliest_of(found);
+  return out;
+}
+
+Scene::Scene() : impl_(std::make_unique<Impl>()) {}
+Scene::~Scene() = default;
+Scene::Scene(Scene&&) noexcept = default;
+Scene& Scene::operator=(Scene&&) noexcept = default;
+
+MeshId Scene::add_mesh(const Positions& positions, const Triangles& triangles) {
+  check_positions(positions, "the mesh's positions");
+  check_triangles(triangles, positions.rows());
+  Mesh m;
+  m.start = positions;
+  m.end = positions;
+  m.triangles = triangles;
+  m.edges = edges_of(triangles);
+  impl_->meshes.push_back(std::move(m));
+  return static_cast<MeshId>(impl_->meshes.size() - 1);
+}
+
+MeshId Scene::add_static_mesh(const Positions& positions, const Triangles& triangles) {
+  const MeshId id = add_mesh(positions, triangles);
+  impl_->meshes[id].is_static = true;
+  return id;
+}
+
+MeshId Scene::add_rigid_body(const Positions& positions, const Triangles& triangles) {
+  const MeshId id = add_mesh(positions, triangles);
+  impl_->meshes[id].is_rigid = true;
+  return id;
+}
+
+namespace {
+
+/// The body's mesh for set_rigid_motion, after checking the id, the kind and the motion.
+Mesh& rigid_body_for_motion(std::vector<Mesh>& meshes, MeshId id, const RigidMotion& motion) {
+  if (id >= meshes.size()) throw std::invalid_argument("exactccd: no mesh " + std::to_string(id));
+  Mesh& m = meshes[id];
+  if (!m.is_rigid)
+    throw std::invalid_argument("exactccd: set_rigid_motion on mesh " + std::to_string(id) +
+                                ", which is not a rigid body (add it with add_rigid_body)");
+  if (!motion.pivot.allFinite() || !motion.translation.allFinite() ||
+      !motion.cayley.allFinite())
+    throw std::invalid_argument("exactccd: non-finite pivot, translation or cayley in the rigid "
+                                "motion of mesh " + std::to_string(id));
+  return m;
+}
+
+/// Sets the motion; the end positions (display only) the same whatever the caller's FP state.
+void apply_rigid_motion(Mesh& m, const RigidMotion& motion) {
+  const FpGuard fp;
+  m.motion = motion;
+  for (Eigen::Index v = 0; v < m.start.rows(); ++v)
+    m.end.row(v) = position_at(motion, row(m.start, static_cast<std::int32_t>(v)), 1.0).transpose();
+  for (Hierarchies& h : m.spans) h.stale = true;
+}
+
+}  // namespace
+
+void Scene::set_rigid_motion(MeshId id, const RigidMotion& motion) {
+  apply_rigid_motion(rigid_body_for_motion(impl_->meshes, id, motion), motion);
+}
+
+void Scene::set_rigid_motion(MeshId id, const Positions& start, const RigidMotion& motion) {
+  Mesh& m = rigid_body_for_motion(impl_->meshes, id, motion);
+  if (start.rows() != m.start.rows())
+    throw std::invalid_argument("exactccd: set_rigid_motion needs one row per vertex of the body");
+  check_positions(start, "the start positions");
+  if (start != m.start) m.cylinder_cache.clear();
+  m.start = start;
+  apply_rigid_motion(m, motion);
+}
+
+void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) {
+  impl_->mesh(id);
+  Mesh& m = impl_->meshes[id];
+  if (m.is_static) throw std::invalid_argument("exactccd: set_motion on a static mesh");
+  if (m.is_rigid)
+    throw std::invalid_argument("exactccd: set_motion on rigid body " + std::to_string(id) +
+                                " (a rigid body moves with set_rigid_motion)");
+  if (start.rows() != m.start.rows() || end.rows() != m.start.rows())
+    throw std::invalid_argument("exactccd: set_motion needs one row per vertex of the mesh");
+  check_positions(start, "the start positions");
+  check_positions(end, "the end positions");
+  m.start = start;
+  m.end = end;
+  m.cylinder_cache.clear();
+  for (Hierarchies& h : m.spans) h.stale = true;
+}
+
+std::size_t Scene::mesh_count() const { return impl_->meshes.size(); }
+bool Scene::is_static(MeshId id) const { return impl_->mesh(id).is_static; }
+bool Scene::is_rigid(MeshId id) const { return impl_->mesh(id).is_rigid; }
+
+const RigidMotion& Scene::rigid_motion(MeshId id) const {
+  const Mesh& m = impl_->mesh(id);
+  if (!m.is_rigid)
+    throw std::invalid_argument("exactccd: rigid_motion of mesh " + std::to_string(id) +
+                                ", which is not a rigid body");
+  return m.motion;
+}
+const Triangles& Scene::triangles(MeshId id) const { return impl_->mesh(id).triangles; }
+const Edges& Scene::edges(MeshId id) const { return impl_->mesh(id).edges; }
+const Positions& Scene::start_positions(MeshId id) const { return impl_->mesh(id).start; }
+const Positions& Scene::end_positions(MeshId id) const { return impl_->mesh(id).end; }
+
+namespace {
+
+/// Runs f in an arena of at most max_threads threads (0: the caller's arena).
+template <class F>
+auto with_threads(int max_threads, F&& f) {
+  if (max_threads == 0) return f();
+  tbb::task_arena arena(max_threads);
+  return arena.execute(f);
+}
+
+}  // namespace
+
+SceneResult Scene::find_contacts(const SceneOptions& options) {
+  const FpGuard fp;
+  check_options(options);
+  if (impl_->any_rigid()) check_rigid_options(options);
+  const SceneOptions o = with_pair_separation(options);
+  return with_threads(o.max_threads, [&] { return impl_->find_contacts(o); });
+}
+
+EarliestContact Scene::earliest_contact(const SceneOptions& options) {
+  const FpGuard fp;
+  check_options(options);
+  if (impl_->any_rigid()) check_rigid_options(options);
+  if (options.broad_phase != BroadPhase::swept_bvh)
+    throw std::invalid_argument("exactccd: earliest_contact needs the swept_bvh broad phase");
+  const SceneOptions o = with_pair_separation(options);
+  return with_threads(o.max_threads, [&] { return impl_->earliest_contact(o); });
+}
+
+VertexFaceQuery Scene::vertex_face_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::vertex_face)
+    throw std::invalid_argument("exactccd: vertex_face_query of an edge-edge pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (pair.first_index >= a.start.rows() || pair.second_index >= b.triangles.rows())
+    throw std::invalid_argument("exactccd: pair index out of range");
+  if (impl_->involves_rigid(pair))
+    throw std::invalid_argument(
+        "exactccd: vertex_face_query of a pair with a rigid body (use rigid_vertex_face_query)");
+  return impl_->vertex_face(pair);
+}
+
+EdgeEdgeQuery Scene::edge_edge_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::edge_edge)
+    throw std::invalid_argument("exactccd: edge_edge_query of a vertex-face pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (pair.first_index >= a.edges.rows() || pair.second_index >= b.edges.rows())
+    throw std::invalid_argument("exactccd: pair index out of range");
+  if (impl_->involves_rigid(pair))
+    throw std::invalid_argument(
+        "exactccd: edge_edge_query of a pair with a rigid body (use rigid_edge_edge_query)");
+  return impl_->edge_edge(pair);
+}
+
+RigidVertexFaceQuery Scene::rigid_vertex_face_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::vertex_face)
+    throw std::invalid_argument("exactccd: rigid_vertex_face_query of an edge-edge pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (pair.first_index >= a.start.rows() || pair.second_index >= b.triangles.rows())
+    throw std::invalid_argument("exactccd: pair index out of range");
+  return impl_->rigid_vertex_face(pair);
+}
+
+RigidEdgeEdgeQuery Scene::rigid_edge_edge_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::edge_edge)
+    throw std::invalid_argument("exactccd: rigid_edge_edge_query of a vertex-face pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (pair.first_index >= a.edges.rows() || pair.second_index >= b.edges.rows())
+    throw std::invalid_argument("exactccd: pair index out of range");
+  return impl_->rigid_edge_edge(pair);
+}
+
+}  // namespace exactccd
