@@ -8,5 +8,7 @@ cd "$(dirname "$0")/.."
 bash .ci/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DEXACTCCD_BUILD_TESTS=ON
 cmake --build build -j"$(nproc)"
-ctest --test-dir build --output-on-failure -j"$(nproc)"
+ctest --test-dir build --output-on-failure -j"$(nproc)" | tee build/ctest-output.log
+# Every test well inside its timeout (a third at most), so a loaded machine does not time it out.
+python3 .ci/check_test_times.py build --log build/ctest-output.log
 bash .ci/sanitizers.sh

@@ -37,7 +37,7 @@ set(below_float_only api predicates)
 # The exact procedures and the filters are siblings: neither includes the other, the pipeline
 # joins them.
 set(below_exact api predicates)
-set(below_filters api predicates exact)  # until the separation seam is an interface (next commit)
+set(below_filters api predicates)
 set(below_pipeline api predicates float_only exact filters)
 set(below_corpus ${below_pipeline} pipeline)
 set(below_oracle ${below_corpus} corpus)

@@ -14,14 +14,11 @@ namespace exactccd::filters {
 
 namespace {
 
+using predicates::moving_point;
+
 using predicates::FixedPoly;
 using predicates::MovingPoint;
 using Quadratic = FixedPoly<Interval, 2>;
-
-MovingPoint<Interval> moving(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1) {
-  return predicates::linear_motion(predicates::Vec3<Interval>{x0.x(), x0.y(), x0.z()},
-                                   predicates::Vec3<Interval>{x1.x(), x1.y(), x1.z()});
-}
 
 Interval at(const Quadratic& q, const Interval& T) { return predicates::evaluate(q, T); }
 
@@ -224,9 +221,10 @@ FilterOutcome vertex_face_ccd_filter(const VertexFaceQuery& q, const CcdOptions&
                                              q.c_t1 - q.a_t1, q.p_t0 - q.a_t0, q.p_t1 - q.a_t1))
     return no_contact();
   RoundingGuard guard;
-  const auto p = moving(q.p_t0, q.p_t1), a = moving(q.a_t0, q.a_t1), b = moving(q.b_t0, q.b_t1),
-             c = moving(q.c_t0, q.c_t1);
-  const AxisOrder order((q.b_t0 + q.b_t1 - q.a_t0 - q.a_t1).cross(q.c_t0 + q.c_t1 - q.a_t0 - q.a_t1));
+  const auto p = moving_point<Interval>(q.p_t0, q.p_t1), a = moving_point<Interval>(q.a_t0, q.a_t1),
+             b = moving_point<Interval>(q.b_t0, q.b_t1), c = moving_point<Interval>(q.c_t0, q.c_t1);
+  const AxisOrder order(
+      (q.b_t0 + q.b_t1 - q.a_t0 - q.a_t1).cross(q.c_t0 + q.c_t1 - q.a_t0 - q.a_t1));
   const VertexFaceInclusion inclusion(p, a, b, c, order);
   // Excluded over the whole step in the best-conditioned projection: no contact, whatever the
   // cubic (cheaper than the cubic for most queries the semi-static stage leaves).
@@ -243,10 +241,12 @@ FilterOutcome edge_edge_ccd_filter(const EdgeEdgeQuery& q, const CcdOptions& opt
                                              q.eb1_t0 - q.ea0_t0, q.eb1_t1 - q.ea0_t1))
     return no_contact();
   RoundingGuard guard;
-  const auto a0 = moving(q.ea0_t0, q.ea0_t1), a1 = moving(q.ea1_t0, q.ea1_t1),
-             b0 = moving(q.eb0_t0, q.eb0_t1), b1 = moving(q.eb1_t0, q.eb1_t1);
-  const AxisOrder order((q.ea1_t0 + q.ea1_t1 - q.ea0_t0 - q.ea0_t1)
-                            .cross(q.eb1_t0 + q.eb1_t1 - q.eb0_t0 - q.eb0_t1));
+  const auto a0 = moving_point<Interval>(q.ea0_t0, q.ea0_t1),
+             a1 = moving_point<Interval>(q.ea1_t0, q.ea1_t1),
+             b0 = moving_point<Interval>(q.eb0_t0, q.eb0_t1),
+             b1 = moving_point<Interval>(q.eb1_t0, q.eb1_t1);
+  const AxisOrder order(
+      (q.ea1_t0 + q.ea1_t1 - q.ea0_t0 - q.ea0_t1).cross(q.eb1_t0 + q.eb1_t1 - q.eb0_t0 - q.eb0_t1));
   const EdgeEdgeInclusion inclusion(a0, a1, b0, b1, order);
   if (inclusion.excluded_in_leading_projection(Interval(0.0, options.t_max))) return no_contact();
   const auto cubic = predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1);

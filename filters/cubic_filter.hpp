@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "core/predicates/motion.hpp"
-#include "filters/interval.hpp"
+#include "filters/certified_numbers.hpp"
 
 namespace exactccd::filters {
 

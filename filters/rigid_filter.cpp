@@ -7,8 +7,8 @@
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/rigid_coplanarity.hpp"
-#include "filters/extended_interval.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/x87_interval.hpp"
+#include "filters/certified_numbers.hpp"
 #include "filters/polynomial_bernstein.hpp"
 
 namespace exactccd::filters {
@@ -121,7 +121,7 @@ FixedPoly<NT, 5> coplanarity_over(const DoubleRigidQuery& q) {
              : edge_edge_rigid_coplanarity<NT>(x[0], x[1], x[2], x[3], q.side[0], q.side[1]);
 }
 
-#if EXACTCCD_EXTENDED_INTERVAL
+#if EXACTCCD_X87_INTERVAL
 /// Signs of g at doubles from its coefficients in extended-precision intervals, formed on
 /// first use (about 2^11 times tighter than the double ones).
 class ExtendedSigns {
@@ -131,7 +131,7 @@ class ExtendedSigns {
   int sign_at(double t) {
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
     prepare();
-    return extended_sign(predicates::evaluate(g_, ExtendedInterval(t)));
+    return predicates::certain_sign_or_zero(predicates::evaluate(g_, predicates::X87Interval(t)));
   }
   /// A double strictly inside (lo, hi) (some double must lie there) near the root (g(hi) of
   /// sign sign_hi): Newton's method on the midpoints of the extended coefficients, safeguarded
@@ -163,12 +163,12 @@ class ExtendedSigns {
   void prepare() {
     if (ready_) return;
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
-    g_ = coplanarity_over<ExtendedInterval>(query_);
+    g_ = coplanarity_over<predicates::X87Interval>(query_);
     ready_ = true;
   }
 
   const DoubleRigidQuery& query_;
-  FixedPoly<ExtendedInterval, 5> g_;
+  FixedPoly<predicates::X87Interval, 5> g_;
   bool ready_ = false;
 };
 #endif
@@ -315,7 +315,7 @@ class RootSearch {
              const CcdOptions& options, RigidExactSigns& exact)
       : g_(g), guide_(g), paths_(paths), type_(query.type), t_max_(options.t_max),
         toi_width_(options.toi_width), exact_(exact)
-#if EXACTCCD_EXTENDED_INTERVAL
+#if EXACTCCD_X87_INTERVAL
         , extended_(query)
 #endif
   {
@@ -343,7 +343,7 @@ class RootSearch {
   int fine_sign_at(double t) {
     const CertifiedSign s = certified_sign(predicates::evaluate(g_, Interval(t)));
     if (s != CertifiedSign::uncertain) return static_cast<int>(s);
-#if EXACTCCD_EXTENDED_INTERVAL
+#if EXACTCCD_X87_INTERVAL
     const int x = extended_.sign_at(t);
     if (x != 0) return x == 2 ? 0 : x;
 #endif
@@ -399,7 +399,7 @@ class RootSearch {
   const QueryType type_;
   const double t_max_, toi_width_;
   RigidExactSigns& exact_;
-#if EXACTCCD_EXTENDED_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   ExtendedSigns extended_;
 #endif
   bool exact_used_ = false;     // exact signs consulted by the current narrowing
@@ -466,7 +466,7 @@ bool RootSearch::narrow_by_intervals(Bracket& b) const {
 /// else exact.
 void RootSearch::narrow_finely(Bracket& b, bool to_tightest) {
   auto done = [&] { return to_tightest ? tightest(b) : toi_final(b); };
-#if EXACTCCD_EXTENDED_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   // First the double nearest the extended guide's root and its neighbour towards r: with the
   // guide as accurate as the extended enclosures, usually the tightest pair at once.
   if (!done()) {

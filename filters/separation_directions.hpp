@@ -14,7 +14,7 @@
 #include <limits>
 #include <utility>
 
-#include "filters/interval.hpp"
+#include "filters/certified_numbers.hpp"
 
 namespace exactccd::filters::separation {
 

@@ -5,16 +5,18 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <type_traits>
 
 #include "core/predicates/separation.hpp"
-#include "filters/interval.hpp"
+#include "filters/certified_numbers.hpp"
 #include "filters/separation_directions.hpp"
-#include "filters/separation_exact_signs.hpp"
 #include "filters/separation_search.hpp"
 
 namespace exactccd::filters {
 
 namespace {
+
+using predicates::moving_point;
 
 using predicates::Vec3;
 
@@ -54,17 +56,6 @@ bool boxes_apart(const std::array<const Eigen::Vector3d*, N1>& first0,
   return false;
 }
 
-predicates::MovingPoint<Interval> moving(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1) {
-  return predicates::linear_motion(Vec3<Interval>{x0.x(), x0.y(), x0.z()},
-                                   Vec3<Interval>{x1.x(), x1.y(), x1.z()});
-}
-
-template <class Motion, class Separation>
-SeparationOutcome first_within(const Motion& m, const Separation& s,
-                               const separation::SignsAtDoubles& exact,
-                               const CcdOptions& options) {
-  return separation::FirstWithinSearch<Motion, Separation>(m, s, exact, options).run();
-}
 
 using Vertices = std::array<const Eigen::Vector3d*, 4>;
 
@@ -103,65 +94,28 @@ struct FactoredEnclosures {
   }
 };
 
-/// ExactSignsAtDoubles' members for one query type.
-struct ExactMembers {
-  using E = separation::ExactSignsAtDoubles;
-  int (E::*sign)(int, double) const;
-  double (E::*secant)(int, double, double) const;
-  void (E::*coefficients)(separation::CoefficientTable*) const;
-  E::Probe (E::*probe)(int, double) const;
-  double (E::*guess)(int, double, double) const;
-};
-constexpr ExactMembers kVertexFaceMembers{
-    &separation::ExactSignsAtDoubles::vertex_face_sign,
-    &separation::ExactSignsAtDoubles::vertex_face_secant,
-    &separation::ExactSignsAtDoubles::vertex_face_coefficients,
-    &separation::ExactSignsAtDoubles::vertex_face_probe,
-    &separation::ExactSignsAtDoubles::vertex_face_guess};
-constexpr ExactMembers kEdgeEdgeMembers{
-    &separation::ExactSignsAtDoubles::edge_edge_sign,
-    &separation::ExactSignsAtDoubles::edge_edge_secant,
-    &separation::ExactSignsAtDoubles::edge_edge_coefficients,
-    &separation::ExactSignsAtDoubles::edge_edge_probe,
-    &separation::ExactSignsAtDoubles::edge_edge_guess};
-
 /// The search over [0, t_max] for the four moving vertices (t0, t1) of one query type: `make`
-/// builds its separation, `members` are ExactSignsAtDoubles' members for that type (the
-/// integer query built only when first asked). Not inlined: its frame (the polynomial table,
-/// the integer query) is large, and most queries never get here.
+/// builds its separation. Not inlined: its frame (the polynomial table) is large, and most
+/// queries never get here.
 template <class Motion, class Make>
-[[gnu::noinline]] SeparationOutcome search_for_first_within(const Vertices& t0,
-                                                            const Vertices& t1,
-                                                            const CcdOptions& options, Make make,
-                                                            const ExactMembers& members) {
+[[gnu::noinline]] SeparationOutcome search_for_first_within(
+    const Vertices& t0, const Vertices& t1, const CcdOptions& options, Make make,
+    const predicates::SeparationExactStage& exact) {
   using separation::MovingVertex;
   const RoundingGuard upward;
   const Motion m{{MovingVertex(*t0[0], *t1[0]), MovingVertex(*t0[1], *t1[1]),
                   MovingVertex(*t0[2], *t1[2]), MovingVertex(*t0[3], *t1[3])}};
   const Interval delta2 = Interval(options.min_separation) * options.min_separation;
-  const auto s = make(moving(*t0[0], *t1[0]), moving(*t0[1], *t1[1]), moving(*t0[2], *t1[2]),
-                      moving(*t0[3], *t1[3]), delta2);
-  std::optional<separation::ExactSignsAtDoubles> integer;
-  auto exact_signs = [&]() -> const separation::ExactSignsAtDoubles& {
-    if (!integer) integer.emplace(t0, t1, options.min_separation);
-    return *integer;
-  };
+  const auto s =
+      make(moving_point<Interval>(*t0[0], *t1[0]), moving_point<Interval>(*t0[1], *t1[1]),
+           moving_point<Interval>(*t0[2], *t1[2]), moving_point<Interval>(*t0[3], *t1[3]), delta2);
   const FactoredEnclosures<Motion, Make> factored{m, make, delta2};
-  // Each function captures at most two references: std::function stores them without
-  // allocating.
-  const separation::SignsAtDoubles exact{
-      [&factored](int k, double t) { return factored(k, t); },
-      [&factored](double lo, double hi, separation::CoefficientValues* out) {
-        factored.all_over(Interval(lo, hi), out);
-      },
-      [&](int k, double t) { return (exact_signs().*members.sign)(k, t); },
-      [&](int k, double lo, double hi) { return (exact_signs().*members.secant)(k, lo, hi); },
-      [&](separation::CoefficientTable* out) { (exact_signs().*members.coefficients)(out); },
-      [&](int k, double t) { return (exact_signs().*members.probe)(k, t); },
-      [&](int k, double lo, double hi) { return (exact_signs().*members.guess)(k, lo, hi); }};
-  SeparationOutcome out = first_within(m, s, exact, options);
+  SeparationOutcome out =
+      separation::FirstWithinSearch<Motion, std::decay_t<decltype(s)>, decltype(factored)>(
+          m, s, factored, exact, options)
+          .run();
   // The stage: exact_at_double when a sign, guess or table needed exact integers.
-  if (integer && integer->used_exact_arithmetic()) out.exact_used = true;
+  if (exact.used_exact_arithmetic()) out.exact_used = true;
   return out;
 }
 
@@ -169,7 +123,7 @@ template <class Motion, class Make>
 template <class Motion, class WholeStep, class Make>
 SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
                                     const CcdOptions& options, WholeStep apart_over_whole_step,
-                                    Make make, const ExactMembers& members) {
+                                    Make make, const predicates::SeparationExactStage& exact) {
   // Most pairs that pass culling are decided here, from the input doubles alone, rounding to
   // nearest as the library's entry has set.
   if (apart_over_whole_step(t0, t1, options.min_separation)) {
@@ -178,7 +132,7 @@ SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
     out.cleared_until = options.t_max;
     return out;
   }
-  return search_for_first_within<Motion>(t0, t1, options, make, members);
+  return search_for_first_within<Motion>(t0, t1, options, make, exact);
 }
 
 }  // namespace
@@ -194,20 +148,22 @@ bool edge_edge_separation_culling(const EdgeEdgeQuery& q, double delta) {
 }
 
 SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
-                                                const CcdOptions& options) {
+                                                const CcdOptions& options,
+                                                const predicates::SeparationExactStage& exact) {
   return separation_filter<separation::VertexFaceMotion>(
       {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0}, {&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1}, options,
       separation::vertex_face_apart_over_whole_step,
       [](const auto&... x) { return predicates::vertex_face_separation(x...); },
-      kVertexFaceMembers);
+      exact);
 }
 
-SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options) {
+SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
+                                              const predicates::SeparationExactStage& exact) {
   return separation_filter<separation::EdgeEdgeMotion>(
       {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0}, {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
       options, separation::edge_edge_apart_over_whole_step,
       [](const auto&... x) { return predicates::edge_edge_separation(x...); },
-      kEdgeEdgeMembers);
+      exact);
 }
 
 }  // namespace exactccd::filters

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 
+#include "core/predicates/separation_exact_stage.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::filters {
@@ -15,8 +16,7 @@ namespace exactccd::filters {
 bool vertex_face_separation_culling(const VertexFaceQuery& q, double delta);
 bool edge_edge_separation_culling(const EdgeEdgeQuery& q, double delta);
 
-/// The most region polynomials a separation has (edge-edge: 24).
-inline constexpr int kMaxSeparationPolynomials = 24;
+using predicates::kMaxSeparationPolynomials;
 
 enum class SeparationVerdict : std::uint8_t {
   never_within,  ///< certainly never within delta on [0, t_max]
@@ -41,11 +41,15 @@ struct SeparationOutcome {
   std::array<signed char, kMaxSeparationPolynomials> known_signs{};
 };
 
-/// The interval stages on finite input, options validated, delta = options.min_separation > 0.
-/// Called rounding to nearest, without flush-to-zero (the library's entries set it; the
-/// whole-step test relies on it and the rest sets its own mode). No heap allocation.
+/// The interval stages on finite input, options validated, delta = options.min_separation > 0;
+/// `exact` answers for the same query (exact/stages/separation_exact_signs.hpp) where the
+/// intervals cannot tell. Called rounding to nearest, without flush-to-zero (the library's
+/// entries set it; the whole-step test relies on it and the rest sets its own mode). No heap
+/// allocation but the exact stage's.
 SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
-                                                const CcdOptions& options);
-SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options);
+                                                const CcdOptions& options,
+                                                const predicates::SeparationExactStage& exact);
+SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
+                                              const predicates::SeparationExactStage& exact);
 
 }  // namespace exactccd::filters

@@ -9,21 +9,23 @@
 #include <cmath>
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <optional>
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/motion.hpp"
 #include "exactccd/types.hpp"
-#include "filters/interval.hpp"
-#include "filters/separation_exact_signs.hpp"
+#include "core/predicates/separation_exact_stage.hpp"
+#include "filters/certified_numbers.hpp"
 #include "filters/separation_filter.hpp"
 
 namespace exactccd::filters::separation {
 
 using predicates::FixedPoly;
 using Poly6 = FixedPoly<Interval, 6>;
+using CoefficientTable = predicates::SeparationCoefficientTable;
+using CoefficientValues = predicates::SeparationValues;
+using ExactStage = predicates::SeparationExactStage;
 
 /// The region polynomials of a separation (its numbering) with interval coefficients, padded
 /// to degree 6, each computed when first asked for: over a piece, the positions' enclosures
@@ -114,26 +116,6 @@ constexpr int kAdvanceRounds = 2;
 constexpr int kAdvanceSteps = 6;
 constexpr double kAdvancedPiece = 0x1p-8;
 
-/// What the search asks where the enclosures of its table cannot tell: an enclosure of
-/// region polynomial k at the double t from interval positions of the vertices at t (the
-/// polynomial in its factored form, far tighter near a root than its expanded coefficients:
-/// a vertex at distance delta from a corner is a small difference of large squares there);
-/// then exact arithmetic: the exact sign of polynomial k at t, a secant guess (never a
-/// decision) of its root in (lo, hi) from its exact values there, and every region
-/// polynomial enclosed from its exact coefficients (ExactSignsAtDoubles::*_coefficients).
-struct SignsAtDoubles {
-  std::function<Interval(int k, double t)> factored;  // an enclosure of polynomial k at t
-  /// Enclosures of every region polynomial over [lo, hi] from the positions' enclosures over
-  /// it, in one pass (no coefficients).
-  std::function<void(double lo, double hi, CoefficientValues*)> factored_over;
-  std::function<int(int k, double t)> sign;
-  std::function<double(int k, double lo, double hi)> secant;
-  std::function<void(CoefficientTable*)> coefficients;
-  /// For a polynomial with a kernel (ExactSignsAtDoubles::Probe): its exact sign at t and a
-  /// Newton guess from the same value; and a guess of its root in (lo, hi) in plain arithmetic.
-  std::function<ExactSignsAtDoubles::Probe(int k, double t)> probe;
-  std::function<double(int k, double lo, double hi)> guess;
-};
 
 /// Every piece before the current one is certainly never within delta (`cleared_` is its
 /// end). A piece is excluded by separating directions (depth <= kDirectionDepth), or when the
@@ -141,14 +123,20 @@ struct SignsAtDoubles {
 /// optimistically (within is monotone); a piece over which every sign is certain but one
 /// polynomial's, monotone with opposite certain signs at the ends, holds the first contact at
 /// that root when the predicate certainly holds at its end.
-template <class Motion, class Separation>
+///
+/// Where the enclosures of its table cannot tell, the search asks `Factored` (an enclosure of
+/// region polynomial k at the double t, `factored(k, t)`, and of every one over [lo, hi],
+/// `factored.all_over(Interval(lo, hi), &values)`, from interval positions of the vertices: the
+/// polynomials' factored forms, far tighter near a root than their expanded coefficients), then
+/// the exact stage (exact signs at doubles, guesses that never decide, the exact coefficients).
+template <class Motion, class Separation, class Factored>
 class FirstWithinSearch {
  public:
   enum class Step : std::uint8_t { excluded, found, give_up };
 
-  FirstWithinSearch(const Motion& m, const Separation& s, const SignsAtDoubles& exact,
-                    const CcdOptions& options)
-      : m_(m), separation_(s), exact_(exact), options_(options),
+  FirstWithinSearch(const Motion& m, const Separation& s, const Factored& factored,
+                    const ExactStage& exact, const CcdOptions& options)
+      : m_(m), separation_(s), factored_(factored), exact_(exact), options_(options),
         delta2_(Interval(options.min_separation) * options.min_separation) {}
 
   SeparationOutcome run() {
@@ -250,8 +238,8 @@ class FirstWithinSearch {
 
   /// Replaces the table by the exact coefficients' enclosures; false when it already is.
   bool sharpen() {
-    if (sharp_ || !exact_.coefficients) return false;
-    table_.replace_all([this](CoefficientTable* t) { exact_.coefficients(t); });
+    if (sharp_) return false;
+    table_.replace_all([this](CoefficientTable* t) { exact_.exact_coefficients(t); });
     exact_used_ = sharp_ = true;
     return true;
   }
@@ -268,9 +256,9 @@ class FirstWithinSearch {
     PieceSigns(FirstWithinSearch* search, double lo, double hi, bool factored = true)
         : search_(search), lo_(lo), hi_(hi), factored_(factored) {}
     CertifiedSign operator()(int k) {
-      if (factored_ && !search_->sharp_ && search_->exact_.factored_over) {
+      if (factored_ && !search_->sharp_) {
         if (!have_values_) {
-          search_->exact_.factored_over(lo_, hi_, &values_);
+          search_->factored_.all_over(Interval(lo_, hi_), &values_);
           have_values_ = true;
         }
         const CertifiedSign s = certified_sign(values_[k]);
@@ -446,23 +434,23 @@ class FirstWithinSearch {
   CertifiedSign interval_sign_at(int k, double t) {
     // Without coefficients at hand, the positions' enclosure first (it needs none); each
     // enclosure at most once.
-    const bool factored_first = !table_.computed(k) && exact_.factored;
+    const bool factored_first = !table_.computed(k);
     if (factored_first) {
-      const CertifiedSign s = certified_sign(exact_.factored(k, t));
+      const CertifiedSign s = certified_sign(factored_(k, t));
       if (s != CertifiedSign::uncertain) return s;
     }
     const CertifiedSign s = certified_sign(predicates::evaluate(poly(k), Interval(t)));
-    if (s != CertifiedSign::uncertain || !exact_.factored || factored_first) return s;
-    return certified_sign(exact_.factored(k, t));
+    if (s != CertifiedSign::uncertain || factored_first) return s;
+    return certified_sign(factored_(k, t));
   }
 
-  /// The sign of polynomial k at the double t: certified by intervals, else by `exact_.sign`
+  /// The sign of polynomial k at the double t: certified by intervals, else by the exact stage
   /// (double-double with an error bound, else exact integers; the caller learns from it
   /// whether exact arithmetic was needed).
   int sign_at(int k, double t) {
     const CertifiedSign s = interval_sign_at(k, t);
     if (s != CertifiedSign::uncertain) return static_cast<int>(s);
-    return exact_.sign(k, t);
+    return exact_.sign_at(k, t);
   }
 
   /// The first contact is the root r in (lo, hi) of polynomial k, of sign s_lo at lo, g
@@ -474,10 +462,8 @@ class FirstWithinSearch {
   /// neighbour on r's side), to the tightest pair of doubles (or toi_width).
   /// PROOF: proofs/min_separation.md#interval-search
   Step tighten(int k, double lo, double hi, int s_lo) {
-    if (exact_.probe && exact_.guess) {
-      const double start = exact_.guess(k, lo, hi);
-      if (!std::isnan(start)) return tighten_by_newton(k, lo, hi, s_lo, start);
-    }
+    const double start = exact_.newton_guess(k, lo, hi);
+    if (!std::isnan(start)) return tighten_by_newton(k, lo, hi, s_lo, start);
     constexpr int kGuidedSteps = 16;
     const Poly6& g = poly(k);
     bool exact_phase = false;  // the interval signs have failed once: exact signs from here
@@ -505,10 +491,10 @@ class FirstWithinSearch {
         const double t = use_guess ? guess : mid;
         Interval v = predicates::evaluate(g, Interval(t));
         CertifiedSign s = certified_sign(v);
-        if (s == CertifiedSign::uncertain && exact_.factored) {
+        if (s == CertifiedSign::uncertain) {
           // The positions' enclosure: its sign, and (unless the table holds the exact
           // coefficients' scaled polynomials) its far narrower value for the guesses.
-          const Interval f = exact_.factored(k, t);
+          const Interval f = factored_(k, t);
           s = certified_sign(f);
           if (!sharp_ && f.sup() - f.inf() < v.sup() - v.inf()) v = f;
         }
@@ -539,11 +525,11 @@ class FirstWithinSearch {
         exact_phase = true;
         continue;
       }
-      // Near r the interval cannot tell: a point guessed from g's exact values (exact_.secant;
+      // Near r the interval cannot tell: a point guessed from g's exact values (secant_guess;
       // its exact sign decides) and its neighbour on r's side, so that a good guess closes the
       // bracket to adjacent doubles at once.
       if (lo > 0) {
-        const double exact_guess = exact_.secant(k, lo, hi);
+        const double exact_guess = exact_.secant_guess(k, lo, hi);
         if (exact_guess > lo && exact_guess < hi) mid = exact_guess;
       }
       const int s = sign_at(k, mid);
@@ -583,7 +569,7 @@ class FirstWithinSearch {
       double mid = 0;
       if (!predicates::middle_double(lo, hi, &mid)) break;
       if (!(t > lo && t < hi) || probes >= kNewtonProbes) t = mid;
-      const ExactSignsAtDoubles::Probe p = exact_.probe(k, t);
+      const ExactStage::Probe p = exact_.probe_at(k, t);
       if (p.sign == 0) {
         lo = hi = t;
         break;
@@ -601,7 +587,8 @@ class FirstWithinSearch {
 
   const Motion& m_;
   const Separation& separation_;
-  const SignsAtDoubles& exact_;
+  const Factored& factored_;
+  const ExactStage& exact_;
   const CcdOptions& options_;
   const Interval delta2_;
   PolynomialTable<Separation> table_{separation_};

@@ -15,6 +15,7 @@
 #include "exact/reference/exact_ccd.hpp"
 #include "exact/reference/min_separation.hpp"
 #include "core/float_only/tolerance_ccd.hpp"
+#include "exact/stages/separation_exact_signs.hpp"
 #include "filters/separation_filter.hpp"
 #include "exact/stages/integer_query.hpp"
 #include "filters/ccd_filters.hpp"
@@ -49,14 +50,6 @@ const char* to_string(QueryType type) noexcept {
 
 namespace {
 
-/// The float stages assume round-to-nearest and gradual underflow (the semi-static bounds,
-/// float_only); the caller's whole FP state is restored on every return, exceptions included.
-/// PROOF: proofs/filters.md#fp-environment
-class RoundToNearest : predicates::FpEnvironmentGuard {
- public:
-  RoundToNearest() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
-};
-
 RationalPoint rational(const Eigen::Vector3d& x, const char* name) {
   if (!x.allFinite())
     throw std::invalid_argument(std::string("exactccd: non-finite coordinate in ") + name);
@@ -80,29 +73,39 @@ RationalQuery to_rational(const EdgeEdgeQuery& q) {
            rational(q.eb0_t1, "eb0_t1"), rational(q.eb1_t1, "eb1_t1")}};
 }
 
+namespace {
+
+/// The exact path with the rational delta (options checked, the FP state set; options'
+/// min_separation is not read).
+CcdResult exact_with_separation(const RationalQuery& query, const mpq_class& delta,
+                                const CcdOptions& options) {
+  if (sgn(delta) == 0)
+    return query.type == QueryType::vertex_face ? exact::vertex_face_ccd_exact(query, options)
+                                                : exact::edge_edge_ccd_exact(query, options);
+  return query.type == QueryType::vertex_face
+             ? exact::vertex_face_min_separation_exact(query, delta, options)
+             : exact::edge_edge_min_separation_exact(query, delta, options);
+}
+
+}  // namespace
+
 CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
-  const RoundToNearest nearest;  // the TOI's conversions to doubles compare doubles
+  const predicates::RoundToNearestGuard nearest;  // the TOI's conversions to doubles compare doubles
   check_ccd_options(options);
-  if (options.min_separation > 0)
-    return exact_ccd(query, mpq_class(options.min_separation), options);
-  return query.type == QueryType::vertex_face ? exact::vertex_face_ccd_exact(query, options)
-                                              : exact::edge_edge_ccd_exact(query, options);
+  return exact_with_separation(query, mpq_class(options.min_separation), options);
 }
 
 CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
                     const CcdOptions& options) {
-  const RoundToNearest nearest;
+  const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
+  if (options.min_separation != 0.0)
+    throw std::invalid_argument(
+        "exactccd: give the minimum separation once: options.min_separation or the rational "
+        "argument, not both");
   if (sgn(min_separation) < 0)
     throw std::invalid_argument("exactccd: min_separation must be >= 0");
-  if (sgn(min_separation) == 0) {
-    CcdOptions contact = options;
-    contact.min_separation = 0.0;
-    return exact_ccd(query, contact);
-  }
-  return query.type == QueryType::vertex_face
-             ? exact::vertex_face_min_separation_exact(query, min_separation, options)
-             : exact::edge_edge_min_separation_exact(query, min_separation, options);
+  return exact_with_separation(query, min_separation, options);
 }
 
 namespace {
@@ -196,6 +199,22 @@ CcdResult filtered_ccd(const Query& q, const CcdOptions& options, Culled culled,
   return filters_then_exact(q, options, filter, exact_path);
 }
 
+/// The exact stage of minimum separation at double times for a query (no work until asked).
+exact::separation::ExactSignsAtDoubles separation_exact_stage(const VertexFaceQuery& q,
+                                                              double delta) {
+  return {{&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0},
+          {&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1},
+          delta,
+          predicates::SeparationPair::vertex_face};
+}
+exact::separation::ExactSignsAtDoubles separation_exact_stage(const EdgeEdgeQuery& q,
+                                                              double delta) {
+  return {{&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0},
+          {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
+          delta,
+          predicates::SeparationPair::edge_edge};
+}
+
 /// Minimum-separation CCD, delta = options.min_separation > 0: culling and filters with delta,
 /// then the exact procedure; or the common practice (uncertified) in Mode::float_only.
 /// PROOF: proofs/min_separation.md#pipeline
@@ -213,7 +232,10 @@ CcdResult min_separation_ccd(const Query& q, const CcdOptions& options, Culled c
     r.decided_by = Stage::culling;
     return r;
   }
-  const filters::SeparationOutcome f = filter(q, options);
+  // The exact stage at double times, for the filter to ask where intervals cannot tell (its
+  // integer query formed only then).
+  const exact::separation::ExactSignsAtDoubles exact_signs = separation_exact_stage(q, delta);
+  const filters::SeparationOutcome f = filter(q, options, exact_signs);
   switch (f.verdict) {
     case filters::SeparationVerdict::never_within:
       r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
@@ -249,7 +271,7 @@ bool all_finite(const EdgeEdgeQuery& q) {
 }  // namespace
 
 CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& options) {
-  const RoundToNearest nearest;
+  const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   if (options.min_separation > 0)
@@ -269,7 +291,7 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& query, const CcdOptions& option
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOptions& options) {
-  const RoundToNearest nearest;
+  const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
   if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
   if (options.min_separation > 0)

@@ -30,13 +30,6 @@ namespace {
 
 using scene::Box;
 using scene::Bvh;
-/// Round to nearest and gradual underflow, whatever the caller or a worker thread runs with
-/// (proofs/filters.md#fp-environment).
-class RoundToNearest : predicates::FpEnvironmentGuard {
- public:
-  RoundToNearest() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
-};
-
 /// The double nearest to q (ties to the even significand), for |q| <= DBL_MAX.
 double nearest_double(const exact::Rational& q) {
   const double lo = exact::round_down(q), hi = exact::round_up(q);
@@ -101,7 +94,7 @@ class Probe {
                             [&](const tbb::blocked_range<Eigen::Index>& r) {
                               // position_at's fast path needs round-to-nearest, whatever
                               // mode the caller (or this worker thread) runs in.
-                              const RoundToNearest nearest;
+                              const predicates::RoundToNearestGuard nearest;
                               for (Eigen::Index v = r.begin(); v != r.end(); ++v)
                                 for (int k = 0; k < 3; ++k)
                                   mesh.own(v, k) = position_at(start(v, k), end(v, k), t);
@@ -114,7 +107,7 @@ class Probe {
       std::vector<Box> boxes(static_cast<std::size_t>(tri.rows()));
       tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, tri.rows(), 4096),
                         [&](const tbb::blocked_range<Eigen::Index>& r) {
-                          const RoundToNearest nearest;  // comparisons: no denormals-are-zero
+                          const predicates::RoundToNearestGuard nearest;  // comparisons: no denormals-are-zero
                           for (Eigen::Index f = r.begin(); f != r.end(); ++f) {
                             Box box = scene::point_box(at->row(tri(f, 0)));
                             scene::grow(box, at->row(tri(f, 1)));
@@ -193,7 +186,7 @@ class Probe {
 
 std::vector<TrianglePair> intersecting_triangle_pairs(const Scene& scene, double t,
                                                       bool self_collision) {
-  const RoundToNearest nearest;
+  const predicates::RoundToNearestGuard nearest;
   if (!(t >= 0.0 && t <= 1.0))
     throw std::invalid_argument("exactccd: intersecting_triangle_pairs needs 0 <= t <= 1");
   Probe probe(scene, self_collision);
@@ -202,7 +195,7 @@ std::vector<TrianglePair> intersecting_triangle_pairs(const Scene& scene, double
 }
 
 DiscreteResult discrete_collision(const Scene& scene, const DiscreteOptions& options) {
-  const RoundToNearest nearest;
+  const predicates::RoundToNearestGuard nearest;
   if (options.bisection_steps < 0 || options.bisection_steps > 60)
     throw std::invalid_argument("exactccd: bisection_steps must lie in [0, 60]");
   DiscreteResult result;

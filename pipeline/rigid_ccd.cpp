@@ -1,5 +1,5 @@
-// The public entry points of rigid-body CCD: input validation, the filters, the exact path, and
-// the contact time of pure rotations. PROOF: proofs/rigid_ccd.md
+// The public entry points of rigid-body CCD: input validation, the filters, the exact path, the
+// uncertified float_only test, and the contact time of pure rotations. PROOF: proofs/rigid_ccd.md
 #include "exactccd/rigid.hpp"
 
 #include <mpfr.h>
@@ -13,10 +13,11 @@
 #include <string>
 #include <tuple>
 
+#include "core/float_only/rigid_float_only_ccd.hpp"
 #include "core/predicates/fp_environment.hpp"
 #include "pipeline/ccd_options_check.hpp"
 #include "exact/reference/rigid_ccd.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/interval.hpp"
 #include "pipeline/rigid_exact_signs.hpp"
 #include "filters/rigid_filter.hpp"
 
@@ -25,11 +26,6 @@ namespace exactccd {
 namespace {
 
 using predicates::Vec3;
-
-class RoundToNearest : predicates::FpEnvironmentGuard {
- public:
-  RoundToNearest() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
-};
 
 /// x as doubles; throws naming "<side>.<field>" (the message is built only then).
 Vec3<double> checked(const Eigen::Vector3d& x, const char* side, const char* field = nullptr) {
@@ -102,8 +98,8 @@ SideTurn side_turn(const filters::DoubleRigidQuery& q, int index) {
 /// their rounding, else compared over the rationals.
 bool equal_squared_norms(const Vec3<double>& a, const Vec3<double>& b) {
   {
-    const filters::RoundingGuard upward;
-    using filters::Interval;
+    const predicates::RoundingGuard upward;
+    using predicates::Interval;
     const Interval na = predicates::squared_norm(Vec3<Interval>{a.x, a.y, a.z});
     const Interval nb = predicates::squared_norm(Vec3<Interval>{b.x, b.y, b.z});
     if (na.sup() < nb.inf() || nb.sup() < na.inf()) return false;
@@ -174,17 +170,24 @@ RigidCcdResult with_time(const CcdResult& ccd, const filters::DoubleRigidQuery& 
   return r;
 }
 
+CcdResult float_only_ccd(const RigidVertexFaceQuery& query, const CcdOptions& options) {
+  return float_only::rigid_vertex_face_ccd(query, options);
+}
+
+CcdResult float_only_ccd(const RigidEdgeEdgeQuery& query, const CcdOptions& options) {
+  return float_only::rigid_edge_edge_ccd(query, options);
+}
+
 template <class Query>
 RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
-  const RoundToNearest nearest;
+  const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
   if (options.min_separation != 0.0)
     throw std::invalid_argument(
         "exactccd: min_separation is not supported for rigid motion (it must be 0)");
-  if (options.mode == Mode::float_only)
-    throw std::invalid_argument(
-        "exactccd: Mode::float_only has no rigid-motion test (use Mode::filtered or exact)");
   const filters::DoubleRigidQuery q = checked_query(query);
+  if (options.mode == Mode::float_only)  // uncertified, for comparison only
+    return with_time(float_only_ccd(query, options), q);
   if (options.mode == Mode::filtered) {
     RigidExactSignsAtDoubles exact(q);
     if (std::optional<CcdResult> r = filters::rigid_ccd_filter(q, options, exact))

@@ -29,7 +29,7 @@
 #include "exact/polynomials/small_polynomial.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rigid.hpp"
-#include "filters/separation_exact_signs.hpp"
+#include "exact/stages/separation_exact_signs.hpp"
 #include "tests/sample_double_queries.hpp"
 #include "tests/test_scale.hpp"
 
@@ -273,13 +273,13 @@ TEST(Allocation, MinimumSeparationCullingAndFilterDoNotAllocate) {
     for (const double delta : {1.5e-7, 1.5e-5, 1.5e-3}) {
       CcdOptions options;
       options.min_separation = delta;
-      const std::uint64_t gmp_before = filters::separation::gmp_evaluations_in_this_thread();
+      const std::uint64_t gmp_before = exact::separation::gmp_evaluations_in_this_thread();
       std::uint64_t count = 0;
       const CcdResult res = decide_counting(all[i], options, &count);
       a.record(all[i], res, count);
       at_doubles.record(
           all[i], res, count,
-          filters::separation::gmp_evaluations_in_this_thread() != gmp_before);
+          exact::separation::gmp_evaluations_in_this_thread() != gmp_before);
     }
   }
   expect_no_allocation_in_float_stages(a, "sample, minimum separation");
@@ -313,13 +313,13 @@ TEST(Allocation, MinimumSeparationCullingAndFilterDoNotAllocate) {
     }
     CcdOptions options;
     options.min_separation = delta;
-    const std::uint64_t gmp_before = filters::separation::gmp_evaluations_in_this_thread();
+    const std::uint64_t gmp_before = exact::separation::gmp_evaluations_in_this_thread();
     std::uint64_t count = 0;
     const CcdResult res = decide_counting(q, options, &count);
     EXPECT_TRUE(res.collides && res.toi_lo == t_star && res.toi_hi == t_star)
         << describe(res) << ", " << describe(q);
     at_doubles.record(q, res, count,
-                      filters::separation::gmp_evaluations_in_this_thread() != gmp_before);
+                      exact::separation::gmp_evaluations_in_this_thread() != gmp_before);
   }
   std::printf("minimum separation at double times: %llu queries within the fixed widths, %llu "
               "with GMP evaluations (%llu of them allocating)\n",

@@ -117,7 +117,7 @@ TEST(AssemblyMeshes, TheTightFitsHaveTheDesignedClearance) {
     // The Scene's cylinder ranges about the z axis (proofs/scene.md#cylinder-ranges).
     const scene::AxisLine z{Vector3d::Zero(), Vector3d::UnitZ()};
     const auto range_of = [&](const PartMesh& pm, const std::string& part, bool lower) {
-      const filters::RoundingGuard upward;
+      const predicates::RoundingGuard upward;
       double best = lower ? INFINITY : 0;
       for (const Part& p : pm.parts) {
         if (p.name != part) continue;

@@ -1,12 +1,13 @@
 // `exactccd rigid SCENE.json` (docs/rigid_scene_format.md): the scenes of tests/data/rigid/ (a
 // cube turning into a wall at a contact parameter worked out by hand, the same turn clear of
 // the wall, the turn in three steps), the answers equal to the library's Scene on the same
-// bodies, a deformable body, and malformed scene and OBJ files (exit status 2, one line on
-// stderr naming the file and the key, never a crash).
+// bodies, a deformable body, mode float_only (the uncertified test), and malformed scene and
+// OBJ files (exit status 2, one line on stderr naming the file and the key, never a crash).
 #include <gmpxx.h>
 #include <sys/stat.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -239,6 +240,30 @@ TEST_F(CliRigid, HelpListsTheExitStatuses) {
   EXPECT_NE(r.out.find("SCENE"), std::string::npos);
 }
 
+TEST_F(CliRigid, FloatOnlyModeRunsTheUncertifiedTest) {
+  // The cube turning into the wall with "mode": "float_only": the uncertified double test finds
+  // the same first contact (a clear, transversal one) with one double near s = 2/3.
+  std::ifstream in(kData / "cube_turns_into_wall.json");
+  json scene = json::parse(in);
+  scene["bodies"][0]["obj"] = (kData / "cube.obj").string();
+  scene["mode"] = "float_only";
+  const RunResult r = run_scene(scene);
+  ASSERT_EQ(r.status, 1) << r.err;
+  const json j = parse_json(r);
+  EXPECT_EQ(j["mode"], "float_only");
+  EXPECT_EQ(j["first_contact_step"], 1);
+  const json& c = j["steps"][0]["contact"];
+  const double lo = c["s_lo"], hi = c["s_hi"];
+  EXPECT_EQ(lo, hi);
+  EXPECT_NEAR(lo, 2.0 / 3.0, 1e-12);
+  EXPECT_EQ(c["type"], "vertex-face");
+  EXPECT_EQ(c["first"]["vertex"], 2);
+  EXPECT_EQ(c["second"]["triangle"], 0);
+  const RunResult text = run_scene(scene, false);
+  EXPECT_EQ(text.status, 1);
+  EXPECT_NE(text.out.find("mode float_only"), std::string::npos) << text.out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Malformed input: exit status 2, one line on stderr naming the file and the key
 
@@ -317,8 +342,6 @@ TEST_F(CliRigid, MalformedScenesAreRejectedWithTheKey) {
   expect_rejected(s, {"bodies[1].end_positions", "1 rows", "3 vertices"});
   s = good_scene(); s["bodies"][0]["name"] = 7;
   expect_rejected(s, {"bodies[0].name", "a string"});
-  s = good_scene(); s["mode"] = "float_only";
-  expect_rejected(s, {"mode", "float_only has no rigid-motion test"});
   s = good_scene(); s["mode"] = "fast";
   expect_rejected(s, {"mode", "'fast'"});
   for (double bad : {0.0, -1.0, 1.5}) {

@@ -595,9 +595,32 @@ TEST_F(CliTest, BenchRigidTimesBothModesWithoutDisagreement) {
       << text.out;
 }
 
+TEST_F(CliTest, BenchRigidGradesFloatOnlyAgainstTheCertifiedMode) {
+  // float_only (uncertified) runs on rigid pairs too; it is graded against the first certified
+  // mode and never counted as a disagreement (exit status 0).
+  const RunResult r = run({"bench", "--rigid", "--rigid-count", "30", "--seed", "3",
+                           "--repetitions", "1", "--modes", "default,float_only", "--json"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = parse_json(r);
+  ASSERT_TRUE(j.is_object()) << r.out;
+  EXPECT_EQ(j.value("disagreements", 1u), 0u);
+  const nlohmann::json& modes = j.at("modes");
+  ASSERT_EQ(modes.size(), 2u) << r.out;
+  EXPECT_EQ(modes[1].value("mode", ""), "float_only");
+  EXPECT_EQ(modes[1].value("graded_against", ""), "default");
+  EXPECT_TRUE(modes[1].at("false_positives").is_number());
+  EXPECT_TRUE(modes[1].at("false_negatives").is_number());
+  EXPECT_TRUE(modes[1].at("late_tois").is_number());
+  EXPECT_EQ(modes[1].at("stage_share").value("float_only", 0.0), 1.0);
+  EXPECT_EQ(modes[0].at("stage_share").value("float_only", 1.0), 0.0);
+  const RunResult text = run({"bench", "--rigid", "--rigid-count", "12", "--repetitions", "1",
+                              "--modes", "exact,float_only"});
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("float_only against exact"), std::string::npos) << text.out;
+}
+
 TEST_F(CliTest, BenchRigidRejectsBadCommandLine) {
   expect_bad_input(run({"bench", "--rigid", kSampleFile.string()}), {"--rigid", "PATH"});
-  expect_bad_input(run({"bench", "--rigid", "--modes", "float_only"}), {"float_only"});
   expect_bad_input(run({"bench", "--rigid-count", "10"}), {"--rigid-count", "--rigid"});
   expect_bad_input(run({"bench", "--rigid", "--rigid-count", "0"}), {"--rigid-count"});
   expect_bad_input(run({"bench", "--rigid", "--resolution", "4"}), {"--resolution"});

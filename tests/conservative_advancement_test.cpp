@@ -17,14 +17,14 @@
 #include <random>
 
 #include "exactccd/rational_query.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/interval.hpp"
 #include "filters/separation_directions.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd {
 namespace {
 
-using filters::Interval;
+using predicates::Interval;
 using filters::separation::EdgeEdgeMotion;
 using filters::separation::MovingVertex;
 using filters::separation::VertexFaceMotion;
@@ -68,7 +68,7 @@ template <class Motion>
 void check(const Pair& p, QueryType type, double lo, double delta, Tally* tally) {
   double end = lo, estimate = 0;
   {
-    const filters::RoundingGuard upward;
+    const predicates::RoundingGuard upward;
     const Interval delta2 = Interval(delta) * delta;
     end = motion_of<Motion>(p).advance(lo, 1.0, delta2, delta, &estimate);
   }

@@ -1,5 +1,5 @@
 // Signs of the minimum-separation region polynomials at doubles from double-double with a
-// running error bound (filters/double_double_bounds.hpp, ExactSignsAtDoubles::bounded_value,
+// running error bound (core/predicates/double_double_bounds.hpp, ExactSignsAtDoubles::bounded_value,
 // and the tightening's probes, ExactSignsAtDoubles::*_probe),
 // against the same polynomials over the rationals (core/predicates/separation.hpp read in
 // mpq_class), where it matters: at the two adjacent doubles around each root of every kernel
@@ -20,7 +20,7 @@
 #include <string>
 
 #include "core/predicates/separation.hpp"
-#include "filters/separation_exact_signs.hpp"
+#include "exact/stages/separation_exact_signs.hpp"
 #include "separation_rational.hpp"
 #include "test_scale.hpp"
 
@@ -40,20 +40,20 @@ struct Tally {
   long checked = 0, wrong = 0;
 };
 
-int sign_at(const filters::separation::ExactSignsAtDoubles& s, bool vf, int k, double t) {
+int sign_at(const exact::separation::ExactSignsAtDoubles& s, bool vf, int k, double t) {
   return vf ? s.vertex_face_sign(k, t) : s.edge_edge_sign(k, t);
 }
 
 /// The tightening's probe (the same sign, with a Newton guess from its value).
-filters::separation::ExactSignsAtDoubles::Probe probe_at(
-    const filters::separation::ExactSignsAtDoubles& s, bool vf, int k, double t) {
+exact::separation::ExactSignsAtDoubles::Probe probe_at(
+    const exact::separation::ExactSignsAtDoubles& s, bool vf, int k, double t) {
   return vf ? s.vertex_face_probe(k, t) : s.edge_edge_probe(k, t);
 }
 
 /// For every kernel polynomial with a sign change over [0, 1]: the adjacent doubles around a
 /// root and three ulps either side, plus a few random times.
 void check_case(const Case& c, bool vf, std::mt19937_64& rng, Tally* tally) {
-  const filters::separation::ExactSignsAtDoubles signs(
+  const exact::separation::ExactSignsAtDoubles signs(
       {&c.t0[0], &c.t0[1], &c.t0[2], &c.t0[3]}, {&c.t1[0], &c.t1[1], &c.t1[2], &c.t1[3]},
       c.delta);
   auto expect = [&](int k, double t, const std::string& where) {
@@ -144,14 +144,14 @@ Case random_case(std::mt19937_64& rng, int kind) {
 TEST(DoubleDoubleSigns, EqualTheRationalSignsAtTheDoublesAroundEveryRoot) {
   std::mt19937_64 rng(2026);
   Tally tally;
-  const std::uint64_t before = filters::separation::bounded_decisions_in_this_thread();
+  const std::uint64_t before = exact::separation::bounded_decisions_in_this_thread();
   const auto n = test::scaled_count(35, test::scale_from_environment());
   for (int kind = 0; kind <= 6; ++kind)
     for (std::uint64_t i = 0; i < n; ++i) {
       const Case c = random_case(rng, kind);
       check_case(c, i % 2 == 0, rng, &tally);
     }
-  const std::uint64_t bounded = filters::separation::bounded_decisions_in_this_thread() - before;
+  const std::uint64_t bounded = exact::separation::bounded_decisions_in_this_thread() - before;
   EXPECT_EQ(tally.wrong, 0);
   // Not vacuous: many roots were found, and the bounded path decided most signs.
   EXPECT_GT(tally.checked, static_cast<long>(20 * n));
@@ -172,16 +172,16 @@ TEST(DoubleDoubleSigns, AScaledInputThatRoundsToTheSmallestNormalIsLeftToTheInte
   c.t0[2][2] = std::nextafter(0x1p-1021, 0.0);  // (2^53 - 1) 2^-1074
   c.delta = 0.25;
   for (const bool vf : {true, false}) {
-    const filters::separation::ExactSignsAtDoubles signs(
+    const exact::separation::ExactSignsAtDoubles signs(
         {&c.t0[0], &c.t0[1], &c.t0[2], &c.t0[3]}, {&c.t1[0], &c.t1[1], &c.t1[2], &c.t1[3]},
         c.delta);
     for (const int k : vf ? kVertexFace : kEdgeEdge)
       for (const double t : {0.0, 0.375, 0.5, 1.0}) {
-        const std::uint64_t before = filters::separation::bounded_decisions_in_this_thread();
+        const std::uint64_t before = exact::separation::bounded_decisions_in_this_thread();
         EXPECT_EQ(sign_at(signs, vf, k, t), sgn(rational_value(c, vf, k, t)))
             << (vf ? "vertex-face " : "edge-edge ") << k << " at " << t;
         EXPECT_EQ(probe_at(signs, vf, k, t).sign, sgn(rational_value(c, vf, k, t)));
-        EXPECT_EQ(filters::separation::bounded_decisions_in_this_thread(), before)
+        EXPECT_EQ(exact::separation::bounded_decisions_in_this_thread(), before)
             << (vf ? "vertex-face " : "edge-edge ") << k << " at " << t;
       }
   }

@@ -1,4 +1,4 @@
-// Double-double arithmetic (filters/double_double.hpp), used only for root guesses: sums and
+// Double-double arithmetic (core/predicates/double_double.hpp), used only for root guesses: sums and
 // products of two doubles are exact (hi + lo equals the exact value, checked in rationals),
 // and a double-double expression's value is within 2^-100 of its magnitude's terms on random
 // inputs, where plain doubles lose everything (a difference of large equal-ish products).
@@ -8,13 +8,13 @@
 #include <cmath>
 #include <random>
 
-#include "filters/double_double.hpp"
+#include "core/predicates/double_double.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd {
 namespace {
 
-using filters::dd::DoubleDouble;
+using predicates::dd::DoubleDouble;
 
 mpq_class exact(const DoubleDouble& x) { return mpq_class(x.hi) + mpq_class(x.lo); }
 
@@ -24,7 +24,7 @@ TEST(DoubleDouble, SumsAndProductsOfTwoDoublesAreExact) {
   for (int i = 0; i < 10000; ++i) {
     const double a = std::ldexp(u(rng), static_cast<int>(rng() % 60) - 30);
     const double b = std::ldexp(u(rng), static_cast<int>(rng() % 60) - 30);
-    EXPECT_EQ(exact(filters::dd::difference(a, b)), mpq_class(a) - mpq_class(b));
+    EXPECT_EQ(exact(predicates::dd::difference(a, b)), mpq_class(a) - mpq_class(b));
     EXPECT_EQ(exact(DoubleDouble{a, 0} * DoubleDouble{b, 0}), mpq_class(a) * mpq_class(b));
   }
 }

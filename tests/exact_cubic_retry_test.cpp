@@ -15,7 +15,7 @@
 #include "corpus/random_queries.hpp"
 #include "exact/stages/integer_query.hpp"
 #include "filters/cubic_filter.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/interval.hpp"
 #include "fixed_int_support.hpp"
 #include "test_support.hpp"
 
@@ -153,9 +153,9 @@ TEST(ScaledCoefficientBounds, EncloseTheExactCoefficients) {
 
 /// Inclusion tests that never decide: the filter then relies on isolating the cubic's roots.
 struct NeverDecides {
-  bool excluded(const filters::Interval&) const { return false; }
-  bool excluded_in_leading_projection(const filters::Interval&) const { return false; }
-  bool certainly_included(const filters::Interval&) const { return false; }
+  bool excluded(const predicates::Interval&) const { return false; }
+  bool excluded_in_leading_projection(const predicates::Interval&) const { return false; }
+  bool certainly_included(const predicates::Interval&) const { return false; }
 };
 
 struct IntegerOracle final : filters::ExactAtDoubles {
@@ -173,10 +173,10 @@ struct IntegerOracle final : filters::ExactAtDoubles {
   const IntegerQuery& q_;
 };
 
-using IntervalCubic = predicates::FixedPoly<filters::Interval, 3>;
+using IntervalCubic = predicates::FixedPoly<predicates::Interval, 3>;
 
 IntervalCubic interval_cubic(const DoubleQuery& q) {
-  using filters::Interval;
+  using predicates::Interval;
   predicates::MovingPoint<Interval> m[4];
   for (int i = 0; i < 4; ++i)
     m[i] = predicates::linear_motion(
@@ -191,7 +191,7 @@ IntervalCubic exact_cubic(const IntegerQuery& q) {
   double lo[4], hi[4];
   q.scaled_coefficient_bounds(lo, hi);
   IntervalCubic c;
-  for (int i = 0; i < 4; ++i) c.c[i] = filters::Interval(lo[i], hi[i]);
+  for (int i = 0; i < 4; ++i) c.c[i] = predicates::Interval(lo[i], hi[i]);
   return c;
 }
 
@@ -221,7 +221,7 @@ TEST(ExactCubicRetry, IsolatesRootsWhereTheIntervalCubicCannot) {
     IntegerOracle oracle(iq);
     bool interval_unresolved = false, exact_unresolved = false;
     {
-      const filters::RoundingGuard guard;
+      const predicates::RoundingGuard guard;
       const IntervalCubic wide = interval_cubic(q);
       if (filters::coplanarity_cubic_root_free_interval(wide, 1.0)) continue;
       interval_unresolved =

@@ -14,7 +14,7 @@
 #include "exactccd/rational_query.hpp"
 #include "filters/ccd_filters.hpp"
 #include "filters/coplanarity_semistatic.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/interval.hpp"
 
 namespace {
 
@@ -50,13 +50,13 @@ TEST(SemistaticConstants, TripleSumBoundCoversLemma4) {
 }
 
 TEST(CertifiedSign, UncertainIsNeverZero) {
-  using filters::CertifiedSign;
-  using filters::Interval;
-  EXPECT_EQ(filters::certified_sign(Interval(0.0)), CertifiedSign::zero);
-  EXPECT_EQ(filters::certified_sign(Interval(-1.0, 1.0)), CertifiedSign::uncertain);
-  EXPECT_EQ(filters::certified_sign(Interval(0.0, 1.0)), CertifiedSign::uncertain);
-  EXPECT_EQ(filters::certified_sign(Interval(1e-300, 1.0)), CertifiedSign::positive);
-  EXPECT_EQ(filters::certified_sign(Interval(-2.0, -1e-300)), CertifiedSign::negative);
+  using predicates::CertifiedSign;
+  using predicates::Interval;
+  EXPECT_EQ(predicates::certified_sign(Interval(0.0)), CertifiedSign::zero);
+  EXPECT_EQ(predicates::certified_sign(Interval(-1.0, 1.0)), CertifiedSign::uncertain);
+  EXPECT_EQ(predicates::certified_sign(Interval(0.0, 1.0)), CertifiedSign::uncertain);
+  EXPECT_EQ(predicates::certified_sign(Interval(1e-300, 1.0)), CertifiedSign::positive);
+  EXPECT_EQ(predicates::certified_sign(Interval(-2.0, -1e-300)), CertifiedSign::negative);
   EXPECT_NE(static_cast<int>(CertifiedSign::uncertain), static_cast<int>(CertifiedSign::zero));
 }
 

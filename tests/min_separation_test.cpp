@@ -19,7 +19,7 @@
 #include "core/predicates/separation.hpp"
 #include "exact/reference/earliest_contact.hpp"
 #include "exact/reference/min_separation.hpp"
-#include "filters/separation_exact_signs.hpp"
+#include "exact/stages/separation_exact_signs.hpp"
 #include "filters/separation_filter.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/rational_query.hpp"
@@ -385,7 +385,7 @@ TEST(MinSeparationTest, IntegerSignsAtDoublesEqualRationalPolynomialSigns) {
     const int k2 = static_cast<int>(rng() % 60) - 30;
     random_queries::scale_if_exact(&q, k2);
     const double delta = std::ldexp(1.0, k2 - 3 - static_cast<int>(rng() % 8));
-    const filters::separation::ExactSignsAtDoubles signs(
+    const exact::separation::ExactSignsAtDoubles signs(
         {&q.v[0], &q.v[1], &q.v[2], &q.v[3]}, {&q.v[4], &q.v[5], &q.v[6], &q.v[7]}, delta);
     const RationalQuery r =
         type == QueryType::vertex_face ? to_rational(q.vertex_face()) : to_rational(q.edge_edge());
@@ -421,14 +421,14 @@ TEST(MinSeparationTest, IntegerSignsAtDoublesEqualRationalPolynomialSigns) {
   // Exact zeros: the vertex tangent to a's sphere (polynomial 4) at t = 1/2, delta = 5/16,
   // and to the face plane's offset (polynomial 0) while sliding at height delta.
   const VertexFaceQuery past_a = vertex_face({-0.1875, -0.25, 1}, {-0.1875, -0.25, -1});
-  const filters::separation::ExactSignsAtDoubles tangent(
+  const exact::separation::ExactSignsAtDoubles tangent(
       {&past_a.p_t0, &past_a.a_t0, &past_a.b_t0, &past_a.c_t0},
       {&past_a.p_t1, &past_a.a_t1, &past_a.b_t1, &past_a.c_t1}, 0.3125);
   EXPECT_EQ(tangent.vertex_face_sign(4, 0.5), 0);
   EXPECT_EQ(tangent.vertex_face_sign(4, std::nextafter(0.5, 0.0)), 1);
   EXPECT_EQ(tangent.vertex_face_sign(4, std::nextafter(0.5, 1.0)), 1);
   const VertexFaceQuery sliding = vertex_face({-1, 1, 0.25}, {3, 1, 0.25});
-  const filters::separation::ExactSignsAtDoubles slide(
+  const exact::separation::ExactSignsAtDoubles slide(
       {&sliding.p_t0, &sliding.a_t0, &sliding.b_t0, &sliding.c_t0},
       {&sliding.p_t1, &sliding.a_t1, &sliding.b_t1, &sliding.c_t1}, 0.25);
   for (const double t : {0.0, 0.3, 1.0}) EXPECT_EQ(slide.vertex_face_sign(0, t), 0);
@@ -515,6 +515,24 @@ TEST(MinSeparationTest, RationalSeparationOnTheOracleApi) {
   // delta = 0 is contact: at t = 1/2.
   expect_tight_enclosure(exact_ccd(to_rational(crossing), mpq_class(0)), mpq_class(1, 2));
   EXPECT_THROW(exact_ccd(to_rational(crossing), mpq_class(-1, 3)), std::invalid_argument);
+  // The minimum separation is given once: options.min_separation or the rational argument, not
+  // both (refused, never one of them silently ignored), whatever the rational delta.
+  CcdOptions with_double_delta;
+  with_double_delta.min_separation = 0.25;
+  for (const mpq_class& delta : {mpq_class(1, 3), mpq_class(1, 4), mpq_class(0)}) {
+    try {
+      exact_ccd(to_rational(crossing), delta, with_double_delta);
+      ADD_FAILURE() << "both minimum separations accepted, rational " << delta;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_STREQ(e.what(),
+                   "exactccd: give the minimum separation once: options.min_separation or the "
+                   "rational argument, not both");
+    }
+  }
+  // Either one alone is honoured: the double delta 1/4 reaches z = 1/4 at t = 3/8.
+  expect_tight_enclosure(exact_ccd(to_rational(crossing), with_double_delta), mpq_class(3, 8));
+  expect_tight_enclosure(exact_ccd(to_rational(crossing), mpq_class(1, 4), CcdOptions{}),
+                         mpq_class(3, 8));
 }
 
 TEST(MinSeparationTest, NegativeOrNonFiniteSeparationThrows) {

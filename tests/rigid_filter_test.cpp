@@ -19,8 +19,8 @@
 #include "exact/reference/rigid_ccd.hpp"
 #include "exact/arithmetic/stack_dyadic.hpp"
 #include "exactccd/rigid.hpp"
-#include "filters/extended_interval.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/x87_interval.hpp"
+#include "core/predicates/interval.hpp"
 #include "filters/rigid_filter.hpp"
 #include "test_scale.hpp"
 #include "test_support.hpp"
@@ -108,7 +108,7 @@ exact::Polynomial power(const exact::Polynomial& p, int n) {
   return r;
 }
 
-#if EXACTCCD_EXTENDED_INTERVAL
+#if EXACTCCD_X87_INTERVAL
 /// A long double as the exact rational it is (64-bit significand).
 mpq_class exact_value(long double x) {
   if (x == 0) return 0;
@@ -155,13 +155,13 @@ TEST(RigidFilter, ReducedPolynomialTimesTheDenominatorsIsTheDeterminant) {
         std::vector<mpq_class> c = g.coefficients();
         c.resize(6, mpq_class(0));
         {  // The interval instantiation encloses the exact coefficients.
-          const filters::RoundingGuard upward;
+          const predicates::RoundingGuard upward;
           const auto& x = d.start;
           const auto gi =
               type == QueryType::vertex_face
-                  ? predicates::vertex_face_rigid_coplanarity<filters::Interval>(
+                  ? predicates::vertex_face_rigid_coplanarity<predicates::Interval>(
                         x[0], x[1], x[2], x[3], d.side[0], d.side[1])
-                  : predicates::edge_edge_rigid_coplanarity<filters::Interval>(
+                  : predicates::edge_edge_rigid_coplanarity<predicates::Interval>(
                         x[0], x[1], x[2], x[3], d.side[0], d.side[1]);
           for (int k = 0; k <= 5; ++k) {
             ASSERT_LE(mpq_class(gi.c[k].inf()), c[k]) << k;
@@ -181,15 +181,15 @@ TEST(RigidFilter, ReducedPolynomialTimesTheDenominatorsIsTheDeterminant) {
             ASSERT_EQ(gd.c[k].to_rational(), c[k]) << k;
           }
         }
-#if EXACTCCD_EXTENDED_INTERVAL
+#if EXACTCCD_X87_INTERVAL
         {
           const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
           const auto& x = d.start;
           const auto ge =
               type == QueryType::vertex_face
-                  ? predicates::vertex_face_rigid_coplanarity<filters::ExtendedInterval>(
+                  ? predicates::vertex_face_rigid_coplanarity<predicates::X87Interval>(
                         x[0], x[1], x[2], x[3], d.side[0], d.side[1])
-                  : predicates::edge_edge_rigid_coplanarity<filters::ExtendedInterval>(
+                  : predicates::edge_edge_rigid_coplanarity<predicates::X87Interval>(
                         x[0], x[1], x[2], x[3], d.side[0], d.side[1]);
           for (int k = 0; k <= 5; ++k) {
             ASSERT_LE(exact_value(ge.c[k].lo), c[k]) << k;

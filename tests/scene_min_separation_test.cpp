@@ -205,9 +205,10 @@ TEST(SceneMinSeparation, OptionsPassThroughWithDelta) {
     o.ccd.t_max = 1.0;
     o.ccd.toi_width = 1e-3;
     check_step(scene, spec, o);
-    // ccd.min_separation equal to the scene's is accepted (the scene sets it anyway).
-    o.ccd.min_separation = o.min_separation;
-    check_step(scene, spec, o);
+    // The scene's delta is given once: ccd.min_separation, even equal to it, is refused.
+    SceneOptions twice = o;
+    twice.ccd.min_separation = o.min_separation;
+    EXPECT_THROW(scene.find_contacts(twice), std::invalid_argument);
     SceneOptions exact;
     exact.min_separation = 0.01;
     exact.ccd.mode = Mode::exact;
@@ -409,17 +410,26 @@ TEST(SceneMinSeparation, BadSeparationThrows) {
     EXPECT_THROW(scene.find_contacts(o), std::invalid_argument) << delta;
     EXPECT_THROW(scene.earliest_contact(o), std::invalid_argument) << delta;
   }
-  // A per-pair delta the broad phase was not told of would drop pairs: refused.
+  // The scene's delta is SceneOptions::min_separation alone: ccd.min_separation must stay 0
+  // (a per-pair delta the broad phase was not told of would drop pairs; one equal to it would
+  // be a second place to give it). Refused, whatever SceneOptions::min_separation is.
   SceneOptions only_pairs;
   only_pairs.ccd.min_separation = 0.1;
-  EXPECT_THROW(scene.find_contacts(only_pairs), std::invalid_argument);
-  EXPECT_THROW(scene.earliest_contact(only_pairs), std::invalid_argument);
-  SceneOptions different = only_pairs;
-  different.min_separation = 0.2;
-  EXPECT_THROW(scene.find_contacts(different), std::invalid_argument);
-  SceneOptions same = only_pairs;
-  same.min_separation = 0.1;
-  EXPECT_NO_THROW(scene.find_contacts(same));
+  for (const double scene_delta : {0.0, 0.1, 0.2}) {
+    SceneOptions o = only_pairs;
+    o.min_separation = scene_delta;
+    try {
+      scene.find_contacts(o);
+      ADD_FAILURE() << "ccd.min_separation " << o.ccd.min_separation << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("SceneOptions::min_separation"), std::string::npos)
+          << e.what();
+    }
+    EXPECT_THROW(scene.earliest_contact(o), std::invalid_argument);
+  }
+  SceneOptions once;
+  once.min_separation = 0.1;
+  EXPECT_NO_THROW(scene.find_contacts(once));
   EXPECT_FALSE(scene.find_contacts().contacts.empty());  // still works after the refusals
 }
 

@@ -23,15 +23,15 @@
 
 #include "core/predicates/separation.hpp"
 #include "exactccd/ccd.hpp"
-#include "filters/separation_exact_signs.hpp"
+#include "exact/stages/separation_exact_signs.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd {
 namespace {
 
-using filters::separation::CoefficientTable;
+using CoefficientTable = predicates::SeparationCoefficientTable;
 using Vertices = std::array<Eigen::Vector3d, 4>;
-using Poly6 = predicates::FixedPoly<filters::Interval, 6>;
+using Poly6 = predicates::FixedPoly<predicates::Interval, 6>;
 
 struct Case {
   Vertices t0, t1;
@@ -102,7 +102,7 @@ std::vector<std::vector<mpq_class>> rational_coefficients(const Case& c, bool ve
 }
 
 void check(const Case& c, const std::string& what) {
-  const filters::separation::ExactSignsAtDoubles signs(
+  const exact::separation::ExactSignsAtDoubles signs(
       {&c.t0[0], &c.t0[1], &c.t0[2], &c.t0[3]}, {&c.t1[0], &c.t1[1], &c.t1[2], &c.t1[3]},
       c.delta);
   for (const bool vertex_face : {true, false}) {

@@ -23,7 +23,7 @@
 #include "core/predicates/separation.hpp"
 #include "exact/arithmetic/integer_arithmetic.hpp"
 #include "exact/stages/separation_integers.hpp"
-#include "filters/separation_exact_signs.hpp"
+#include "exact/stages/separation_exact_signs.hpp"
 #include "separation_rational.hpp"
 #include "test_scale.hpp"
 
@@ -135,14 +135,14 @@ int check(const Case& c, double t, const char* what) {
     if (selected >= 1 && selected <= 3)
       EXPECT_EQ(kernel_value<exact::FixedStageIntegers<3>>(kernel, q, T, k), gmp) << label << " width 3";
     // The filters' interface: the same sign, in GMP only beyond the fixed widths.
-    const filters::separation::ExactSignsAtDoubles signs(
+    const exact::separation::ExactSignsAtDoubles signs(
         {&c.t0[0], &c.t0[1], &c.t0[2], &c.t0[3]}, {&c.t1[0], &c.t1[1], &c.t1[2], &c.t1[3]},
         c.delta);
-    const std::uint64_t before = filters::separation::gmp_evaluations_in_this_thread();
+    const std::uint64_t before = exact::separation::gmp_evaluations_in_this_thread();
     const int s = kernel.vertex_face ? signs.vertex_face_sign(kernel.poly, t)
                                      : signs.edge_edge_sign(kernel.poly, t);
     EXPECT_EQ(s, sgn(expected)) << label;
-    const bool used_gmp = filters::separation::gmp_evaluations_in_this_thread() != before;
+    const bool used_gmp = exact::separation::gmp_evaluations_in_this_thread() != before;
     // (Within the fixed widths GMP is never used; beyond them the double-double signs with
     // an error bound decide most, double_double_signs_test.)
     if (selected >= 1 && selected <= exact::kMaxDifferenceLimbs) EXPECT_FALSE(used_gmp) << label;

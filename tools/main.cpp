@@ -234,9 +234,10 @@ int main(int argc, char** argv) {
   RigidBenchOptions rigid_bench_options;
   bool bench_rigid = false;
   bench->add_flag("--rigid", bench_rigid,
-                  "Time the rigid-body modes (default, exact) on seeded random rigid pairs near "
-                  "contact instead (--rigid-count, --seed, --modes, --repetitions, --json); exit "
-                  "status 1 when the modes' answers differ");
+                  "Time the rigid-body modes (default, exact; float_only on request, graded "
+                  "against the first certified mode) on seeded random rigid pairs near contact "
+                  "instead (--rigid-count, --seed, --modes, --repetitions, --json); exit status 1 "
+                  "when the certified modes' answers differ");
   CLI::Option* bench_rigid_count =
       bench->add_option("--rigid-count", rigid_bench_options.count, "Rigid pairs (with --rigid)")
           ->check(numeric_text(true))

@@ -1,6 +1,7 @@
-// `exactccd bench --rigid`: time per query of the rigid-body modes (default, exact) on seeded
-// random rigid pairs near contact (corpus/rigid_queries.hpp), with every mode's answers checked
-// against each other bit for bit.
+// `exactccd bench --rigid`: time per query of the rigid-body modes (default, exact, and on
+// request float_only) on seeded random rigid pairs near contact (corpus/rigid_queries.hpp), with
+// the certified modes' answers checked against each other bit for bit and float_only's graded
+// against the first certified mode (false positives, false negatives, late TOIs).
 #pragma once
 
 #include <cstddef>
@@ -23,8 +24,9 @@ struct RigidBenchOptions {
   bool json = false;
 };
 
-/// Runs the benchmark. Exit status 1 when two modes give different answers to a query (verdict,
-/// toi_lo or toi_hi), else 0. Throws UsageError for an empty query set or Mode::float_only.
+/// Runs the benchmark. Exit status 1 when two certified modes (default, exact) give different
+/// answers to a query (verdict, toi_lo or toi_hi), else 0; float_only's errors are reported,
+/// not counted. Throws UsageError for an empty query set or mode list.
 int run_rigid_bench(const RigidBenchOptions& options);
 
 }  // namespace exactccd::cli

@@ -91,7 +91,7 @@ void print_text(const RigidOptions& o, const RigidSceneFile& file, const Scene& 
   std::cout << o.scene_path << ": " << file.bodies.size()
             << (file.bodies.size() == 1 ? " body (" : " bodies (") << rigid << " rigid), "
             << steps.size() << (steps.size() == 1 ? " step" : " steps") << ", mode "
-            << (file.mode == Mode::exact ? "exact" : "default") << ", t_max "
+            << to_string(file.mode) << ", t_max "
             << format_double(file.t_max) << "\n";
   std::optional<std::size_t> first;
   for (std::size_t k = 0; k < steps.size(); ++k) {
@@ -132,7 +132,7 @@ void print_json(const RigidOptions& o, const RigidSceneFile& file, const Scene& 
                       {"triangles", b.triangles.rows()},
                       {"steps", b.steps.size()}});
   Json out = {{"scene", o.scene_path},
-              {"mode", file.mode == Mode::exact ? "exact" : "default"},
+              {"mode", to_string(file.mode)},
               {"t_max", file.t_max},
               {"toi_width", file.toi_width},
               {"bodies", bodies},

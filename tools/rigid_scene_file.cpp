@@ -264,16 +264,17 @@ class Reader {
       if (!(s.toi_width >= 0.0)) fail("toi_width", "must be >= 0");
     }
     if (const auto it = v.find("mode"); it != v.end()) {
-      expect(it->is_string(), *it, "mode", "\"default\" or \"exact\"");
+      expect(it->is_string(), *it, "mode", "\"default\", \"exact\" or \"float_only\"");
       const std::string mode = it->get<std::string>();
       if (mode == "default")
         s.mode = Mode::filtered;
       else if (mode == "exact")
         s.mode = Mode::exact;
       else if (mode == "float_only")
-        fail("mode", "float_only has no rigid-motion test (use \"default\" or \"exact\")");
+        s.mode = Mode::float_only;  // the uncertified double test, for comparison
       else
-        fail("mode", "expected \"default\" or \"exact\", found " + quote_for_message(mode));
+        fail("mode", "expected \"default\", \"exact\" or \"float_only\", found " +
+                         quote_for_message(mode));
     }
     const Json& bodies = require(v, "the scene", "bodies");
     expect(bodies.is_array() && !bodies.empty(), bodies, "bodies", "a non-empty array of bodies");

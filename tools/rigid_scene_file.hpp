@@ -44,7 +44,8 @@ struct RigidSceneFile {
 /// be read or is not a regular file, invalid JSON, a missing or unknown key, a value of the
 /// wrong type, a non-finite number, an index out of range or a triangle repeating a vertex, a
 /// row count that does not match, a turn of 180 degrees or more or about a zero axis, an
-/// option outside its domain (t_max in (0, 1], toi_width >= 0, mode default or exact); OBJ
+/// option outside its domain (t_max in (0, 1], toi_width >= 0, mode default, exact or
+/// float_only); OBJ
 /// errors as read_obj.
 RigidSceneFile read_rigid_scene_file(const std::string& path);
 

@@ -14,13 +14,10 @@ namespace exactccd::float_only {
 
 namespace {
 
+using predicates::moving_point;
+
 using predicates::FixedPoly;
 using predicates::MovingPoint;
-
-MovingPoint<double> moving(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1) {
-  return predicates::linear_motion(predicates::Vec3<double>{x0.x(), x0.y(), x0.z()},
-                                   predicates::Vec3<double>{x1.x(), x1.y(), x1.z()});
-}
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
@@ -104,8 +101,8 @@ CcdResult first_contact(const FixedPoly<double, 3>& f, double t_max, ContactAt&&
 }  // namespace
 
 CcdResult vertex_face_ccd(const VertexFaceQuery& q, const CcdOptions& options) {
-  const auto p = moving(q.p_t0, q.p_t1), a = moving(q.a_t0, q.a_t1), b = moving(q.b_t0, q.b_t1),
-             c = moving(q.c_t0, q.c_t1);
+  const auto p = moving_point<double>(q.p_t0, q.p_t1), a = moving_point<double>(q.a_t0, q.a_t1),
+             b = moving_point<double>(q.b_t0, q.b_t1), c = moving_point<double>(q.c_t0, q.c_t1);
   return first_contact(predicates::vertex_face_coplanarity_cubic(p, a, b, c), options.t_max,
                        [&](auto&& sign_at) {
                          return predicates::point_in_triangle_at(p, a, b, c, sign_at);
@@ -113,12 +110,13 @@ CcdResult vertex_face_ccd(const VertexFaceQuery& q, const CcdOptions& options) {
 }
 
 CcdResult edge_edge_ccd(const EdgeEdgeQuery& q, const CcdOptions& options) {
-  const auto a0 = moving(q.ea0_t0, q.ea0_t1), a1 = moving(q.ea1_t0, q.ea1_t1),
-             b0 = moving(q.eb0_t0, q.eb0_t1), b1 = moving(q.eb1_t0, q.eb1_t1);
-  return first_contact(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), options.t_max,
-                       [&](auto&& sign_at) {
-                         return predicates::segments_intersect_at(a0, a1, b0, b1, sign_at);
-                       });
+  const auto a0 = moving_point<double>(q.ea0_t0, q.ea0_t1),
+             a1 = moving_point<double>(q.ea1_t0, q.ea1_t1),
+             b0 = moving_point<double>(q.eb0_t0, q.eb0_t1),
+             b1 = moving_point<double>(q.eb1_t0, q.eb1_t1);
+  return first_contact(
+      predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), options.t_max,
+      [&](auto&& sign_at) { return predicates::segments_intersect_at(a0, a1, b0, b1, sign_at); });
 }
 
 }  // namespace exactccd::float_only

@@ -13,12 +13,9 @@ namespace exactccd::methods {
 
 namespace {
 
-using Eigen::Vector3d;
+using predicates::moving_point;
 
-predicates::MovingPoint<double> moving(const Vector3d& x0, const Vector3d& x1) {
-  return predicates::linear_motion(predicates::Vec3<double>{x0.x(), x0.y(), x0.z()},
-                                   predicates::Vec3<double>{x1.x(), x1.y(), x1.z()});
-}
+using Eigen::Vector3d;
 
 /// The position at time t, (1 - t) x0 + t x1: exactly x0 at t = 0 and x1 at t = 1.
 Vector3d at(const Vector3d& x0, const Vector3d& x1, double t) { return (1 - t) * x0 + t * x1; }
@@ -85,8 +82,8 @@ double segment_segment_distance(const Vector3d& a0, const Vector3d& a1, const Ve
 }
 
 CcdResult tolerance_vertex_face_ccd(const VertexFaceQuery& q, double eps, double t_max) {
-  const auto p = moving(q.p_t0, q.p_t1), a = moving(q.a_t0, q.a_t1), b = moving(q.b_t0, q.b_t1),
-             c = moving(q.c_t0, q.c_t1);
+  const auto p = moving_point<double>(q.p_t0, q.p_t1), a = moving_point<double>(q.a_t0, q.a_t1),
+             b = moving_point<double>(q.b_t0, q.b_t1), c = moving_point<double>(q.c_t0, q.c_t1);
   return first_root_within(
       predicates::vertex_face_coplanarity_cubic(p, a, b, c), eps, t_max, [&](double t) {
         return point_triangle_distance(at(q.p_t0, q.p_t1, t), at(q.a_t0, q.a_t1, t),
@@ -95,8 +92,10 @@ CcdResult tolerance_vertex_face_ccd(const VertexFaceQuery& q, double eps, double
 }
 
 CcdResult tolerance_edge_edge_ccd(const EdgeEdgeQuery& q, double eps, double t_max) {
-  const auto a0 = moving(q.ea0_t0, q.ea0_t1), a1 = moving(q.ea1_t0, q.ea1_t1),
-             b0 = moving(q.eb0_t0, q.eb0_t1), b1 = moving(q.eb1_t0, q.eb1_t1);
+  const auto a0 = moving_point<double>(q.ea0_t0, q.ea0_t1),
+             a1 = moving_point<double>(q.ea1_t0, q.ea1_t1),
+             b0 = moving_point<double>(q.eb0_t0, q.eb0_t1),
+             b1 = moving_point<double>(q.eb1_t0, q.eb1_t1);
   return first_root_within(
       predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), eps, t_max, [&](double t) {
         return segment_segment_distance(at(q.ea0_t0, q.ea0_t1, t), at(q.ea1_t0, q.ea1_t1, t),

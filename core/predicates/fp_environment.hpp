@@ -131,6 +131,15 @@ class FpEnvironmentGuard {
 
 #endif
 
+/// Round to nearest, no flush-to-zero, no denormals-are-zero, exceptions masked: what every entry
+/// point of the library and every parallel body it runs computes under (a TBB worker may run
+/// with the host's FP state); the caller's whole FP state is restored on every return,
+/// exceptions included. PROOF: proofs/filters.md#fp-environment
+class RoundToNearestGuard : FpEnvironmentGuard {
+ public:
+  RoundToNearestGuard() noexcept : FpEnvironmentGuard(Rounding::to_nearest) {}
+};
+
 #if defined(__i386__) || defined(__x86_64__)
 /// The x87 unit (long double): the wide-range interval filter of the exact stage
 /// (exact/arithmetic/wide_interval.hpp) computes its bounds in extended precision, rounding upward. A

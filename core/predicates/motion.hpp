@@ -134,4 +134,13 @@ EXACTCCD_CERTIFIED Vec3<FixedPoly<NT, 1>> linear_motion(const Vec3<NT>& x0, cons
           FixedPoly<NT, 1>{{x0.z, x1.z - x0.z}}};
 }
 
+/// The linear path of a vertex given by its positions at t = 0 and t = 1 (any vector type with
+/// operator[], e.g. Eigen::Vector3d), each coordinate converted to NT (exactly: double, an
+/// interval of a double, an exact number).
+template <class NT, class Vector>
+EXACTCCD_CERTIFIED Vec3<FixedPoly<NT, 1>> moving_point(const Vector& x0, const Vector& x1) {
+  return linear_motion(Vec3<NT>{NT(x0[0]), NT(x0[1]), NT(x0[2])},
+                       Vec3<NT>{NT(x1[0]), NT(x1[1]), NT(x1[2])});
+}
+
 }  // namespace exactccd::predicates

@@ -6,13 +6,13 @@
 #include <stdexcept>
 
 #include "corpus/assembly/lock_and_key.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/interval.hpp"
 
 namespace exactccd::assembly {
 
 namespace {
 
-using filters::Interval;
+using predicates::Interval;
 using Eigen::Vector3d;
 
 Box3 point_box(const Vector3d& p) {
@@ -58,7 +58,7 @@ Box3 arc_box(const RigidMotion& m, const Vector3d& x0) {
   if (!m.pivot.allFinite() || !m.translation.allFinite() || !m.cayley.allFinite() ||
       !x0.allFinite())
     throw std::invalid_argument("arc_box: non-finite input");
-  const filters::RoundingGuard upward;
+  const predicates::RoundingGuard upward;
   Box3 box;
   const Vector3d& c = m.pivot;
   const Vector3d& d = m.translation;

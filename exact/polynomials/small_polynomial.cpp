@@ -187,7 +187,7 @@ SmallPolynomial SmallPolynomial::from_mpz(const mpz_class* c, int count,
 // PROOF: proofs/exact_ccd.md#wide-interval-filter
 
 void SmallPolynomial::set_wide_enclosure(const SmallPolynomial* reflection) {
-#if EXACTCCD_WIDE_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   // The ends are exact long doubles only at 64-bit precision: never under the caller's x87
   // precision control (FpEnvironment.X87ControlWordUnmaskedDoesNotTrapAndIsRestored).
   const predicates::X87EnvironmentGuard extended(predicates::Rounding::upward);
@@ -221,8 +221,8 @@ bool split_point(double lo, double hi, double* m) {
   return true;
 }
 
-#if EXACTCCD_WIDE_INTERVAL
-const WideInterval* SmallPolynomial::wide_coefficients_for(double* t) const {
+#if EXACTCCD_X87_INTERVAL
+const X87Interval* SmallPolynomial::wide_coefficients_for(double* t) const {
   if (wide_reflected_ && *t >= 0.5 && *t <= 1.0) {
     *t = 1.0 - *t;  // exact (Sterbenz)
     return wide_reflected_c_;
@@ -230,7 +230,7 @@ const WideInterval* SmallPolynomial::wide_coefficients_for(double* t) const {
   return wide_c_;
 }
 
-const WideInterval* SmallPolynomial::wide_coefficients_on(double* a, double* b) const {
+const X87Interval* SmallPolynomial::wide_coefficients_on(double* a, double* b) const {
   if (wide_reflected_ && *a >= 0.5 && *b <= 1.0) {
     const double u_lo = 1.0 - *b, u_hi = 1.0 - *a;  // exact (Sterbenz)
     *a = u_lo, *b = u_hi;
@@ -239,17 +239,17 @@ const WideInterval* SmallPolynomial::wide_coefficients_on(double* a, double* b) 
   return wide_c_;
 }
 
-WideInterval SmallPolynomial::wide_value_at(double t) const {
+X87Interval SmallPolynomial::wide_value_at(double t) const {
   // Times are in [0, 1] (t >= 0): each Horner step scales by a non-negative point.
-  const WideInterval* c = wide_coefficients_for(&t);
-  WideInterval r = c[degree_];
+  const X87Interval* c = wide_coefficients_for(&t);
+  X87Interval r = c[degree_];
   for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, t) + c[i];
   return r;
 }
 #endif
 
 void SmallPolynomial::narrow_by_filter(double* lo, double* hi, int sign_lo, int max_steps) const {
-#if EXACTCCD_WIDE_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   if (!wide_ || degree_ < 0) return;
   // One guard for the whole loop; each step's bounds pass through volatile stores, which stay
   // ordered before the rounding mode is restored (as in filtered_sign_at).
@@ -257,7 +257,7 @@ void SmallPolynomial::narrow_by_filter(double* lo, double* hi, int sign_lo, int 
   double m;
   for (int step = 0; step < max_steps && split_point(*lo, *hi, &m); ++step) {
     volatile long double l, h;
-    const WideInterval r = wide_value_at(m);
+    const X87Interval r = wide_value_at(m);
     l = r.lo;
     h = r.hi;
     const int s = certain_sign({l, h});
@@ -270,14 +270,14 @@ void SmallPolynomial::narrow_by_filter(double* lo, double* hi, int sign_lo, int 
 }
 
 int SmallPolynomial::filtered_sign_at(double t, Approximation* value) const {
-#if EXACTCCD_WIDE_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   if (!wide_ || degree_ < 0) return 0;
   // The bounds leave the guard's scope through volatile stores, which stay ordered before the
   // rounding mode is restored.
   volatile long double lo, hi;
   {
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
-    const WideInterval r = wide_value_at(t);
+    const X87Interval r = wide_value_at(t);
     lo = r.lo;
     hi = r.hi;
   }
@@ -295,7 +295,7 @@ int SmallPolynomial::filtered_sign_at(double t, Approximation* value) const {
 }
 
 bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[4]) const {
-#if EXACTCCD_WIDE_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   if (!wide_ || degree_ < 0) return false;
   volatile long double lo[4], hi[4];  // leave the guard's scope as in filtered_sign_at
   {
@@ -304,12 +304,12 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
     // in s; then the Bernstein coefficients times lcm C(d, i), as in the exact evaluation.
     // Within [1/2, 1]: p(1 - u)'s Bernstein coefficients on [1 - b, 1 - a], which are p's in
     // reverse order (t = 1 - u reverses the interval).
-    const WideInterval* c = wide_coefficients_on(&a, &b);
+    const X87Interval* c = wide_coefficients_on(&a, &b);
     const bool reflect = c == wide_reflected_c_;
-    const WideInterval A{a, a};
-    const WideInterval H{-(static_cast<long double>(a) - b), static_cast<long double>(b) - a};
+    const X87Interval A{a, a};
+    const X87Interval H{-(static_cast<long double>(a) - b), static_cast<long double>(b) - a};
     const int d = degree_;
-    WideInterval q[4] = {c[d], {0, 0}, {0, 0}, {0, 0}};
+    X87Interval q[4] = {c[d], {0, 0}, {0, 0}, {0, 0}};
     for (int i = d - 1; i >= 0; --i) {
       const int deg = d - 1 - i;
       // a >= 0, and H's lower end -(a - b) >= 0 (a - b < 0 rounds up to at most 0).
@@ -318,8 +318,8 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
         q[j] = times_nonnegative(q[j], A.lo) + times_nonnegative(q[j - 1], H.lo, H.hi);
       q[0] = times_nonnegative(q[0], A.lo) + c[i];
     }
-    const WideInterval two{2, 2}, three{3, 3};
-    WideInterval beta[4] = {};
+    const X87Interval two{2, 2}, three{3, 3};
+    X87Interval beta[4] = {};
     switch (d) {
       case 0: beta[0] = q[0]; break;
       case 1: beta[0] = q[0], beta[1] = q[0] + q[1]; break;
@@ -348,7 +348,7 @@ bool SmallPolynomial::filtered_bernstein_signs(double a, double b, int (&signs)[
 }
 
 int SmallPolynomial::certain_sign_on(double a, double b) const {
-#if EXACTCCD_WIDE_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   if (!wide_ || degree_ < 0) return 0;
   // The range of p over [a, b] by Horner's rule on the interval (each step's interval holds
   // the partial value at every t in [a, b]): enough on the short brackets it is asked about.
@@ -356,8 +356,8 @@ int SmallPolynomial::certain_sign_on(double a, double b) const {
   {
     const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
     double t_lo = a, t_hi = b;
-    const WideInterval* c = wide_coefficients_on(&t_lo, &t_hi);
-    WideInterval r = c[degree_];
+    const X87Interval* c = wide_coefficients_on(&t_lo, &t_hi);
+    X87Interval r = c[degree_];
     for (int i = degree_ - 1; i >= 0; --i) r = times_nonnegative(r, t_lo, t_hi) + c[i];
     lo = r.lo;
     hi = r.hi;

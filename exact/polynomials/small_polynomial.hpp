@@ -122,15 +122,15 @@ class SmallPolynomial final : public CubicAtDoubles {
                                   const SmallPolynomial* reflection);
   /// The certified sign from the filter, 0 when it cannot tell (then decide exactly).
   int filtered_sign_at(double t, Approximation* value) const;
-#if EXACTCCD_WIDE_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   /// The enclosure of p(t), t >= 0 a double; needs X87EnvironmentGuard(Rounding::upward).
-  WideInterval wide_value_at(double t) const;
+  X87Interval wide_value_at(double t) const;
   /// The enclosures to evaluate at the time t in [0, 1]: p's at t, or for t >= 1/2 (when held)
   /// p(1 - u)'s at u = 1 - t (exact).
-  const WideInterval* wide_coefficients_for(double* t) const;
+  const X87Interval* wide_coefficients_for(double* t) const;
   /// The same for an interval [a, b] in [0, 1]: within [1/2, 1] (when held) p(1 - u)'s on
   /// [1 - b, 1 - a], both ends exact.
-  const WideInterval* wide_coefficients_on(double* a, double* b) const;
+  const X87Interval* wide_coefficients_on(double* a, double* b) const;
 #endif
   bool filtered_bernstein_signs(double a, double b, int (&signs)[4]) const;
 
@@ -140,13 +140,13 @@ class SmallPolynomial final : public CubicAtDoubles {
   Stored fixed_[4] = {Stored(Stored::Uninitialized{}), Stored(Stored::Uninitialized{}),
                       Stored(Stored::Uninitialized{}), Stored(Stored::Uninitialized{})};
   std::array<mpz_class, 4> gmp_;
-#if EXACTCCD_WIDE_INTERVAL
+#if EXACTCCD_X87_INTERVAL
   bool wide_ = false;
-  WideInterval wide_c_[4];
+  X87Interval wide_c_[4];
   /// For GMP coefficients: enclosures of p(1 - u)'s, which near t = 1 (u = 1 - t, exact for
   /// t >= 1/2) avoid the cancellation of p's terms there.
   bool wide_reflected_ = false;
-  WideInterval wide_reflected_c_[4];
+  X87Interval wide_reflected_c_[4];
 #endif
 };
 

@@ -70,7 +70,7 @@ bool triangles_intersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
                          const Eigen::Vector3d& b1, const Eigen::Vector3d& b2) {
   // The kernel's static filters bound the rounding errors of round-to-nearest arithmetic with
   // gradual underflow (proofs/filters.md#fp-environment).
-  const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
+  const predicates::RoundToNearestGuard nearest;
   return shapes_intersect(shape_of(point(a0), point(a1), point(a2)),
                           shape_of(point(b0), point(b1), point(b2)));
 }

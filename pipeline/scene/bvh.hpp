@@ -260,7 +260,7 @@ class Bvh {
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         // A worker may run with the host's FP state: box comparisons must not
                         // read subnormals as zero (proofs/filters.md#fp-environment).
-                        const predicates::FpEnvironmentGuard fp(predicates::Rounding::to_nearest);
+                        const predicates::RoundToNearestGuard fp;
                         for (std::size_t k = range.begin(); k != range.end(); ++k) {
                           const Task& t = tasks[k];
                           if (t.self)

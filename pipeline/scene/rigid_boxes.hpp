@@ -14,7 +14,7 @@
 // these boxes over the pieces holds the point over [s_lo, s_hi]. The pieces only need to cover
 // the range: their ends are any non-decreasing doubles from s_lo to s_hi, here spaced for equal
 // turns, so that every piece's box is about as tight whatever the angle. Needs upward rounding
-// (filters::RoundingGuard) for Interval_nt<false>; a NaN end (overflow) widens the box to the
+// (predicates::RoundingGuard) for Interval_nt<false>; a NaN end (overflow) widens the box to the
 // whole axis, never shrinks it.
 // PROOF: proofs/scene.md#rigid-boxes
 #pragma once
@@ -28,7 +28,7 @@
 #include "core/predicates/rigid_motion.hpp"
 #include "pipeline/scene/bvh.hpp"
 #include "exactccd/rigid.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/interval.hpp"
 
 namespace exactccd::scene {
 
@@ -74,7 +74,7 @@ inline Pieces single_piece(double s_lo, double s_hi) {
 /// Per piece of one body: enclosures of s, f1(s) and f2(s) over the piece.
 struct ArcPieces {
   struct Piece {
-    filters::Interval s, f1, f2;
+    predicates::Interval s, f1, f2;
   };
   std::array<Piece, Pieces::max_count> piece;
   int count = 0;
@@ -82,7 +82,7 @@ struct ArcPieces {
 
 /// The pieces' enclosures for a body with Cayley vector `cayley`. Needs upward rounding.
 EXACTCCD_CERTIFIED ArcPieces arc_pieces(const Eigen::Vector3d& cayley, const Pieces& pieces) {
-  using filters::Interval;
+  using predicates::Interval;
   const Interval qq = Interval(cayley.x()) * cayley.x() + Interval(cayley.y()) * cayley.y() +
                       Interval(cayley.z()) * cayley.z();
   // f1, f2 at one s, as intervals (s >= 0; 1 + |q|^2 s^2 >= 1).
@@ -109,12 +109,12 @@ EXACTCCD_CERTIFIED ArcPieces arc_pieces(const Eigen::Vector3d& cayley, const Pie
 
 /// One point of a rigid body: x0, d, u = q x (x0 - c) and v = q x u as intervals.
 struct ArcPoint {
-  predicates::Vec3<filters::Interval> x0, d, u, v;
+  predicates::Vec3<predicates::Interval> x0, d, u, v;
 };
 
 /// Needs upward rounding.
 EXACTCCD_CERTIFIED ArcPoint arc_point(const RigidMotion& m, const Eigen::Vector3d& x0) {
-  using filters::Interval;
+  using predicates::Interval;
   using V = predicates::Vec3<Interval>;
   const V q{m.cayley.x(), m.cayley.y(), m.cayley.z()};
   const V r{Interval(x0.x()) - m.pivot.x(), Interval(x0.y()) - m.pivot.y(),
@@ -137,7 +137,7 @@ namespace detail {
 
 /// Grows box on `axis` to hold x; std::min / std::max would drop a NaN: an unknown end is the
 /// whole axis.
-EXACTCCD_CERTIFIED void grow_axis(Box& box, int axis, const filters::Interval& x) {
+EXACTCCD_CERTIFIED void grow_axis(Box& box, int axis, const predicates::Interval& x) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double lo = x.inf(), hi = x.sup();
   box.lo[axis] = std::isnan(lo) ? -inf : std::min(box.lo[axis], lo);
@@ -161,7 +161,7 @@ EXACTCCD_CERTIFIED void grow_by_arc(Box& box, const ArcPoint& p, const ArcPieces
 /// s in [s_lo, s_hi]. Needs upward rounding.
 EXACTCCD_CERTIFIED void grow_by_segment(Box& box, const Eigen::Vector3d& x0,
                                         const Eigen::Vector3d& x1, double s_lo, double s_hi) {
-  using filters::Interval;
+  using predicates::Interval;
   const Interval s(s_lo, s_hi);
   for (int axis = 0; axis < 3; ++axis) {
     const Interval a(x0[axis]);

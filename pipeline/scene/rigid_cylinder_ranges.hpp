@@ -11,7 +11,7 @@
 // a point during the motion.
 //
 // Every bound is certified: interval arithmetic (Interval_nt<false>, so the caller holds a
-// filters::RoundingGuard) on the input doubles; "same line" and "parallel" are decided by
+// predicates::RoundingGuard) on the input doubles; "same line" and "parallel" are decided by
 // intervals that are exactly [0, 0] (else the pair is not culled).
 // PROOF: proofs/scene.md#cylinder-ranges
 #pragma once
@@ -24,7 +24,7 @@
 
 #include "exactccd/rigid.hpp"
 #include "exactccd/scene.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/interval.hpp"
 
 namespace exactccd::scene {
 
@@ -48,7 +48,7 @@ struct KeptAxes {
 
 namespace cylinder_detail {
 
-using filters::Interval;
+using predicates::Interval;
 using IVec = std::array<Interval, 3>;
 
 inline IVec ivec(const Eigen::Vector3d& x) { return {Interval(x[0]), Interval(x[1]), Interval(x[2])}; }
@@ -208,9 +208,9 @@ inline CylinderRange triangle_range(const AxisLine& l, const Eigen::Vector3d& a,
   // The line misses the projected triangle when two of the orientations (A x B) . u,
   // (B x C) . u, (C x A) . u have certainly opposite signs; then the closest point lies on an
   // edge.
-  const int s[3] = {filters::certain_strict_sign(dot(cross(pa.w, pb.w), u)),
-                    filters::certain_strict_sign(dot(cross(pb.w, pc.w), u)),
-                    filters::certain_strict_sign(dot(cross(pc.w, pa.w), u))};
+  const int s[3] = {predicates::certain_strict_sign(dot(cross(pa.w, pb.w), u)),
+                    predicates::certain_strict_sign(dot(cross(pb.w, pc.w), u)),
+                    predicates::certain_strict_sign(dot(cross(pc.w, pa.w), u))};
   const bool outside = (s[0] * s[1] < 0) || (s[1] * s[2] < 0) || (s[2] * s[0] < 0);
   const double lo =
       outside ? std::min({segment_rho2_lo(pa.w, pb.w, w_difference(l, a, b)),
@@ -255,7 +255,7 @@ inline std::array<double, 2> h_shift(const AxisLine& l, const Eigen::Vector3d& d
 
 /// `r` with every h range widened by `shift` (rounded outward). Needs upward rounding.
 inline MeshCylinderRanges shifted(MeshCylinderRanges r, const std::array<double, 2>& shift) {
-  using filters::Interval;
+  using predicates::Interval;
   for (auto* list : {&r.vertices, &r.edges, &r.faces})
     for (CylinderRange& c : *list) {
       c.h_lo = (Interval(c.h_lo) + shift[0]).inf();

@@ -44,14 +44,6 @@ namespace {
 using scene::Box;
 using scene::Bvh;
 
-/// Round to nearest and gradual underflow on this thread (the caller's state comes back on
-/// return). Held by the entry points and by every parallel body: TBB workers may run with the
-/// host's FP state. PROOF: proofs/filters.md#fp-environment
-class FpGuard : predicates::FpEnvironmentGuard {
- public:
-  FpGuard() noexcept : FpEnvironmentGuard(predicates::Rounding::to_nearest) {}
-};
-
 /// Which positions a hierarchy bounds.
 enum class Span : int { swept = 0, start = 1, end = 2 };
 
@@ -110,7 +102,7 @@ std::optional<CylinderCull> cylinder_cull(std::vector<Mesh>& meshes, MeshId a, M
   Mesh& ma = meshes[a];
   Mesh& mb = meshes[b];
   if (a == b || !(ma.is_rigid || mb.is_rigid)) return std::nullopt;
-  const filters::RoundingGuard upward;
+  const predicates::RoundingGuard upward;
   const std::optional<scene::AxisLine> line =
       scene::common_axis(kept_axes_of(ma), kept_axes_of(mb));
   if (!line) return std::nullopt;
@@ -167,10 +159,6 @@ void check_rigid_options(const SceneOptions& o) {
     throw std::invalid_argument(
         "exactccd: SceneOptions::min_separation must be 0 in a scene with a rigid body "
         "(minimum separation is not supported for rigid motion)");
-  if (o.ccd.mode == Mode::float_only)
-    throw std::invalid_argument(
-        "exactccd: Mode::float_only has no rigid-motion test; a scene with a rigid body needs "
-        "Mode::filtered or Mode::exact");
 }
 
 void check_options(const SceneOptions& o) {
@@ -178,14 +166,17 @@ void check_options(const SceneOptions& o) {
   if (o.max_threads < 0) throw std::invalid_argument("exactccd: max_threads must be >= 0");
   if (!(o.min_separation >= 0.0) || !std::isfinite(o.min_separation))
     throw std::invalid_argument("exactccd: SceneOptions::min_separation must be finite and >= 0");
-  if (o.ccd.min_separation != 0.0 && o.ccd.min_separation != o.min_separation)
+  // One place for the scene's delta: SceneOptions::min_separation, which the broad phase
+  // inflates the boxes by and the scene copies into every pair's options.
+  if (o.ccd.min_separation != 0.0)
     throw std::invalid_argument(
-        "exactccd: SceneOptions::ccd.min_separation must be 0 or equal to "
-        "SceneOptions::min_separation, the scene's minimum separation (its broad phase inflates "
-        "the boxes by that one)");
+        "exactccd: give the scene's minimum separation as SceneOptions::min_separation; "
+        "SceneOptions::ccd.min_separation must be left at 0 (the scene sets it to "
+        "SceneOptions::min_separation for every pair)");
 }
 
-/// The options each pair is decided with: the caller's, with min_separation as the pairs' delta.
+/// The options each pair is decided with: the caller's, with min_separation as the pairs' delta
+/// (ccd.min_separation is 0 on entry, check_options).
 SceneOptions with_pair_separation(SceneOptions o) {
   o.ccd.min_separation = o.min_separation;
   return o;
@@ -240,13 +231,13 @@ std::vector<Box> rigid_vertex_boxes(const Mesh& m, Span span) {
   const double s_hi = span == Span::start ? 0.0 : 1.0;
   const scene::Pieces ends = scene::pieces_for(m.motion, s_lo, s_hi);
   const scene::ArcPieces pieces = [&] {
-    const filters::RoundingGuard upward;  // Interval_nt<false>
+    const predicates::RoundingGuard upward;  // Interval_nt<false>
     return scene::arc_pieces(m.motion.cayley, ends);
   }();
   std::vector<Box> boxes(static_cast<std::size_t>(m.start.rows()));
   tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, m.start.rows(), 1024),
                     [&](const tbb::blocked_range<Eigen::Index>& r) {
-                      const filters::RoundingGuard upward;
+                      const predicates::RoundingGuard upward;
                       for (Eigen::Index v = r.begin(); v != r.end(); ++v) {
                         Box box = scene::empty_box();
                         const auto x0 = row(m.start, static_cast<std::int32_t>(v));
@@ -640,7 +631,7 @@ struct Scene::Impl {
     tbb::enumerable_thread_specific<std::vector<SceneContact>> found;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        const FpGuard fp;
+                        const predicates::RoundToNearestGuard fp;
                         auto& local = found.local();
                         for (std::size_t k = r.begin(); k != r.end(); ++k) {
                           const Decision d = decide(candidates[k], o.ccd);
@@ -703,7 +694,7 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
     Found& local = locals.local();
     // Upward rounding for the window culls (time_window.hpp); each pair's test sets and restores
     // its own mode, and the bound below only gets larger under upward rounding (still valid).
-    const filters::RoundingGuard upward;
+    const predicates::RoundingGuard upward;
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const ScenePair& p = candidates[k];
       const double window = bound.load(std::memory_order_relaxed);
@@ -806,7 +797,7 @@ Mesh& rigid_body_for_motion(std::vector<Mesh>& meshes, MeshId id, const RigidMot
 
 /// Sets the motion; the end positions (display only) the same whatever the caller's FP state.
 void apply_rigid_motion(Mesh& m, const RigidMotion& motion) {
-  const FpGuard fp;
+  const predicates::RoundToNearestGuard fp;
   m.motion = motion;
   for (Eigen::Index v = 0; v < m.start.rows(); ++v)
     m.end.row(v) = position_at(motion, row(m.start, static_cast<std::int32_t>(v)), 1.0).transpose();
@@ -875,7 +866,7 @@ auto with_threads(int max_threads, F&& f) {
 }  // namespace
 
 SceneResult Scene::find_contacts(const SceneOptions& options) {
-  const FpGuard fp;
+  const predicates::RoundToNearestGuard fp;
   check_options(options);
   if (impl_->any_rigid()) check_rigid_options(options);
   const SceneOptions o = with_pair_separation(options);
@@ -883,7 +874,7 @@ SceneResult Scene::find_contacts(const SceneOptions& options) {
 }
 
 EarliestContact Scene::earliest_contact(const SceneOptions& options) {
-  const FpGuard fp;
+  const predicates::RoundToNearestGuard fp;
   check_options(options);
   if (impl_->any_rigid()) check_rigid_options(options);
   if (options.broad_phase != BroadPhase::swept_bvh)

@@ -6,7 +6,7 @@
 // enclosure, so a pair reported disjoint is disjoint at every t in [0, T]. With a minimum
 // separation delta the boxes must be more than delta apart on one axis (hi + delta < lo, the sum
 // rounded upwards), so the pair never comes within delta over [0, T]. The caller holds
-// rounding towards +infinity (filters::RoundingGuard), which Interval_nt<false> needs: one guard
+// rounding towards +infinity (predicates::RoundingGuard), which Interval_nt<false> needs: one guard
 // for a whole batch of pairs, not a mode switch per pair.
 // PROOF: proofs/scene.md#time-window, proofs/scene.md#min-separation
 #pragma once
@@ -15,7 +15,7 @@
 #include <algorithm>
 
 #include "exactccd/types.hpp"
-#include "filters/interval.hpp"
+#include "core/predicates/interval.hpp"
 
 namespace exactccd::scene {
 
@@ -25,13 +25,13 @@ namespace detail {
 template <std::size_t N>
 EXACTCCD_CERTIFIED
 void window_extent(const Eigen::Vector3d* const (&start)[N], const Eigen::Vector3d* const (&end)[N],
-                   const filters::Interval& t, int k, double& lo, double& hi) {
+                   const predicates::Interval& t, int k, double& lo, double& hi) {
   lo = start[0]->coeff(k);
   hi = lo;
   for (std::size_t i = 0; i < N; ++i) {
     const double x0 = start[i]->coeff(k);
-    const filters::Interval at_t =
-        filters::Interval(x0) + t * (filters::Interval(end[i]->coeff(k)) - filters::Interval(x0));
+    const predicates::Interval at_t =
+        predicates::Interval(x0) + t * (predicates::Interval(end[i]->coeff(k)) - predicates::Interval(x0));
     lo = std::min({lo, x0, at_t.inf()});
     hi = std::max({hi, x0, at_t.sup()});
   }
@@ -42,7 +42,7 @@ EXACTCCD_CERTIFIED
 bool disjoint(const Eigen::Vector3d* const (&a0)[NA], const Eigen::Vector3d* const (&a1)[NA],
               const Eigen::Vector3d* const (&b0)[NB], const Eigen::Vector3d* const (&b1)[NB],
               double window, double delta) {
-  const filters::Interval t(window);
+  const predicates::Interval t(window);
   for (int k = 0; k < 3; ++k) {
     double lo_a, hi_a, lo_b, hi_b;
     window_extent(a0, a1, t, k, lo_a, hi_a);

@@ -95,7 +95,9 @@ void bind_rigid(py::module_& m) {
       py::arg("points"), py::arg("vertex_motion"), py::arg("face_motion"), py::kw_only(),
       py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "default",
       "Vertex p against the closed triangle (a, b, c): points = (4, 3) positions at s = 0; each "
-      "motion a RigidMotion or an array of end positions (straight lines).");
+      "motion a RigidMotion or an array of end positions (straight lines). mode: \"default\" "
+      "(certified), \"exact\", or \"float_only\" (the uncertified double test, for "
+      "comparison: toi_lo == toi_hi, stage \"float_only\").");
   m.def(
       "rigid_edge_edge_ccd",
       [](const py::handle& points, const py::handle& motion_a, const py::handle& motion_b,
@@ -114,7 +116,8 @@ void bind_rigid(py::module_& m) {
       py::arg("points"), py::arg("motion_a"), py::arg("motion_b"), py::kw_only(),
       py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "default",
       "Closed segment [ea0, ea1] against [eb0, eb1]: points = (4, 3) positions at s = 0; each "
-      "motion a RigidMotion or an array of end positions (straight lines).");
+      "motion a RigidMotion or an array of end positions (straight lines). mode: as "
+      "rigid_vertex_face_ccd.");
 }
 
 }  // namespace exactccd::python

@@ -65,7 +65,9 @@ SceneOptions scene_options(double t_max, double toi_width, const std::string& mo
                            const std::string& broad_phase, bool self_collision, int max_threads,
                            bool record_candidates, double min_separation) {
   SceneOptions options;
-  options.ccd = make_options(t_max, toi_width, mode, min_separation);
+  // The scene's delta is given once, as SceneOptions::min_separation (ccd.min_separation stays
+  // 0: the scene sets it for every pair).
+  options.ccd = make_options(t_max, toi_width, mode);
   options.min_separation = min_separation;
   options.broad_phase = parse_broad_phase(broad_phase);
   options.self_collision = self_collision;

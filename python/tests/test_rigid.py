@@ -199,6 +199,26 @@ def test_exact_constructions_agree_with_z3():
     tally.check()
 
 
+def test_rigid_float_only_from_python():
+    # The uncertified double test (mode="float_only") on a clear crossing: the point (5, 0, 0)
+    # turned a quarter about z crosses the wall y = 4 transversally at s = 1/2 (at (3, 4, 0)).
+    quarter = exactccd.RigidMotion(cayley=(0, 0, 1))
+    wall = [[2, 4, -1], [4, 4, -1], [3, 4, 1]]
+    exact = exactccd.rigid_vertex_face_ccd([[5, 0, 0]] + wall, quarter, exactccd.RigidMotion())
+    r = exactccd.rigid_vertex_face_ccd([[5, 0, 0]] + wall, quarter, exactccd.RigidMotion(),
+                                       mode="float_only")
+    assert r.collides and r.stage == "float_only" and r.toi_lo == r.toi_hi
+    assert abs(r.toi_lo - exact.toi_lo) <= 1e-12 * exact.toi_lo
+    t = math.atan(r.toi_lo) / math.atan(1.0)  # the time of the constant-speed turn
+    assert r.has_time and r.time_lo - 1e-15 <= t <= r.time_hi + 1e-15
+    # Clear of the wall (the arc stays within radius 5 < 6): no contact, +infinity TOIs.
+    far = [[2, 6, -1], [4, 6, -1], [3, 6, 1]]
+    miss = exactccd.rigid_vertex_face_ccd([[5, 0, 0]] + far, quarter, exactccd.RigidMotion(),
+                                          mode="float_only")
+    assert not miss.collides and miss.toi_lo == miss.toi_hi == math.inf
+    assert miss.stage == "float_only"
+
+
 def test_rigid_api_from_python():
     quarter = exactccd.RigidMotion(cayley=(0, 0, 1))
     wall = [[2, 4, -1], [4, 4, -1], [3, 4, 1]]
@@ -211,9 +231,6 @@ def test_rigid_api_from_python():
     turned = exactccd.RigidMotion.turn((0, 0, 0), (0, 0, 2), math.pi / 2)
     assert np.allclose(turned.cayley, [0, 0, 1])
     assert np.allclose(turned.position_at((5, 0, 0), 0.5), [3, 4, 0])
-    with pytest.raises(ValueError):
-        exactccd.rigid_vertex_face_ccd([[5, 0, 0]] + wall, quarter, exactccd.RigidMotion(),
-                                       mode="float_only")
     with pytest.raises(ValueError):
         exactccd.rigid_vertex_face_ccd([[5, 0, math.nan]] + wall, quarter, exactccd.RigidMotion())
     with pytest.raises(ValueError):

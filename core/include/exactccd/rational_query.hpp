@@ -40,12 +40,16 @@ EXACTCCD_API CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& o
 
 /// Minimum-separation CCD on the exact path with a rational delta (\ref min_separation): the
 /// earliest t in [0, t_max] at which the closed primitives come within Euclidean distance
-/// min_separation. options.min_separation is ignored (this delta is used instead).
+/// min_separation. The minimum separation is given once: here as the rational argument, so
+/// options.min_separation must be left at 0 (a non-zero one is refused, never ignored).
 /// \param query any rational coordinates (canonical mpq_class values).
 /// \param min_separation delta >= 0; 0 is contact, as exact_ccd(query, options) decides it.
-/// \param options t_max in (0, 1] and toi_width finite and >= 0; the mode is ignored.
+/// \param options t_max in (0, 1] and toi_width finite and >= 0; min_separation 0; the mode is
+///        ignored.
 /// \return the verdict and the TOI enclosure; +infinity TOIs when never within delta.
-/// \throws std::invalid_argument for a negative delta or options outside their domain.
+/// \throws std::invalid_argument for a negative delta, a non-zero options.min_separation
+///         ("exactccd: give the minimum separation once: options.min_separation or the
+///         rational argument, not both") or options outside their domain.
 EXACTCCD_API CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
                                  const CcdOptions& options = {});
 

@@ -109,10 +109,14 @@ struct RigidCcdResult {
 /// coplanar-throughout and degenerate primitives included.
 /// \param query finite positions and motions.
 /// \param options t_max in (0, 1], toi_width finite and >= 0; Mode::filtered (culling and
-///        interval filters, then the exact path) or Mode::exact. min_separation must be 0.
+///        interval filters, then the exact path), Mode::exact, or Mode::float_only (the
+///        uncertified double test, for comparison only: the rigid coplanarity polynomial's
+///        roots in [0, t_max] found in double arithmetic, the inclusion test at each in doubles;
+///        it misses contacts and reports false ones; toi_lo == toi_hi, the root, and
+///        decided_by == Stage::float_only). min_separation must be 0.
 /// \return the verdict, the TOI enclosure in s, and in time when defined.
-/// \throws std::invalid_argument for non-finite input, Mode::float_only, a non-zero
-///         min_separation or options outside their domain.
+/// \throws std::invalid_argument for non-finite input, a non-zero min_separation or options
+///         outside their domain.
 EXACTCCD_API RigidCcdResult vertex_face_ccd(const RigidVertexFaceQuery& query,
                                             const CcdOptions& options = {});
 

@@ -27,7 +27,8 @@
 /// collide with itself) is decided by the rigid vertex_face_ccd / edge_edge_ccd of rigid.hpp,
 /// so its TOI is in s; pairs without a rigid body take exactly today's path. Their swept boxes
 /// are certified interval enclosures of the vertices' arcs over pieces of [0, 1]. Rigid bodies
-/// need SceneOptions::min_separation = 0 and a mode other than Mode::float_only.
+/// need SceneOptions::min_separation = 0; with Mode::float_only their pairs get the rigid
+/// functions' uncertified float_only test (for comparison only), the others the linear one.
 /// PROOF: proofs/scene.md (section 9, rigid bodies)
 ///
 /// Threads: the narrow phase runs in parallel (TBB); the results do not depend on the number of
@@ -76,16 +77,18 @@ EXACTCCD_API const char* to_string(BroadPhase broad_phase) noexcept;
 struct SceneOptions {
   /// Options of each pair's test (t_max, toi_width, mode), as in vertex_face_ccd; invalid ones
   /// throw std::invalid_argument. With a rigid body in the scene, t_max bounds the motion
-  /// parameter s and Mode::float_only throws (rigid motion has no float_only test). ccd.min_separation must be 0 or equal to min_separation (the
-  /// scene sets it to min_separation for every pair; a delta the broad phase did not inflate its
-  /// boxes by would drop pairs), else std::invalid_argument.
+  /// parameter s, and Mode::float_only runs the rigid pairs' uncertified float_only test
+  /// (rigid.hpp). The scene's minimum separation is given once, as SceneOptions::min_separation
+  /// below: ccd.min_separation must be left at 0 (the scene sets it to min_separation for every
+  /// pair), else std::invalid_argument.
   CcdOptions ccd;
   /// Minimum separation delta >= 0 (\ref min_separation "minimum-separation CCD"): a pair is a
   /// contact when its closed primitives come within Euclidean distance delta, with the earliest
   /// such time as its TOI, exactly as vertex_face_ccd / edge_edge_ccd decide it with
   /// CcdOptions::min_separation = delta; the broad phase keeps every such pair. 0 (the default)
-  /// is contact itself, the same answers as without this field. Must be finite and >= 0.
-  /// Must be 0 when the scene holds a rigid body (rigid min-separation is not supported).
+  /// is contact itself, the same answers as without this field. The only place to give the
+  /// scene's delta (ccd.min_separation must stay 0). Must be finite and >= 0. Must be 0 when
+  /// the scene holds a rigid body (rigid min-separation is not supported).
   double min_separation = 0.0;
   /// The broad phase (swept_bvh, the default, never drops a colliding pair).
   BroadPhase broad_phase = BroadPhase::swept_bvh;

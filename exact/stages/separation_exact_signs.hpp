@@ -1,7 +1,7 @@
 // Exact signs of the minimum-separation region polynomials at double times. Polynomial 0 (the
 // face or interior region), the capsules' sides, the end spheres and the sides' projections,
 // the ones the search tightens, are first evaluated in double-double with a proven error bound
-// (filters/double_double_bounds.hpp); where that bound does not exclude 0, and for the other
+// (core/predicates/double_double_bounds.hpp); where that bound does not exclude 0, and for the other
 // polynomials, in integer arithmetic: the query and delta scaled by one power of two to
 // integers, the positions at t = m 2^e computed exactly as integers (scaled by 2^-e), and the
 // one polynomial asked for evaluated on them. Every region polynomial is homogeneous in the
@@ -20,14 +20,17 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/predicates/double_double.hpp"
+#include "core/predicates/double_double_bounds.hpp"
+#include "core/predicates/interval.hpp"
 #include "core/predicates/motion.hpp"
+#include "core/predicates/separation_exact_stage.hpp"
 #include "exact/stages/separation_integers.hpp"
-#include "filters/double_double.hpp"
-#include "filters/double_double_bounds.hpp"
-#include "filters/interval.hpp"
-#include "filters/separation_filter.hpp"
 
-namespace exactccd::filters::separation {
+namespace exactccd::exact::separation {
+
+using predicates::Interval;
+namespace dd = predicates::dd;
 
 /// How many evaluations of the calling thread's ExactSignsAtDoubles ran in GMP: tells tests
 /// which queries stayed within the fixed widths.
@@ -36,22 +39,29 @@ std::uint64_t gmp_evaluations_in_this_thread() noexcept;
 /// error bound, before any exact integer: tells tests which path decided.
 std::uint64_t bounded_decisions_in_this_thread() noexcept;
 
-/// Every region polynomial of a separation (its numbering), padded to degree 6.
-using CoefficientTable =
-    std::array<predicates::FixedPoly<Interval, 6>, kMaxSeparationPolynomials>;
-/// An enclosure of every region polynomial (over a piece, or at an instant).
-using CoefficientValues = std::array<Interval, kMaxSeparationPolynomials>;
+using CoefficientTable = predicates::SeparationCoefficientTable;
 
 /// a.b in plain arithmetic (the kernels' expressions in double: guesses only).
 inline double dot(const double (&a)[3], const double (&b)[3]) {
   return (a[0] * b[0] + a[1] * b[1]) + a[2] * b[2];
 }
 
-class ExactSignsAtDoubles {
+class ExactSignsAtDoubles final : public predicates::SeparationExactStage {
  public:
-  /// The four moving vertices (x_t0, x_t1 each) and delta, all finite doubles. No allocation.
+  /// The four moving vertices (x_t0, x_t1 each, kept by address: they must outlive this) and
+  /// delta, all finite doubles, of a query of the given pair. No allocation; the integer query
+  /// is formed when first needed (most queries are decided without it).
   ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*, 4>& t0,
-                      const std::array<const Eigen::Vector3d*, 4>& t1, double delta);
+                      const std::array<const Eigen::Vector3d*, 4>& t1, double delta,
+                      predicates::SeparationPair pair = predicates::SeparationPair::vertex_face);
+
+  // The stage's interface, for the pair given at construction.
+  int sign_at(int k, double t) const override;
+  Probe probe_at(int k, double t) const override;
+  double secant_guess(int k, double lo, double hi) const override;
+  double newton_guess(int k, double lo, double hi) const override;
+  void exact_coefficients(CoefficientTable* out) const override;
+  bool used_exact_arithmetic() const override { return exact_arithmetic_; }
 
   /// The exact sign of region polynomial k of the vertex-face separation (vertices p, a, b,
   /// c) or of the edge-edge one (a0, a1, b0, b1) at the double t in [0, 1].
@@ -70,11 +80,6 @@ class ExactSignsAtDoubles {
   /// sides' projections) at t in [0, 1], a Newton guess of its root from the same value (never
   /// a decision; NaN when there is none, and for the others, whose sign is *_sign's and
   /// `kernel` false). The sign is always exact: never a default 0 that would read as a root.
-  struct Probe {
-    bool kernel = false;
-    int sign = 0;
-    double newton = 0.0;
-  };
   Probe vertex_face_probe(int k, double t) const;
   Probe edge_edge_probe(int k, double t) const;
 
@@ -92,10 +97,6 @@ class ExactSignsAtDoubles {
   /// PROOF: proofs/min_separation.md#exact-coefficients
   void vertex_face_coefficients(CoefficientTable* out) const;
   void edge_edge_coefficients(CoefficientTable* out) const;
-
-  /// Whether any call so far needed exact integer arithmetic (an integer or GMP evaluation;
-  /// not the double-double signs): the query's stage is then exact_at_double.
-  bool used_exact_arithmetic() const { return exact_arithmetic_; }
 
  private:
   using Position = std::array<mpz_class, 3>;
@@ -132,7 +133,7 @@ class ExactSignsAtDoubles {
   };
   KernelValue kernel_value_at(const IntegerKernel& kernel, double t) const;
   /// The kernel's value at t in double-double with a running error bound
-  /// (filters/double_double_bounds.hpp); none where the scaled inputs are not exact doubles.
+  /// (core/predicates/double_double_bounds.hpp); none where the scaled inputs are not exact doubles.
   std::optional<dd::Bounded> bounded_value(const IntegerKernel& kernel, double t) const;
   /// A kernel's exact sign at t and its value's leading part in the scaled inputs' units: from
   /// bounded_value when its bound excludes 0 (counted), else from exact integers.
@@ -201,7 +202,13 @@ class ExactSignsAtDoubles {
     dd::Bounded d0[3][3], change[3][3];
   };
 
-  exact::SeparationIntegers q_;
+  /// The query in integers (formed when first asked for).
+  const exact::SeparationIntegers& q() const;
+
+  std::array<const Eigen::Vector3d*, 4> t0_, t1_;
+  double delta_;
+  predicates::SeparationPair pair_;
+  mutable std::optional<exact::SeparationIntegers> q_;
   mutable std::optional<ScaledInputs> scaled_;
   mutable BoundedSteps bounded_steps_;
   mutable std::optional<Gmp> gmp_;
@@ -210,4 +217,4 @@ class ExactSignsAtDoubles {
   mutable bool exact_arithmetic_ = false;
 };
 
-}  // namespace exactccd::filters::separation
+}  // namespace exactccd::exact::separation

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-namespace exactccd::filters::dd {
+namespace exactccd::predicates::dd {
 
 struct DoubleDouble {
   double hi = 0.0, lo = 0.0;
@@ -44,4 +44,4 @@ inline DoubleDouble dot(const DoubleDouble (&a)[3], const DoubleDouble (&b)[3]) 
   return (a[0] * b[0] + a[1] * b[1]) + a[2] * b[2];
 }
 
-}  // namespace exactccd::filters::dd
+}  // namespace exactccd::predicates::dd

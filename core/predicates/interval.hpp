@@ -12,7 +12,7 @@
 
 #include "core/predicates/fp_environment.hpp"
 
-namespace exactccd::filters {
+namespace exactccd::predicates {
 
 using Interval = CGAL::Interval_nt<false>;
 
@@ -42,4 +42,4 @@ EXACTCCD_CERTIFIED int certain_strict_sign(const Interval& x) {
   return x.inf() > 0 ? 1 : (x.sup() < 0 ? -1 : 0);
 }
 
-}  // namespace exactccd::filters
+}  // namespace exactccd::predicates

@@ -9,9 +9,9 @@
 
 #include <cmath>
 
-#include "filters/double_double.hpp"
+#include "core/predicates/double_double.hpp"
 
-namespace exactccd::filters::dd {
+namespace exactccd::predicates::dd {
 
 /// v = hi + lo (|lo| <= 2^-53 |hi| after each operation) and err >= |exact - v|, where
 /// exact is the value the same expression has in exact arithmetic.
@@ -84,4 +84,4 @@ inline int certified_sign(const Bounded& x) {
   return kUncertain;
 }
 
-}  // namespace exactccd::filters::dd
+}  // namespace exactccd::predicates::dd

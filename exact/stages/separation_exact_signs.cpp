@@ -1,6 +1,6 @@
 // PROOF: proofs/min_separation.md#interval-search
 // PROOF: proofs/min_separation.md#fixed-width-signs
-#include "filters/separation_exact_signs.hpp"
+#include "exact/stages/separation_exact_signs.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -13,7 +13,7 @@
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/separation.hpp"
 
-namespace exactccd::filters::separation {
+namespace exactccd::exact::separation {
 
 namespace {
 
@@ -57,14 +57,47 @@ std::uint64_t bounded_decisions_in_this_thread() noexcept { return g_bounded_dec
 
 ExactSignsAtDoubles::ExactSignsAtDoubles(const std::array<const Eigen::Vector3d*, 4>& t0,
                                          const std::array<const Eigen::Vector3d*, 4>& t1,
-                                         double delta)
-    : q_(exact::separation_integers(t0, t1, delta)) {}
+                                         double delta, predicates::SeparationPair pair)
+    : t0_(t0), t1_(t1), delta_(delta), pair_(pair) {}
+
+const exact::SeparationIntegers& ExactSignsAtDoubles::q() const {
+  if (!q_) q_.emplace(exact::separation_integers(t0_, t1_, delta_));
+  return *q_;
+}
+
+int ExactSignsAtDoubles::sign_at(int k, double t) const {
+  return pair_ == predicates::SeparationPair::vertex_face ? vertex_face_sign(k, t)
+                                                          : edge_edge_sign(k, t);
+}
+
+auto ExactSignsAtDoubles::probe_at(int k, double t) const -> Probe {
+  return pair_ == predicates::SeparationPair::vertex_face ? vertex_face_probe(k, t)
+                                                          : edge_edge_probe(k, t);
+}
+
+double ExactSignsAtDoubles::secant_guess(int k, double lo, double hi) const {
+  return pair_ == predicates::SeparationPair::vertex_face ? vertex_face_secant(k, lo, hi)
+                                                          : edge_edge_secant(k, lo, hi);
+}
+
+double ExactSignsAtDoubles::newton_guess(int k, double lo, double hi) const {
+  return pair_ == predicates::SeparationPair::vertex_face ? vertex_face_guess(k, lo, hi)
+                                                          : edge_edge_guess(k, lo, hi);
+}
+
+void ExactSignsAtDoubles::exact_coefficients(CoefficientTable* out) const {
+  if (pair_ == predicates::SeparationPair::vertex_face) {
+    vertex_face_coefficients(out);
+  } else {
+    edge_edge_coefficients(out);
+  }
+}
 
 auto ExactSignsAtDoubles::scaled_inputs() const -> const ScaledInputs& {
   if (!scaled_) {
     ScaledInputs s{};
     s.exact = true;
-    const int shift = q_.common_exponent + q_.bits;
+    const int shift = q().common_exponent + q().bits;
     auto scaled = [&](const exact::Dyadic& x) {
       // m 2^p, exact when its magnitude is at least 2^-1022 (normal; |m| < 2^53), which is
       // decided from m and p: the rounded result can equal 2^-1022 when the exact one is
@@ -80,8 +113,8 @@ auto ExactSignsAtDoubles::scaled_inputs() const -> const ScaledInputs& {
     };
     for (int end = 0; end < 2; ++end)
       for (int i = 0; i < 4; ++i)
-        for (int c = 0; c < 3; ++c) s.x[end][i][c] = scaled(q_.coords[end][i][c]);
-    s.delta = scaled(q_.delta);
+        for (int c = 0; c < 3; ++c) s.x[end][i][c] = scaled(q().coords[end][i][c]);
+    s.delta = scaled(q().delta);
     scaled_ = s;
   }
   return *scaled_;
@@ -90,13 +123,13 @@ auto ExactSignsAtDoubles::scaled_inputs() const -> const ScaledInputs& {
 auto ExactSignsAtDoubles::gmp() const -> const Gmp& {
   if (!gmp_) {
     Gmp g;
-    const int e = q_.common_exponent;
+    const int e = q().common_exponent;
     for (int i = 0; i < 4; ++i)
       for (int c = 0; c < 3; ++c) {
-        g.x0[i][c] = exact::separation_integer<mpz_class>(q_.coords[0][i][c], e, 0);
-        g.dx[i][c] = exact::separation_integer<mpz_class>(q_.coords[1][i][c], e, 0) - g.x0[i][c];
+        g.x0[i][c] = exact::separation_integer<mpz_class>(q().coords[0][i][c], e, 0);
+        g.dx[i][c] = exact::separation_integer<mpz_class>(q().coords[1][i][c], e, 0) - g.x0[i][c];
       }
-    g.delta = exact::separation_integer<mpz_class>(q_.delta, e, 0);
+    g.delta = exact::separation_integer<mpz_class>(q().delta, e, 0);
     gmp_.emplace(std::move(g));
   }
   return *gmp_;
@@ -252,10 +285,10 @@ auto ExactSignsAtDoubles::edge_edge_kernel(int k) -> IntegerKernel {
 
 const exact::StoredStepDifferences* ExactSignsAtDoubles::fixed_differences(
     const exact::DifferenceVertices& v) const {
-  if (q_.bits + 2 > 64 * exact::kMaxDifferenceLimbs - 1) return nullptr;
+  if (q().bits + 2 > 64 * exact::kMaxDifferenceLimbs - 1) return nullptr;
   if (fixed_differences_of_ != &v) {
     fixed_differences_.emplace(
-        exact::step_differences<exact::FixedInt<exact::kMaxDifferenceLimbs>>(q_, v));
+        exact::step_differences<exact::FixedInt<exact::kMaxDifferenceLimbs>>(q(), v));
     fixed_differences_of_ = &v;
   }
   return &*fixed_differences_;
@@ -287,7 +320,7 @@ auto ExactSignsAtDoubles::kernel_values(const IntegerKernel& kernel,
     return f(sign, out);
   };
   if constexpr (std::is_same_v<typename Ints::Difference, mpz_class>) {
-    return each(exact::step_differences<mpz_class>(q_, *kernel.vertices));
+    return each(exact::step_differences<mpz_class>(q(), *kernel.vertices));
   } else {
     // A fixed width was selected: B + 2 <= 191, so the stored differences exist.
     return each(*fixed_differences(*kernel.vertices));
@@ -301,7 +334,7 @@ auto ExactSignsAtDoubles::kernel_value_at(const IntegerKernel& kernel, double t)
   exact::dyadic_time(t, &d);  // the callers pass t in [0, 1]
   const std::uint64_t ts[1] = {d.numerator};
   const KernelValue v = with_stage_integers(
-      exact::separation_difference_bits(q_.bits, d.exponent), [&](auto ints) {
+      exact::separation_difference_bits(q().bits, d.exponent), [&](auto ints) {
         return kernel_values<decltype(ints)>(kernel, ts, d.exponent,
                                              [&](int sign, const auto& approx) {
                                                return KernelValue{sign, approx[0], d.exponent};
@@ -318,7 +351,7 @@ std::optional<dd::Bounded> ExactSignsAtDoubles::bounded_value(const IntegerKerne
   // bounded. PROOF: proofs/min_separation.md#double-double-signs
   const ScaledInputs& in = scaled_inputs();
   if (!in.exact) return std::nullopt;
-  const predicates::FpEnvironmentGuard nearest(predicates::Rounding::to_nearest);
+  const predicates::RoundToNearestGuard nearest;
   // The differences at t = 0 (exact) and their changes over the step, kept for the kernel's
   // vertices: a search asks the same kernel at several times.
   BoundedSteps& steps = bounded_steps_;
@@ -376,7 +409,7 @@ Vec plus3(const Vec& a, const Vec& b) { return {a[0] + b[0], a[1] + b[1], a[2] +
 double ExactSignsAtDoubles::scaled_value(KernelKind kind, const KernelValue& v) const {
   // The integer value is 2^(d(k - E)) g(t) for g of degree d, the unit 2^(E + L).
   const int degree = kind == KernelKind::face_like ? 6 : kind == KernelKind::capsule ? 4 : 2;
-  const long exponent = v.value.exponent - degree * (static_cast<long>(v.k) + q_.bits);
+  const long exponent = v.value.exponent - degree * (static_cast<long>(v.k) + q().bits);
   return std::ldexp(v.value.mantissa, static_cast<int>(std::clamp(exponent, -4000L, 4000L)));
 }
 
@@ -494,4 +527,4 @@ double ExactSignsAtDoubles::edge_edge_secant(int k, double lo, double hi) const 
   return secant(MakeEdgeEdge{}, k, lo, hi);
 }
 
-}  // namespace exactccd::filters::separation
+}  // namespace exactccd::exact::separation

@@ -1,0 +1,18 @@
+// The number types the filters compute in (core/predicates: intervals with directed rounding,
+// double-double with error bounds), by their short names in the filters' namespace.
+#pragma once
+
+#include "core/predicates/double_double_bounds.hpp"
+#include "core/predicates/interval.hpp"
+
+namespace exactccd::filters {
+
+using predicates::certain_strict_sign;
+using predicates::certainly_has_sign;
+using predicates::certified_sign;
+using predicates::CertifiedSign;
+using predicates::Interval;
+using predicates::RoundingGuard;
+namespace dd = predicates::dd;
+
+}  // namespace exactccd::filters
