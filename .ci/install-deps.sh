@@ -6,8 +6,9 @@ packages=(
   g++ cmake make pkg-config
   libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libeigen3-dev libboost-dev
   googletest libgtest-dev libbenchmark-dev libtbb-dev libcli11-dev nlohmann-json3-dev
-  # The Python module and its tests, the Dask oracle, the API reference (issue 11).
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed doxygen
+  # The Python module and its tests, the Dask oracle, the API reference (issue 11); python3 also
+  # runs .ci/check_test_times.py.
+  python3 pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed doxygen
   # z3: the independent check of minimum-separation and rigid-body CCD (python/tests/test_min_separation.py,
   # python/tests/test_rigid.py).
   python3-z3

@@ -5,12 +5,13 @@
 // The "per_query" and "per_bracket" counters are seconds per query / per bracket (shown in
 // the time unit of the table).
 //
-// kernels/...: the integer kernels of the exact stage at double times (exact/stages/integer_cubic.hpp)
-// on the sample and scene queries that reach that stage, per query: the cubic's coefficients,
-// one exact value at a double time, one contact test; in the stack integers the library uses
-// (FixedInt, width chosen from the proven bounds), in GMP (the same templates with mpz_class)
-// and in Boost.Multiprecision's fixed-precision cpp_int (unchecked, expression templates off;
-// 256, 512 or 1024 bits chosen from the same bounds), the candidate the library measured.
+// kernels/...: the integer kernels of the exact stage at double times
+// (exact/stages/integer_cubic.hpp) on the sample and scene queries that reach that stage, per
+// query: the cubic's coefficients, one exact value at a double time, one contact test; in the stack
+// integers the library uses (FixedInt, width chosen from the proven bounds), in GMP (the same
+// templates with mpz_class) and in Boost.Multiprecision's fixed-precision cpp_int (unchecked,
+// expression templates off; 256, 512 or 1024 bits chosen from the same bounds), the candidate the
+// library measured.
 //   ./build/bench/exact_path_bench --benchmark_filter=kernels --benchmark_repetitions=5
 #include <benchmark/benchmark.h>
 

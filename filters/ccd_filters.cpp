@@ -15,7 +15,6 @@ namespace exactccd::filters {
 namespace {
 
 using predicates::moving_point;
-
 using predicates::FixedPoly;
 using predicates::MovingPoint;
 using Quadratic = FixedPoly<Interval, 2>;

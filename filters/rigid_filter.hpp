@@ -10,26 +10,13 @@
 #include <array>
 #include <optional>
 
-#include "core/predicates/rigid_motion.hpp"
+#include "core/predicates/rigid_query.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::filters {
 
-/// One side of a rigid query in doubles (as the public SideMotion, exactly).
-struct DoubleSide {
-  bool rigid = true;
-  /// Zero unless set ({}: Vec3 has no initialisers of its own; the filters read the motion of a
-  /// linear side too, and must never see indeterminate doubles).
-  predicates::RigidMotionOver<double> motion{};
-  std::array<predicates::Vec3<double>, 3> end{};
-};
-
-/// Positions at s = 0 in the public queries' order, and the two sides (rigid_ccd.hpp's layout).
-struct DoubleRigidQuery {
-  QueryType type = QueryType::vertex_face;
-  std::array<predicates::Vec3<double>, 4> start;
-  std::array<DoubleSide, 2> side;
-};
+using predicates::DoubleRigidQuery;
+using predicates::DoubleSide;
 
 /// Exact signs of the query's reduced coplanarity polynomial g (or of any positive multiple of
 /// it) at doubles, consulted only where interval signs are uncertain. Must not depend on the

@@ -4,7 +4,6 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <type_traits>
 
 #include "core/predicates/separation.hpp"
@@ -17,7 +16,6 @@ namespace exactccd::filters {
 namespace {
 
 using predicates::moving_point;
-
 using predicates::Vec3;
 
 /// The extent [lo, hi] of some points on axis k.
@@ -55,7 +53,6 @@ bool boxes_apart(const std::array<const Eigen::Vector3d*, N1>& first0,
   }
   return false;
 }
-
 
 using Vertices = std::array<const Eigen::Vector3d*, 4>;
 

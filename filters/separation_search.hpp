@@ -10,12 +10,11 @@
 #include <array>
 #include <cstdint>
 #include <limits>
-#include <optional>
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/motion.hpp"
-#include "exactccd/types.hpp"
 #include "core/predicates/separation_exact_stage.hpp"
+#include "exactccd/types.hpp"
 #include "filters/certified_numbers.hpp"
 #include "filters/separation_filter.hpp"
 
@@ -115,7 +114,6 @@ constexpr int kFactoredDepth = 8;
 constexpr int kAdvanceRounds = 2;
 constexpr int kAdvanceSteps = 6;
 constexpr double kAdvancedPiece = 0x1p-8;
-
 
 /// Every piece before the current one is certainly never within delta (`cleared_` is its
 /// end). A piece is excluded by separating directions (depth <= kDirectionDepth), or when the

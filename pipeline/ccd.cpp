@@ -90,7 +90,8 @@ CcdResult exact_with_separation(const RationalQuery& query, const mpq_class& del
 }  // namespace
 
 CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
-  const predicates::RoundToNearestGuard nearest;  // the TOI's conversions to doubles compare doubles
+  const predicates::RoundToNearestGuard
+      nearest;  // the TOI's conversions to doubles compare doubles
   check_ccd_options(options);
   return exact_with_separation(query, mpq_class(options.min_separation), options);
 }

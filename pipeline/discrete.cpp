@@ -105,16 +105,17 @@ class Probe {
       mesh.x = at;
       const Triangles& tri = scene_.triangles(id);
       std::vector<Box> boxes(static_cast<std::size_t>(tri.rows()));
-      tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, tri.rows(), 4096),
-                        [&](const tbb::blocked_range<Eigen::Index>& r) {
-                          const predicates::RoundToNearestGuard nearest;  // comparisons: no denormals-are-zero
-                          for (Eigen::Index f = r.begin(); f != r.end(); ++f) {
-                            Box box = scene::point_box(at->row(tri(f, 0)));
-                            scene::grow(box, at->row(tri(f, 1)));
-                            scene::grow(box, at->row(tri(f, 2)));
-                            boxes[static_cast<std::size_t>(f)] = box;
-                          }
-                        });
+      tbb::parallel_for(
+          tbb::blocked_range<Eigen::Index>(0, tri.rows(), 4096),
+          [&](const tbb::blocked_range<Eigen::Index>& r) {
+            const predicates::RoundToNearestGuard nearest;  // comparisons: no denormals-are-zero
+            for (Eigen::Index f = r.begin(); f != r.end(); ++f) {
+              Box box = scene::point_box(at->row(tri(f, 0)));
+              scene::grow(box, at->row(tri(f, 1)));
+              scene::grow(box, at->row(tri(f, 2)));
+              boxes[static_cast<std::size_t>(f)] = box;
+            }
+          });
       if (mesh.built) {
         mesh.bvh.refit_or_rebuild(boxes);
       } else {

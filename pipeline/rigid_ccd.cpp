@@ -40,7 +40,7 @@ Vec3<exact::Rational> rational(const Vec3<double>& x) {
 }
 
 void add_side(const SideMotion& side, int vertices, const char* name,
-              filters::DoubleSide* out) {
+              predicates::DoubleSide* out) {
   out->rigid = side.kind == PathKind::rigid;
   if (out->rigid) {
     out->motion = {checked(side.rigid.pivot, name, "rigid.pivot"),
@@ -54,8 +54,8 @@ void add_side(const SideMotion& side, int vertices, const char* name,
 }
 
 /// The query in doubles, every input checked to be finite (no heap allocation unless it throws).
-filters::DoubleRigidQuery checked_query(const RigidVertexFaceQuery& query) {
-  filters::DoubleRigidQuery q;
+predicates::DoubleRigidQuery checked_query(const RigidVertexFaceQuery& query) {
+  predicates::DoubleRigidQuery q;
   q.type = QueryType::vertex_face;
   q.start = {checked(query.p, "p"), checked(query.a, "a"), checked(query.b, "b"),
              checked(query.c, "c")};
@@ -64,8 +64,8 @@ filters::DoubleRigidQuery checked_query(const RigidVertexFaceQuery& query) {
   return q;
 }
 
-filters::DoubleRigidQuery checked_query(const RigidEdgeEdgeQuery& query) {
-  filters::DoubleRigidQuery q;
+predicates::DoubleRigidQuery checked_query(const RigidEdgeEdgeQuery& query) {
+  predicates::DoubleRigidQuery q;
   q.type = QueryType::edge_edge;
   q.start = {checked(query.ea0, "ea0"), checked(query.ea1, "ea1"), checked(query.eb0, "eb0"),
              checked(query.eb1, "eb1")};
@@ -80,8 +80,8 @@ bool is_zero(const Vec3<double>& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 /// (pivot fixed, q != 0), or otherwise (a translating pivot or a moving linear vertex).
 enum class SideTurn : std::uint8_t { rest, turning, moving };
 
-SideTurn side_turn(const filters::DoubleRigidQuery& q, int index) {
-  const filters::DoubleSide& side = q.side[index];
+SideTurn side_turn(const predicates::DoubleRigidQuery& q, int index) {
+  const predicates::DoubleSide& side = q.side[index];
   const int begin = index == 0 ? 0 : (q.type == QueryType::vertex_face ? 1 : 2);
   const int end = index == 0 ? begin + (q.type == QueryType::vertex_face ? 1 : 2) : 4;
   if (!side.rigid) {
@@ -146,7 +146,7 @@ std::pair<double, double> rotation_time(const Vec3<double>& q, double s_lo, doub
   return {std::max(lo, 0.0), hi};
 }
 
-RigidCcdResult with_time(const CcdResult& ccd, const filters::DoubleRigidQuery& q) {
+RigidCcdResult with_time(const CcdResult& ccd, const predicates::DoubleRigidQuery& q) {
   RigidCcdResult r;
   r.ccd = ccd;
   const SideTurn turn[2] = {side_turn(q, 0), side_turn(q, 1)};
@@ -170,14 +170,6 @@ RigidCcdResult with_time(const CcdResult& ccd, const filters::DoubleRigidQuery& 
   return r;
 }
 
-CcdResult float_only_ccd(const RigidVertexFaceQuery& query, const CcdOptions& options) {
-  return float_only::rigid_vertex_face_ccd(query, options);
-}
-
-CcdResult float_only_ccd(const RigidEdgeEdgeQuery& query, const CcdOptions& options) {
-  return float_only::rigid_edge_edge_ccd(query, options);
-}
-
 template <class Query>
 RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard nearest;
@@ -185,9 +177,9 @@ RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
   if (options.min_separation != 0.0)
     throw std::invalid_argument(
         "exactccd: min_separation is not supported for rigid motion (it must be 0)");
-  const filters::DoubleRigidQuery q = checked_query(query);
+  const predicates::DoubleRigidQuery q = checked_query(query);
   if (options.mode == Mode::float_only)  // uncertified, for comparison only
-    return with_time(float_only_ccd(query, options), q);
+    return with_time(float_only::rigid_ccd(q, options), q);
   if (options.mode == Mode::filtered) {
     RigidExactSignsAtDoubles exact(q);
     if (std::optional<CcdResult> r = filters::rigid_ccd_filter(q, options, exact))

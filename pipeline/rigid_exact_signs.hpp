@@ -13,7 +13,7 @@
 namespace exactccd {
 
 /// The same query over the rationals (the same values), for the exact path.
-inline exact::RationalRigidQuery rational_query(const filters::DoubleRigidQuery& d) {
+inline exact::RationalRigidQuery rational_query(const predicates::DoubleRigidQuery& d) {
   auto rational = [](const predicates::Vec3<double>& x) {
     return predicates::Vec3<exact::Rational>{exact::Rational(x.x), exact::Rational(x.y),
                                              exact::Rational(x.z)};
@@ -23,7 +23,7 @@ inline exact::RationalRigidQuery rational_query(const filters::DoubleRigidQuery&
   for (int i = 0; i < 4; ++i) q.start[i] = rational(d.start[i]);
   const int first = d.type == QueryType::vertex_face ? 1 : 2;
   for (int k = 0; k < 2; ++k) {
-    const filters::DoubleSide& s = d.side[k];
+    const predicates::DoubleSide& s = d.side[k];
     exact::RationalSide& r = q.side[k];
     r.rigid = s.rigid;
     if (s.rigid) {
@@ -42,7 +42,7 @@ inline exact::RationalRigidQuery rational_query(const filters::DoubleRigidQuery&
 /// holds (extreme magnitudes).
 class RigidExactSignsAtDoubles final : public filters::RigidExactSigns {
  public:
-  explicit RigidExactSignsAtDoubles(const filters::DoubleRigidQuery& q) : query_(q) {}
+  explicit RigidExactSignsAtDoubles(const predicates::DoubleRigidQuery& q) : query_(q) {}
 
   int coplanarity_sign_at(double s) override {
     if (!dyadic_ready_) {
@@ -61,7 +61,7 @@ class RigidExactSignsAtDoubles final : public filters::RigidExactSigns {
   }
 
  private:
-  const filters::DoubleRigidQuery& query_;
+  const predicates::DoubleRigidQuery& query_;
   predicates::FixedPoly<exact::StackDyadic, 5> dyadic_;
   bool dyadic_ready_ = false;
   std::optional<exact::Polynomial> rational_;

@@ -4,8 +4,8 @@
 // functions through counters as well, then checks that every query decided by Stage::culling or
 // Stage::filter allocated nothing. The exact stages at double times (filter_exact_toi,
 // exact_at_double) allocate nothing either when all their computations fit the fixed-size
-// integers (exact/stages/integer_query.hpp counts those that needed GMP). The rational exact path does
-// allocate (GMP numbers, polynomials): its counts are reported, and a test asserts that it is
+// integers (exact/stages/integer_query.hpp counts those that needed GMP). The rational exact path
+// does allocate (GMP numbers, polynomials): its counts are reported, and a test asserts that it is
 // seen allocating, which proves the counters see the library's allocations.
 #include <gmp.h>
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Signs of the minimum-separation region polynomials at doubles from double-double with a
-// running error bound (core/predicates/double_double_bounds.hpp, ExactSignsAtDoubles::bounded_value,
-// and the tightening's probes, ExactSignsAtDoubles::*_probe),
+// running error bound (core/predicates/double_double_bounds.hpp,
+// ExactSignsAtDoubles::bounded_value, and the tightening's probes, ExactSignsAtDoubles::*_probe),
 // against the same polynomials over the rationals (core/predicates/separation.hpp read in
 // mpq_class), where it matters: at the two adjacent doubles around each root of every kernel
 // polynomial (found by bisection over the rationals) and a few ulps either side, where the

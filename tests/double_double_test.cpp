@@ -1,7 +1,7 @@
-// Double-double arithmetic (core/predicates/double_double.hpp), used only for root guesses: sums and
-// products of two doubles are exact (hi + lo equals the exact value, checked in rationals),
-// and a double-double expression's value is within 2^-100 of its magnitude's terms on random
-// inputs, where plain doubles lose everything (a difference of large equal-ish products).
+// Double-double arithmetic (core/predicates/double_double.hpp), used only for root guesses: sums
+// and products of two doubles are exact (hi + lo equals the exact value, checked in rationals), and
+// a double-double expression's value is within 2^-100 of its magnitude's terms on random inputs,
+// where plain doubles lose everything (a difference of large equal-ish products).
 #include <gtest/gtest.h>
 #include <gmpxx.h>
 

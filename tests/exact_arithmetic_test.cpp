@@ -1,7 +1,8 @@
 // Unit tests of the exact arithmetic under the exact path: rational polynomials
-// (exact/polynomials/polynomial.hpp), real root isolation (exact/polynomials/root_isolation.hpp), signs at algebraic
-// times (exact/polynomials/algebraic_time.hpp) and the exact relation of rationals to doubles
-// (exact/arithmetic/rational.hpp). Expected values are worked out by hand in the comments.
+// (exact/polynomials/polynomial.hpp), real root isolation (exact/polynomials/root_isolation.hpp),
+// signs at algebraic times (exact/polynomials/algebraic_time.hpp) and the exact relation of
+// rationals to doubles (exact/arithmetic/rational.hpp). Expected values are worked out by hand in
+// the comments.
 #include <gtest/gtest.h>
 
 #include <cfloat>

@@ -1,8 +1,9 @@
 // The fixed-size exact integers of the exact-at-double-times stage:
 //  - FixedInt<N> arithmetic against GMP (residues modulo 2^(64N), and exact values);
-//  - the bit-length bounds of exact/arithmetic/integer_bounds.hpp against the bit lengths the kernels
-//    of exact/stages/integer_cubic.hpp really reach, measured by instantiating the same templates with
-//    an integer type that records the bit length of every value it produces, on adversarial
+//  - the bit-length bounds of exact/arithmetic/integer_bounds.hpp against the bit lengths the
+//  kernels
+//    of exact/stages/integer_cubic.hpp really reach, measured by instantiating the same templates
+//    with an integer type that records the bit length of every value it produces, on adversarial
 //    queries at the bound (coordinates of the largest bit length a width admits, times with the
 //    largest admissible exponent k); the bounds must hold and be nearly reached;
 //  - the width selection: each computation runs in the FixedInt its bound selects, and in GMP

@@ -66,16 +66,16 @@ Vec3<mpq_class> rational(const Vec3<double>& v) { return {v.x, v.y, v.z}; }
 
 /// A random query of the given type with each side rigid or linear (any data: the identity
 /// holds for all of them); a rigid side sometimes has q = 0 or d = 0.
-filters::DoubleRigidQuery random_query(std::mt19937_64& rng, QueryType type, bool rigid0,
+predicates::DoubleRigidQuery random_query(std::mt19937_64& rng, QueryType type, bool rigid0,
                                        bool rigid1) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   auto point = [&] { return Vec3<double>{u(rng), u(rng), u(rng)}; };
-  filters::DoubleRigidQuery q;
+  predicates::DoubleRigidQuery q;
   q.type = type;
   for (auto& x : q.start) x = point();
   const bool rigid[2] = {rigid0, rigid1};
   for (int k = 0; k < 2; ++k) {
-    filters::DoubleSide& s = q.side[k];
+    predicates::DoubleSide& s = q.side[k];
     s.rigid = rigid[k];
     if (s.rigid) {
       s.motion.pivot = point();
@@ -89,7 +89,7 @@ filters::DoubleRigidQuery random_query(std::mt19937_64& rng, QueryType type, boo
   return q;
 }
 
-exact::RationalRigidQuery rational_query(const filters::DoubleRigidQuery& d) {
+exact::RationalRigidQuery rational_query(const predicates::DoubleRigidQuery& d) {
   exact::RationalRigidQuery q;
   q.type = d.type;
   for (int i = 0; i < 4; ++i) q.start[i] = rational(d.start[i]);
@@ -130,7 +130,7 @@ TEST(RigidFilter, ReducedPolynomialTimesTheDenominatorsIsTheDeterminant) {
   for (QueryType type : {QueryType::vertex_face, QueryType::edge_edge})
     for (int kinds = 0; kinds < 4; ++kinds)
       for (int i = 0; i < per_kind; ++i) {
-        const filters::DoubleRigidQuery d = random_query(rng, type, kinds & 1, kinds & 2);
+        const predicates::DoubleRigidQuery d = random_query(rng, type, kinds & 1, kinds & 2);
         const exact::RationalRigidQuery q = rational_query(d);
         // The reference: the determinant on the common denominator, as the exact path formed it
         // before the closed form (vertex-face det[b - a, c - a, p - a]; edge-edge

@@ -169,7 +169,9 @@ struct RandomPair {
 class Random {
  public:
   explicit Random(std::uint64_t seed) : engine_(seed) {}
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(engine_); }
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(engine_);
+  }
   Vector3d point(double r = 1.0) { return {uniform(-r, r), uniform(-r, r), uniform(-r, r)}; }
   int below(int n) { return std::uniform_int_distribution<int>(0, n - 1)(engine_); }
 
@@ -191,7 +193,8 @@ SidePath random_side(Random& rng, const std::array<Vector3d, 4>& start, int begi
   } else {
     side.motion.kind = PathKind::linear;
     for (int i = 0; i < count; ++i)
-      side.motion.linear_end[i] = kind == 2 ? Vector3d(start[begin + i] + rng.point()) : start[begin + i];
+      side.motion.linear_end[i] =
+          kind == 2 ? Vector3d(start[begin + i] + rng.point()) : start[begin + i];
   }
   return side;
 }
@@ -442,7 +445,8 @@ TEST(RigidFloatOnly, SceneWithARigidBodyRunsAndFindsTheSameContacts) {
     EXPECT_EQ(g.toi_lo, g.toi_hi);
     EXPECT_LE(std::fabs(g.toi_lo - w.toi_lo), 1e-9 * w.toi_lo) << i;
     EXPECT_EQ(g.has_time, w.has_time);
-    const bool involves_rigid = scene.is_rigid(w.pair.first_mesh) || scene.is_rigid(w.pair.second_mesh);
+    const bool involves_rigid =
+        scene.is_rigid(w.pair.first_mesh) || scene.is_rigid(w.pair.second_mesh);
     (involves_rigid ? rigid_pair : linear_pair) = true;
   }
   EXPECT_TRUE(rigid_pair);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/float_only/sign_change_bisection.hpp"
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
 
@@ -15,9 +16,7 @@ namespace exactccd::float_only {
 namespace {
 
 using predicates::moving_point;
-
 using predicates::FixedPoly;
-using predicates::MovingPoint;
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
@@ -55,24 +54,14 @@ int cubic_roots(const FixedPoly<double, 3>& f, double t_max, double roots[3]) {
 
   int n = 0;
   for (int i = 0; i + 1 < nb; ++i) {
-    double lo = breaks[i], hi = breaks[i + 1];
-    double flo = predicates::evaluate(f, lo), fhi = predicates::evaluate(f, hi);
+    const double lo = breaks[i], hi = breaks[i + 1];
+    const double flo = predicates::evaluate(f, lo), fhi = predicates::evaluate(f, hi);
     if (flo == 0) {
       if (n == 0 || roots[n - 1] != lo) roots[n++] = lo;
       continue;
     }
     if (sign(flo) * sign(fhi) > 0 || fhi == 0) continue;  // a zero at hi is the next piece's lo
-    for (int it = 0; it < 200; ++it) {
-      const double mid = 0.5 * (lo + hi);
-      if (mid <= lo || mid >= hi) break;
-      const double fm = predicates::evaluate(f, mid);
-      if (fm == 0) {
-        lo = hi = mid;
-        break;
-      }
-      (sign(fm) == sign(flo) ? lo : hi) = mid;
-    }
-    if (n < 3) roots[n++] = lo;  // the earlier end: the classic codes' conservative choice
+    if (n < 3) roots[n++] = bisect_sign_change(f, lo, hi, sign(flo));
   }
   if (n < 3 && predicates::evaluate(f, t_max) == 0 && (n == 0 || roots[n - 1] != t_max))
     roots[n++] = t_max;

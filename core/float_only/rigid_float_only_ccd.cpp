@@ -5,6 +5,7 @@
 
 #include <array>
 
+#include "core/float_only/sign_change_bisection.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "core/predicates/rigid_coplanarity.hpp"
 
@@ -50,7 +51,7 @@ int roots_on(const FixedPoly<double, D>& f, double lo, double hi, double* roots)
     if (n < D && (n == 0 || last != t)) roots[n++] = last = t;
   };
   for (int i = 0; i + 1 < nb; ++i) {
-    double a = breaks[i], b = breaks[i + 1];
+    const double a = breaks[i], b = breaks[i + 1];
     const double fa = predicates::evaluate(f, a);
     if (fa == 0) {
       add(a);
@@ -58,49 +59,23 @@ int roots_on(const FixedPoly<double, D>& f, double lo, double hi, double* roots)
     }
     const int sa = sign(fa);  // 0 for NaN: no root is looked for
     if (sa == 0 || sign(predicates::evaluate(f, b)) != -sa) continue;  // a zero at b: next piece
-    for (int it = 0; it < 200; ++it) {
-      const double mid = 0.5 * (a + b);
-      if (mid <= a || mid >= b) break;
-      const double fm = predicates::evaluate(f, mid);
-      if (fm == 0) {
-        a = b = mid;
-        break;
-      }
-      (sign(fm) == sa ? a : b) = mid;
-    }
-    add(a);  // the earlier end, as the linear float_only test (the conservative choice)
+    add(bisect_sign_change(f, a, b, sa));
   }
   if (predicates::evaluate(f, hi) == 0) add(hi);
   return n;
 }
 
-/// One side in doubles, in the layout the templates of rigid_coplanarity.hpp read.
-struct Side {
-  bool rigid = true;
-  predicates::RigidMotionOver<double> motion{};
-  std::array<Vec3<double>, 3> end{};
-};
-
-Vec3<double> vec(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
-
-Side side_of(const SideMotion& m, int vertices) {
-  Side s;
-  s.rigid = m.kind == PathKind::rigid;
-  if (s.rigid)
-    s.motion = {vec(m.rigid.pivot), vec(m.rigid.translation), vec(m.rigid.cayley)};
-  else
-    for (int i = 0; i < vertices; ++i) s.end[i] = vec(m.linear_end[i]);
-  return s;
-}
+using predicates::DoubleSide;
 
 /// The four points' paths x(s) = X(s) / w(s) in doubles (w = 1 on a linear side).
 class Paths {
  public:
-  Paths(const std::array<Vec3<double>, 4>& start, const Side& first, const Side& second,
-        int first_count) : first_count_(first_count) {
+  Paths(const std::array<Vec3<double>, 4>& start, const DoubleSide& first,
+        const DoubleSide& second, int first_count)
+      : first_count_(first_count) {
     for (int i = 0; i < 4; ++i) {
       const bool on_first = i < first_count;
-      const Side& side = on_first ? first : second;
+      const DoubleSide& side = on_first ? first : second;
       const int index = on_first ? i : i - first_count;
       numerator_[i] = side.rigid ? predicates::rigid_path_numerator(side.motion, start[i])
                                  : predicates::linear_path_numerator(start[i], side.end[index]);
@@ -124,7 +99,7 @@ class Paths {
   }
 
  private:
-  static FixedPoly<double, 2> denominator_of(const Side& side) {
+  static FixedPoly<double, 2> denominator_of(const DoubleSide& side) {
     return side.rigid ? predicates::rigid_path_denominator(side.motion)
                       : FixedPoly<double, 2>{{1.0, 0.0, 0.0}};
   }
@@ -147,8 +122,18 @@ bool contact_at(QueryType type, const Paths& paths, double s) {
 /// Samples of the coplanar-throughout case (g identically zero in doubles).
 constexpr int kSamples = 64;
 
-CcdResult first_contact(QueryType type, const std::array<Vec3<double>, 4>& start,
-                        const Side& first, const Side& second, double t_max) {
+}  // namespace
+
+int polynomial_roots(const FixedPoly<double, 5>& g, double t_max, double roots[5]) {
+  if (is_zero(g)) return 0;
+  return roots_on(g, 0.0, t_max, roots);
+}
+
+CcdResult rigid_ccd(const predicates::DoubleRigidQuery& q, const CcdOptions& options) {
+  const QueryType type = q.type;
+  const std::array<Vec3<double>, 4>& start = q.start;
+  const DoubleSide &first = q.side[0], &second = q.side[1];
+  const double t_max = options.t_max;
   CcdResult r;
   r.decided_by = Stage::float_only;
   const int first_count = type == QueryType::vertex_face ? 1 : 2;
@@ -190,23 +175,6 @@ CcdResult first_contact(QueryType type, const std::array<Vec3<double>, 4>& start
   for (int i = 0; i < n; ++i)
     if (contact_at(type, paths, roots[i])) return found(roots[i]);
   return r;
-}
-
-}  // namespace
-
-int polynomial_roots(const FixedPoly<double, 5>& g, double t_max, double roots[5]) {
-  if (is_zero(g)) return 0;
-  return roots_on(g, 0.0, t_max, roots);
-}
-
-CcdResult rigid_vertex_face_ccd(const RigidVertexFaceQuery& q, const CcdOptions& options) {
-  return first_contact(QueryType::vertex_face, {vec(q.p), vec(q.a), vec(q.b), vec(q.c)},
-                       side_of(q.vertex, 1), side_of(q.face, 3), options.t_max);
-}
-
-CcdResult rigid_edge_edge_ccd(const RigidEdgeEdgeQuery& q, const CcdOptions& options) {
-  return first_contact(QueryType::edge_edge, {vec(q.ea0), vec(q.ea1), vec(q.eb0), vec(q.eb1)},
-                       side_of(q.edge_a, 2), side_of(q.edge_b, 2), options.t_max);
 }
 
 }  // namespace exactccd::float_only

@@ -18,18 +18,16 @@
 #pragma once
 
 #include "core/predicates/motion.hpp"
-#include "exactccd/rigid.hpp"
+#include "core/predicates/rigid_query.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::float_only {
 
-/// Vertex-face float_only test of a rigid query over s in [0, options.t_max] (options already
-/// validated, positions and motions finite; toi_width and min_separation are not read: the TOI
-/// is one double). The time of a rotation is left to the caller.
-CcdResult rigid_vertex_face_ccd(const RigidVertexFaceQuery& query, const CcdOptions& options);
-
-/// Edge-edge float_only test of a rigid query; as rigid_vertex_face_ccd.
-CcdResult rigid_edge_edge_ccd(const RigidEdgeEdgeQuery& query, const CcdOptions& options);
+/// The float_only test of a rigid query (vertex-face or edge-edge, as query.type says) over s in
+/// [0, options.t_max] (options already validated, the query checked finite by the pipeline;
+/// toi_width and min_separation are not read: the TOI is one double). The time of a rotation is
+/// left to the caller.
+CcdResult rigid_ccd(const predicates::DoubleRigidQuery& query, const CcdOptions& options);
 
 /// The roots in [0, t_max] of the degree-5 polynomial g found in double arithmetic, ascending,
 /// at most 5, written to roots; returns their count (0 for the zero polynomial: the caller

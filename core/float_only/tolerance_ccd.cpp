@@ -14,7 +14,6 @@ namespace exactccd::methods {
 namespace {
 
 using predicates::moving_point;
-
 using Eigen::Vector3d;
 
 /// The position at time t, (1 - t) x0 + t x1: exactly x0 at t = 0 and x1 at t = 1.

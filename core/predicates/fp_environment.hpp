@@ -142,8 +142,8 @@ class RoundToNearestGuard : FpEnvironmentGuard {
 
 #if defined(__i386__) || defined(__x86_64__)
 /// The x87 unit (long double): the wide-range interval filter of the exact stage
-/// (exact/arithmetic/wide_interval.hpp) computes its bounds in extended precision, rounding upward. A
-/// caller's unmasked x87 exception would trap there, and its precision or rounding control would
+/// (exact/arithmetic/wide_interval.hpp) computes its bounds in extended precision, rounding upward.
+/// A caller's unmasked x87 exception would trap there, and its precision or rounding control would
 /// break the bounds: all masked, 64-bit precision, the requested rounding (to nearest by
 /// default); the caller's control word and sticky flags are restored on return.
 class X87EnvironmentGuard {

@@ -1,7 +1,7 @@
-// The operations the exact integer kernels (exact/stages/integer_cubic.hpp) use, for each integer type
-// they are instantiated with: FixedInt<N> (stack, exact within the proven bounds) and mpz_class
-// (GMP, the reference and the fallback beyond the largest fixed width). The kernels call these
-// unqualified, so a test can add its own integer type (e.g. one that records bit lengths) by
+// The operations the exact integer kernels (exact/stages/integer_cubic.hpp) use, for each integer
+// type they are instantiated with: FixedInt<N> (stack, exact within the proven bounds) and
+// mpz_class (GMP, the reference and the fallback beyond the largest fixed width). The kernels call
+// these unqualified, so a test can add its own integer type (e.g. one that records bit lengths) by
 // declaring the same functions next to it.
 #pragma once
 
@@ -188,9 +188,9 @@ inline LeadingBits leading_bits(const mpz_class& x) {
 
 // ---- rounded values, for guidance only ---------------------------------------------------------
 
-/// The floating point of guidance (exact/polynomials/guided_bisection.hpp): double. (Extended precision
-/// would pin a root no better once the probes use exact values, and costs x87 arithmetic and an
-/// x87 environment switch per bisection.)
+/// The floating point of guidance (exact/polynomials/guided_bisection.hpp): double. (Extended
+/// precision would pin a root no better once the probes use exact values, and costs x87 arithmetic
+/// and an x87 environment switch per bisection.)
 using GuideReal = double;
 
 /// x ~ mantissa 2^exponent, 1/2 <= |mantissa| <= 1 (mantissa 0 for x = 0), from the leading 64

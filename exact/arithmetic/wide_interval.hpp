@@ -24,8 +24,8 @@ namespace exactccd::exact {
 using predicates::X87Interval;
 using predicates::certain_sign;
 
-/// An enclosure of the integer z (GMP): mpz_get_d_2exp truncates toward zero to 53 bits, so |z| lies
-/// in [|d|, |d| + 2^-53] 2^e; both ends are exact in 64-bit significands.
+/// An enclosure of the integer z (GMP): mpz_get_d_2exp truncates toward zero to 53 bits, so |z|
+/// lies in [|d|, |d| + 2^-53] 2^e; both ends are exact in 64-bit significands.
 inline X87Interval enclosure_of(const mpz_class& z) {
   if (sgn(z) == 0) return {0.0L, 0.0L};
   long e = 0;

@@ -1,7 +1,7 @@
 // Roots of small integer polynomials bracketed between doubles, and exact signs of other
 // polynomials at them: the root isolation (Descartes' rule on Bernstein coefficients) and the
-// sign evaluation of the fast exact stage (exact/stages/algebraic_at_doubles.hpp). Fixed-size integers
-// on doubles; GMP only for common factors, square-free parts and brackets finer than the
+// sign evaluation of the fast exact stage (exact/stages/algebraic_at_doubles.hpp). Fixed-size
+// integers on doubles; GMP only for common factors, square-free parts and brackets finer than the
 // doubles.
 // PROOF: proofs/exact_ccd.md#descartes-at-doubles
 // PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root

@@ -30,8 +30,8 @@ constexpr long bernstein_bits(long coefficient_bits, int degree, long time_expon
   return coefficient_bits + degree * time_exponent + 8;
 }
 
-/// Coefficients wider than this get the wide-range interval filter (exact/arithmetic/wide_interval.hpp):
-/// below it the fixed-size evaluations are already cheap.
+/// Coefficients wider than this get the wide-range interval filter
+/// (exact/arithmetic/wide_interval.hpp): below it the fixed-size evaluations are already cheap.
 constexpr long kWideFilterBits = 320;
 
 /// A double strictly inside (lo, hi), 0 <= lo < hi: the rounded arithmetic middle while the

@@ -354,7 +354,8 @@ std::optional<dd::Bounded> ExactSignsAtDoubles::bounded_value(const IntegerKerne
   const predicates::RoundToNearestGuard nearest;
   // The differences at t = 0 (exact) and their changes over the step, kept for the kernel's
   // vertices: a search asks the same kernel at several times.
-  BoundedSteps& steps = bounded_steps_;
+  if (!bounded_steps_) bounded_steps_.emplace();
+  BoundedSteps& steps = *bounded_steps_;
   if (steps.of != kernel.vertices) {
     for (int j = 0; j < 3; ++j)
       for (int c = 0; c < 3; ++c) {

@@ -1,8 +1,8 @@
 // Exact signs of the minimum-separation region polynomials at double times. Polynomial 0 (the
 // face or interior region), the capsules' sides, the end spheres and the sides' projections,
 // the ones the search tightens, are first evaluated in double-double with a proven error bound
-// (core/predicates/double_double_bounds.hpp); where that bound does not exclude 0, and for the other
-// polynomials, in integer arithmetic: the query and delta scaled by one power of two to
+// (core/predicates/double_double_bounds.hpp); where that bound does not exclude 0, and for the
+// other polynomials, in integer arithmetic: the query and delta scaled by one power of two to
 // integers, the positions at t = m 2^e computed exactly as integers (scaled by 2^-e), and the
 // one polynomial asked for evaluated on them. Every region polynomial is homogeneous in the
 // coordinates and delta, so the common positive scale changes no sign. The kernels run in
@@ -133,7 +133,8 @@ class ExactSignsAtDoubles final : public predicates::SeparationExactStage {
   };
   KernelValue kernel_value_at(const IntegerKernel& kernel, double t) const;
   /// The kernel's value at t in double-double with a running error bound
-  /// (core/predicates/double_double_bounds.hpp); none where the scaled inputs are not exact doubles.
+  /// (core/predicates/double_double_bounds.hpp); none where the scaled inputs are not exact
+  /// doubles.
   std::optional<dd::Bounded> bounded_value(const IntegerKernel& kernel, double t) const;
   /// A kernel's exact sign at t and its value's leading part in the scaled inputs' units: from
   /// bounded_value when its bound excludes 0 (counted), else from exact integers.
@@ -210,7 +211,7 @@ class ExactSignsAtDoubles final : public predicates::SeparationExactStage {
   predicates::SeparationPair pair_;
   mutable std::optional<exact::SeparationIntegers> q_;
   mutable std::optional<ScaledInputs> scaled_;
-  mutable BoundedSteps bounded_steps_;
+  mutable std::optional<BoundedSteps> bounded_steps_;  // formed when first needed
   mutable std::optional<Gmp> gmp_;
   mutable std::optional<exact::StoredStepDifferences> fixed_differences_;
   mutable const exact::DifferenceVertices* fixed_differences_of_ = nullptr;

@@ -4,9 +4,9 @@
 // p - a; edge-edge a1 - a0, b1 - b0, a0 - b0), and the capsules' sides
 // |W|^2 |E|^2 - (W.E)^2 - delta^2 |E|^2 of a vertex p against a segment [x, y] (W = p - x,
 // E = y - x), both formed from differences of the moving vertices. Written once over staged
-// integer types, as exact/stages/integer_cubic.hpp: FixedInt widths chosen from the proven bit-length
-// bounds before computing (no allocation), or mpz_class throughout (beyond the widest of them,
-// and as the tests' reference). Every double is an integer times the common power of two 2^E;
+// integer types, as exact/stages/integer_cubic.hpp: FixedInt widths chosen from the proven
+// bit-length bounds before computing (no allocation), or mpz_class throughout (beyond the widest of
+// them, and as the tests' reference). Every double is an integer times the common power of two 2^E;
 // at t = T 2^-k the differences are formed as 2^(k-E) times their values, which multiplies a
 // polynomial homogeneous of degree d by 2^(d(k-E)) > 0.
 // PROOF: proofs/min_separation.md#fixed-width-signs

@@ -31,7 +31,8 @@ void window_extent(const Eigen::Vector3d* const (&start)[N], const Eigen::Vector
   for (std::size_t i = 0; i < N; ++i) {
     const double x0 = start[i]->coeff(k);
     const predicates::Interval at_t =
-        predicates::Interval(x0) + t * (predicates::Interval(end[i]->coeff(k)) - predicates::Interval(x0));
+        predicates::Interval(x0) +
+        t * (predicates::Interval(end[i]->coeff(k)) - predicates::Interval(x0));
     lo = std::min({lo, x0, at_t.inf()});
     hi = std::max({hi, x0, at_t.sup()});
   }
