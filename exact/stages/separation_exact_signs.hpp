@@ -46,6 +46,14 @@ inline double dot(const double (&a)[3], const double (&b)[3]) {
   return (a[0] * b[0] + a[1] * b[1]) + a[2] * b[2];
 }
 
+/// A kernel's differences at t = 0 and their changes over the step in double-double with error
+/// bounds (ExactSignsAtDoubles::bounded_value), for the kernel vertices `of`. Complete before the
+/// class holds an optional of it (clang checks it is constructible there).
+struct BoundedSteps {
+  const exact::DifferenceVertices* of = nullptr;
+  dd::Bounded d0[3][3], change[3][3];
+};
+
 class ExactSignsAtDoubles final : public predicates::SeparationExactStage {
  public:
   /// The four moving vertices (x_t0, x_t1 each, kept by address: they must outlive this) and
@@ -195,13 +203,6 @@ class ExactSignsAtDoubles final : public predicates::SeparationExactStage {
     bool exact;
   };
   const ScaledInputs& scaled_inputs() const;
-
-  /// A kernel's differences at t = 0 and their changes over the step in double-double with
-  /// error bounds (bounded_value), for the kernel vertices `of`.
-  struct BoundedSteps {
-    const exact::DifferenceVertices* of = nullptr;
-    dd::Bounded d0[3][3], change[3][3];
-  };
 
   /// The query in integers (formed when first asked for).
   const exact::SeparationIntegers& q() const;
