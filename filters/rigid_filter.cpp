@@ -7,9 +7,11 @@
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/rigid_coplanarity.hpp"
+#include "core/predicates/rigid_paths.hpp"
 #include "core/predicates/x87_interval.hpp"
 #include "filters/certified_numbers.hpp"
 #include "filters/polynomial_bernstein.hpp"
+#include "filters/rigid_paths_in_intervals.hpp"
 
 namespace exactccd::filters {
 
@@ -17,98 +19,14 @@ namespace {
 
 using predicates::FixedPoly;
 using predicates::Vec3;
+using rigid::Boxes;
+using rigid::IntervalPaths;
+using rigid::boxes_apart;
+using rigid::positions_over;
 using Quintic = FixedPoly<Interval, 5>;
-using Boxes = std::array<Vec3<Interval>, 4>;
-
-// ---------------------------------------------------------------------------------------------
-// Power-of-two normalisation (PROOF: proofs/rigid_ccd.md#filters, step 0)
-
-/// A largest |coordinate| in [2^-64, 2^65) is left as it is.
-constexpr int kComfortableExponent = 64;
-
-/// Calls f on every position-like vector of the query: the points at s = 0, the pivots and
-/// translations of rigid sides, the end positions of linear ones. Scaling all of them by 2^k
-/// scales every position x(s) by 2^k (the Cayley vectors are angles and stay).
-template <class Query, class F>
-void for_each_position(Query& q, F&& f) {
-  for (auto& x : q.start) f(x);
-  const int first = q.type == QueryType::vertex_face ? 1 : 2;
-  for (int side = 0; side < 2; ++side) {
-    auto& s = q.side[side];
-    if (s.rigid) {
-      f(s.motion.pivot);
-      f(s.motion.translation);
-    } else {
-      for (int i = 0; i < (side == 0 ? first : 4 - first); ++i) f(s.end[i]);
-    }
-  }
-}
-
-/// The exponent k that brings the largest |coordinate| into [1/2, 1) when it lies outside the
-/// comfortable range and every coordinate times 2^k is again a double (no bit lost); else 0.
-int normalising_exponent(const DoubleRigidQuery& q) {
-  double largest = 0;
-  int lowest_bit = 1 << 20;  // the exponent of the lowest set bit of any coordinate
-  for_each_position(q, [&](const Vec3<double>& x) {
-    for (int k = 0; k < 3; ++k) {
-      const double m = std::fabs(x[k]);
-      if (m == 0) continue;
-      largest = std::max(largest, m);
-      int e;
-      const double mantissa = std::frexp(m, &e);  // m = mantissa 2^e, mantissa in [1/2, 1)
-      // mantissa 2^53 is an integer (exact); its trailing zeros lift the lowest bit.
-      const auto integer = static_cast<std::uint64_t>(std::ldexp(mantissa, 53));
-      lowest_bit = std::min(lowest_bit, e - 53 + __builtin_ctzll(integer));
-    }
-  });
-  if (largest == 0) return 0;
-  int e;
-  std::frexp(largest, &e);
-  if (std::abs(e - 1) <= kComfortableExponent) return 0;
-  const int k = -e;
-  return k > 0 || lowest_bit + k >= -1074 ? k : 0;
-}
-
-DoubleRigidQuery scaled(DoubleRigidQuery q, int k) {
-  for_each_position(q, [k](Vec3<double>& x) {
-    x = {std::ldexp(x.x, k), std::ldexp(x.y, k), std::ldexp(x.z, k)};
-  });
-  return q;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Paths and positions in intervals
-
-Vec3<Interval> exact_interval(const Vec3<double>& x) { return {x.x, x.y, x.z}; }
-
-struct IntervalPaths {
-  std::array<Vec3<FixedPoly<Interval, 3>>, 4> numerator;  // X_i(s)
-  std::array<FixedPoly<Interval, 2>, 2> denominator;      // w_side(s)
-  int first_side_count = 1;                               // points of side 0
-};
-
-IntervalPaths interval_paths(const DoubleRigidQuery& q) {
-  IntervalPaths paths;
-  paths.first_side_count = q.type == QueryType::vertex_face ? 1 : 2;
-  for (int side = 0; side < 2; ++side) {
-    const DoubleSide& s = q.side[side];
-    const predicates::RigidMotionOver<Interval> motion{exact_interval(s.motion.pivot),
-                                                       exact_interval(s.motion.translation),
-                                                       exact_interval(s.motion.cayley)};
-    paths.denominator[side] =
-        s.rigid ? predicates::rigid_path_denominator(motion)
-                : FixedPoly<Interval, 2>{{Interval(1), Interval(0), Interval(0)}};
-    const int begin = side == 0 ? 0 : paths.first_side_count;
-    const int end = side == 0 ? paths.first_side_count : 4;
-    for (int i = begin; i < end; ++i) {
-      const Vec3<Interval> x0 = exact_interval(q.start[i]);
-      paths.numerator[i] = s.rigid ? predicates::rigid_path_numerator(motion, x0)
-                                   : predicates::linear_path_numerator(
-                                         x0, exact_interval(s.end[i - begin]));
-    }
-  }
-  return paths;
-}
 
 /// g with coefficients over NT (an interval type: enclosures of the exact coefficients).
 template <class NT>
@@ -172,37 +90,6 @@ class ExtendedSigns {
   bool ready_ = false;
 };
 #endif
-
-/// Boxes enclosing every position x(s) = X(s) / w(s), s in T (w >= 1 there).
-Boxes positions_over(const IntervalPaths& paths, const Interval& T) {
-  const Interval w[2] = {predicates::evaluate(paths.denominator[0], T),
-                         predicates::evaluate(paths.denominator[1], T)};
-  Boxes x;
-  for (int i = 0; i < 4; ++i) {
-    const Interval& d = w[i < paths.first_side_count ? 0 : 1];
-    const auto& X = paths.numerator[i];
-    x[i] = {predicates::evaluate(X.x, T) / d, predicates::evaluate(X.y, T) / d,
-            predicates::evaluate(X.z, T) / d};
-  }
-  return x;
-}
-
-/// On some axis the hulls of the two primitives' boxes are disjoint. A NaN bound (overflow)
-/// never separates.
-bool boxes_apart(const Boxes& x, int first) {
-  for (int k = 0; k < 3; ++k) {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int i = 0; i < 4; ++i) {
-      const int side = i < first ? 0 : 1;
-      const double l = x[i][k].inf(), h = x[i][k].sup();
-      if (!(l <= h)) return false;
-      lo[side] = std::min(lo[side], l);
-      hi[side] = std::max(hi[side], h);
-    }
-    if (hi[0] < lo[1] || hi[1] < lo[0]) return true;
-  }
-  return false;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Inclusion on boxes (PROOF: proofs/rigid_ccd.md#inclusion-over-brackets)
@@ -597,9 +484,9 @@ std::optional<CcdResult> RootSearch::run() {
 std::optional<CcdResult> rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
                                           RigidExactSigns& exact) {
   const RoundingGuard upward;
-  const int k = normalising_exponent(query);
-  const DoubleRigidQuery q = k == 0 ? query : scaled(query, k);
-  const IntervalPaths paths = interval_paths(q);
+  const int k = rigid::normalising_exponent(query);
+  const DoubleRigidQuery q = k == 0 ? query : rigid::scaled(query, k);
+  const IntervalPaths paths = rigid::interval_paths(q);
   if (boxes_apart(positions_over(paths, Interval(0.0, options.t_max)), paths.first_side_count)) {
     CcdResult r;
     r.decided_by = Stage::culling;

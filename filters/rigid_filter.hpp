@@ -18,13 +18,17 @@ namespace exactccd::filters {
 using predicates::DoubleRigidQuery;
 using predicates::DoubleSide;
 
-/// Exact signs of the query's reduced coplanarity polynomial g (or of any positive multiple of
-/// it) at doubles, consulted only where interval signs are uncertain. Must not depend on the
+/// Exact signs at doubles of the query's polynomials, consulted only where interval signs are
+/// uncertain: the reduced coplanarity polynomial g (contact), or a region polynomial of the
+/// query's minimum separation (each, or any positive multiple of it). Must not depend on the
 /// rounding mode.
 class RigidExactSigns {
  public:
   /// The exact sign (-1, 0, +1) of g at the double s in [0, t_max].
   virtual int coplanarity_sign_at(double s) = 0;
+  /// The exact sign of region polynomial k (core/predicates/separation.hpp's numbering) of the
+  /// query's separation with delta = its min_separation, at the double s in [0, t_max].
+  virtual int region_sign_at(int k, double s) = 0;
 
  protected:
   ~RigidExactSigns() = default;

@@ -28,6 +28,8 @@ struct SeparationOutcome {
   SeparationVerdict verdict = SeparationVerdict::uncertain;
   /// When contact: toi_lo <= t* <= toi_hi, the tightest pair of doubles (or toi_width).
   double toi_lo = 0.0, toi_hi = 0.0;
+  /// never_within because the swept boxes are more than delta apart (Stage::culling).
+  bool culled = false;
   /// Exact integer arithmetic was needed (signs at double times, or the region polynomials'
   /// exact coefficients) for the verdict or the TOI.
   bool exact_used = false;

@@ -11,6 +11,7 @@
 #include "pipeline/ccd_options_check.hpp"
 #include "core/float_only/float_only_ccd.hpp"
 #include "pipeline/power_of_two_scaling.hpp"
+#include "pipeline/separation_outcome.hpp"
 #include "exact/stages/algebraic_at_doubles.hpp"
 #include "exact/reference/exact_ccd.hpp"
 #include "exact/reference/min_separation.hpp"
@@ -236,26 +237,9 @@ CcdResult min_separation_ccd(const Query& q, const CcdOptions& options, Culled c
   // The exact stage at double times, for the filter to ask where intervals cannot tell (its
   // integer query formed only then).
   const exact::separation::ExactSignsAtDoubles exact_signs = separation_exact_stage(q, delta);
-  const filters::SeparationOutcome f = filter(q, options, exact_signs);
-  switch (f.verdict) {
-    case filters::SeparationVerdict::never_within:
-      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
-      return r;
-    case filters::SeparationVerdict::contact:
-      r.collides = true;
-      r.toi_lo = f.toi_lo;
-      r.toi_hi = f.toi_hi;
-      r.decided_by = f.exact_used ? Stage::exact_at_double : Stage::filter;
-      return r;
-    case filters::SeparationVerdict::uncertain: break;
-  }
-  exact::SeparationHint hint;
-  hint.t_from = f.cleared_until;
-  if (f.bracketed) {
-    hint.t_to = f.within_at;
-    hint.known_signs = f.known_signs.data();
-  }
-  return exact_path(to_rational(q), mpq_class(delta), options, hint);
+  return separation_result(filter(q, options, exact_signs), [&](const exact::SeparationHint& hint) {
+    return exact_path(to_rational(q), mpq_class(delta), options, hint);
+  });
 }
 
 bool all_finite(const VertexFaceQuery& q) {

@@ -20,6 +20,8 @@
 #include "core/predicates/interval.hpp"
 #include "pipeline/rigid_exact_signs.hpp"
 #include "filters/rigid_filter.hpp"
+#include "filters/rigid_separation_filter.hpp"
+#include "pipeline/separation_outcome.hpp"
 
 namespace exactccd {
 
@@ -170,16 +172,27 @@ RigidCcdResult with_time(const CcdResult& ccd, const predicates::DoubleRigidQuer
   return r;
 }
 
+/// Minimum separation delta = options.min_separation > 0: the rigid separation filter, then
+/// the exact procedure from what it cleared. PROOF: proofs/min_separation.md#rigid-separation
+CcdResult rigid_min_separation_ccd(const predicates::DoubleRigidQuery& q,
+                                   const CcdOptions& options) {
+  const exact::Rational delta(options.min_separation);
+  auto exact_path = [&](const exact::SeparationHint& hint) {
+    return exact::rigid_min_separation_exact(rational_query(q), delta, options, hint);
+  };
+  if (options.mode == Mode::exact) return exact_path({});
+  RigidExactSignsAtDoubles exact(q, options.min_separation);
+  return separation_result(filters::rigid_separation_filter(q, options, exact), exact_path);
+}
+
 template <class Query>
 RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
-  if (options.min_separation != 0.0)
-    throw std::invalid_argument(
-        "exactccd: min_separation is not supported for rigid motion (it must be 0)");
   const predicates::DoubleRigidQuery q = checked_query(query);
   if (options.mode == Mode::float_only)  // uncertified, for comparison only
     return with_time(float_only::rigid_ccd(q, options), q);
+  if (options.min_separation > 0) return with_time(rigid_min_separation_ccd(q, options), q);
   if (options.mode == Mode::filtered) {
     RigidExactSignsAtDoubles exact(q);
     if (std::optional<CcdResult> r = filters::rigid_ccd_filter(q, options, exact))

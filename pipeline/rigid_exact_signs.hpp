@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "core/predicates/rigid_coplanarity.hpp"
+#include "core/predicates/rigid_paths.hpp"
+#include "core/predicates/separation.hpp"
 #include "exact/reference/rigid_ccd.hpp"
 #include "exact/arithmetic/stack_dyadic.hpp"
 #include "filters/rigid_filter.hpp"
@@ -42,7 +44,9 @@ inline exact::RationalRigidQuery rational_query(const predicates::DoubleRigidQue
 /// holds (extreme magnitudes).
 class RigidExactSignsAtDoubles final : public filters::RigidExactSigns {
  public:
-  explicit RigidExactSignsAtDoubles(const predicates::DoubleRigidQuery& q) : query_(q) {}
+  /// delta: the query's minimum separation (0 for contact).
+  explicit RigidExactSignsAtDoubles(const predicates::DoubleRigidQuery& q, double delta = 0.0)
+      : query_(q), delta_(delta) {}
 
   int coplanarity_sign_at(double s) override {
     if (!dyadic_ready_) {
@@ -60,8 +64,39 @@ class RigidExactSignsAtDoubles final : public filters::RigidExactSigns {
     return rational_->sign_at(exact::Rational(s));
   }
 
+  /// Region polynomial k on the common denominator (delta^2 W^2 for delta^2), its value at s
+  /// over the rationals: the positions' numerators and denominators at s, then the polynomial
+  /// at those numbers. PROOF: proofs/min_separation.md#rigid-separation
+  int region_sign_at(int k, double s) override {
+    using exact::Rational;
+    using Point = predicates::Vec3<predicates::FixedPoly<Rational, 0>>;
+    if (!paths_) paths_ = predicates::rigid_paths<Rational>(query_);
+    const Rational t(s);
+    const Rational w[2] = {predicates::evaluate(paths_->denominator[0], t),
+                           predicates::evaluate(paths_->denominator[1], t)};
+    Point y[4];
+    for (int i = 0; i < 4; ++i) {
+      const Rational& other = w[i < paths_->first_side_count ? 1 : 0];
+      const auto& X = paths_->numerator[i];
+      y[i] = {{{Rational(predicates::evaluate(X.x, t) * other)}},
+              {{Rational(predicates::evaluate(X.y, t) * other)}},
+              {{Rational(predicates::evaluate(X.z, t) * other)}}};
+    }
+    const Rational W = w[0] * w[1];
+    const Rational delta2 = Rational(delta_) * Rational(delta_) * W * W;
+    int sign = 0;
+    auto read = [&sign](const auto& g) { sign = sgn(g.c[0]); };
+    if (query_.type == QueryType::vertex_face)
+      predicates::vertex_face_separation(y[0], y[1], y[2], y[3], delta2).for_each_polynomial(read, k);
+    else
+      predicates::edge_edge_separation(y[0], y[1], y[2], y[3], delta2).for_each_polynomial(read, k);
+    return sign;
+  }
+
  private:
   const predicates::DoubleRigidQuery& query_;
+  const double delta_;
+  std::optional<predicates::RigidPaths<exact::Rational>> paths_;
   predicates::FixedPoly<exact::StackDyadic, 5> dyadic_;
   bool dyadic_ready_ = false;
   std::optional<exact::Polynomial> rational_;

@@ -1,8 +1,10 @@
 // `exactccd rigid SCENE.json` (docs/rigid_scene_format.md): the scenes of tests/data/rigid/ (a
 // cube turning into a wall at a contact parameter worked out by hand, the same turn clear of
 // the wall, the turn in three steps), the answers equal to the library's Scene on the same
-// bodies, a deformable body, mode float_only (the uncertified test), and malformed scene and
-// OBJ files (exit status 2, one line on stderr naming the file and the key, never a crash).
+// bodies, a deformable body, mode float_only (the uncertified test), a minimum separation
+// (--min-separation or the file's "min_separation", and bench --rigid --min-separation), and
+// malformed scene and OBJ files (exit status 2, one line on stderr naming the file and the key,
+// never a crash).
 #include <gmpxx.h>
 #include <sys/stat.h>
 
@@ -265,6 +267,128 @@ TEST_F(CliRigid, FloatOnlyModeRunsTheUncertifiedTest) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Minimum separation: --min-separation D, or "min_separation" in the file
+
+/// The earliest contact of the cube turning past the wall at x = x_wall, from the library's
+/// Scene with minimum separation delta.
+exactccd::EarliestContact library_cube_and_wall(double x_wall, double delta) {
+  Scene scene;
+  Positions x;
+  Triangles t_cube, t_wall;
+  cube(x, t_cube);
+  const MeshId body = scene.add_rigid_body(x, t_cube);
+  RigidMotion m;
+  m.cayley = Eigen::Vector3d(0, 0, -0.5);
+  scene.set_rigid_motion(body, m);
+  wall(x_wall, x, t_wall);
+  scene.add_static_mesh(x, t_wall);
+  exactccd::SceneOptions o;
+  o.min_separation = delta;
+  return scene.earliest_contact(o);
+}
+
+TEST_F(CliRigid, MinSeparationFindsTheCloseApproach) {
+  // The turn clear of the wall passes it 0.0039 short (5 sqrt(2) = 7.0711 against 7.075):
+  // within 0.01, not within 0.001. The command's contact equals the library's.
+  const std::string clear = (kData / "cube_turns_clear_of_wall.json").string();
+  const RunResult r = run_bounded({"rigid", "--json", "--min-separation", "0.01", clear});
+  ASSERT_EQ(r.status, 1) << r.err;
+  const json j = parse_json(r);
+  EXPECT_EQ(j["min_separation"], 0.01);
+  EXPECT_EQ(j["first_contact_step"], 1);
+  const json& c = j["steps"][0]["contact"];
+  const exactccd::EarliestContact e = library_cube_and_wall(7.075, 0.01);
+  ASSERT_TRUE(e.collides);
+  EXPECT_EQ(c["s_lo"].get<double>(), e.contact.toi_lo);
+  EXPECT_EQ(c["s_hi"].get<double>(), e.contact.toi_hi);
+  EXPECT_EQ(c["type"], e.contact.pair.type == exactccd::QueryType::vertex_face ? "vertex-face"
+                                                                                : "edge-edge");
+  // Near 45 degrees of the 53.13-degree turn: s a little below tan(22.5 degrees) / (1/2).
+  EXPECT_GT(e.contact.toi_lo, 0.5);
+  EXPECT_LT(e.contact.toi_hi, 2 * std::tan(M_PI / 8));
+  const RunResult text = run_bounded({"rigid", "--min-separation", "0.01", clear});
+  EXPECT_EQ(text.status, 1) << text.err;
+  EXPECT_NE(text.out.find("min_separation 0.01"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("step 1: contact at s in"), std::string::npos) << text.out;
+  // Within 0.001: still clear; without delta the header does not name one.
+  const RunResult far = run_bounded({"rigid", "--min-separation", "0.001", clear});
+  EXPECT_EQ(far.status, 0) << far.err;
+  EXPECT_NE(far.out.find("collision-free in every step"), std::string::npos) << far.out;
+  EXPECT_FALSE(library_cube_and_wall(7.075, 0.001).collides);
+  const RunResult plain = run_bounded({"rigid", clear});
+  EXPECT_EQ(plain.out.find("min_separation"), std::string::npos) << plain.out;
+}
+
+TEST_F(CliRigid, MinSeparationFromTheSceneFile) {
+  // "min_separation" in the file does the same; --min-separation replaces it (0: contact).
+  std::ifstream in(kData / "cube_turns_clear_of_wall.json");
+  json scene = json::parse(in);
+  scene["bodies"][0]["obj"] = (kData / "cube.obj").string();
+  scene["min_separation"] = 0.01;
+  const RunResult r = run_scene(scene);
+  ASSERT_EQ(r.status, 1) << r.err;
+  const json j = parse_json(r);
+  EXPECT_EQ(j["min_separation"], 0.01);
+  EXPECT_EQ(j["steps"][0]["contact"]["s_lo"].get<double>(),
+            library_cube_and_wall(7.075, 0.01).contact.toi_lo);
+  const fs::path file = write_file("scene.json", scene.dump(1));
+  const RunResult replaced = run_bounded({"rigid", "--json", "--min-separation", "0", file.string()});
+  EXPECT_EQ(replaced.status, 0) << replaced.err;
+  EXPECT_EQ(parse_json(replaced)["min_separation"], 0.0);
+  // The float_only mode runs with a minimum separation too (uncertified: any verdict).
+  scene["mode"] = "float_only";
+  const RunResult rough = run_scene(scene);
+  EXPECT_TRUE(rough.status == 0 || rough.status == 1) << rough.err;
+  EXPECT_EQ(parse_json(rough)["mode"], "float_only");
+}
+
+TEST_F(CliRigid, BenchRigidWithMinSeparation) {
+  // Each delta is a run of every mode, graded at that delta: the certified modes agree bit for
+  // bit (exit status 0), float_only is graded against the first certified mode; a delta turns
+  // near misses into contacts.
+  const RunResult r = run_bounded({"bench", "--rigid", "--rigid-count", "6", "--seed", "3",
+                                   "--repetitions", "1", "--modes", "default,exact,float_only",
+                                   "--min-separation", "0,0.001", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = parse_json(r);
+  EXPECT_EQ(j.value("disagreements", 1u), 0u);
+  const json& modes = j.at("modes");
+  ASSERT_EQ(modes.size(), 6u) << r.out;
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(modes[k]["min_separation"].get<double>(), k < 3 ? 0.0 : 0.001);
+    EXPECT_FALSE(modes[k].contains("min_separation_factor"));
+  }
+  EXPECT_EQ(modes[4]["mode"], "exact");
+  EXPECT_EQ(modes[3]["contacts"], modes[4]["contacts"]);
+  EXPECT_GE(modes[3]["contacts"].get<int>(), modes[0]["contacts"].get<int>());
+  EXPECT_EQ(modes[5]["graded_against"], "default");
+  EXPECT_TRUE(modes[5].at("false_negatives").is_number());
+  // Relative: factors of the set's size.
+  const RunResult rel = run_bounded({"bench", "--rigid", "--rigid-count", "6", "--repetitions",
+                                     "1", "--modes", "default", "--min-separation", "0.01",
+                                     "--relative-separation", "--json"});
+  ASSERT_EQ(rel.status, 0) << rel.err;
+  const json jr = parse_json(rel);
+  const double size = jr["size"];
+  EXPECT_GT(size, 0.0);
+  EXPECT_EQ(jr["modes"][0]["min_separation_factor"], 0.01);
+  EXPECT_DOUBLE_EQ(jr["modes"][0]["min_separation"].get<double>(), 0.01 * size);
+  // The text table gains a delta column and names the delta of each grading.
+  const RunResult text = run_bounded({"bench", "--rigid", "--rigid-count", "6", "--repetitions",
+                                      "1", "--modes", "default,float_only", "--min-separation",
+                                      "0.001"});
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("float_only against default at delta 0.001"), std::string::npos)
+      << text.out;
+  for (const char* delta : {"-1", "nan"}) {
+    SCOPED_TRACE(delta);
+    expect_bad_input(run_bounded({"bench", "--rigid", "--rigid-count", "6", "--min-separation",
+                                  delta}),
+                     {"--min-separation"});
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
 // Malformed input: exit status 2, one line on stderr naming the file and the key
 
 json good_scene() {
@@ -350,6 +474,22 @@ TEST_F(CliRigid, MalformedScenesAreRejectedWithTheKey) {
   }
   s = good_scene(); s["toi_width"] = -1;
   expect_rejected(s, {"toi_width", ">= 0"});
+}
+
+TEST_F(CliRigid, BadMinSeparationIsRejected) {
+  const std::string scene = (kData / "cube_turns_into_wall.json").string();
+  for (const char* delta : {"-1", "-1e-300", "nan", "inf", "", "abc"}) {
+    SCOPED_TRACE(delta);
+    expect_bad_input(run_bounded({"rigid", "--min-separation", delta, scene}),
+                     {"--min-separation"});
+  }
+  expect_bad_input(run_bounded({"rigid", "--min-separation", "-1", scene}),
+                   {"--min-separation", ">= 0", "-1"});
+  json s = good_scene();
+  s["min_separation"] = -0.5;
+  expect_rejected(s, {"min_separation", ">= 0"});
+  s["min_separation"] = "small";
+  expect_rejected(s, {"min_separation", "a number"});
 }
 
 TEST_F(CliRigid, MalformedFilesAreRejected) {

@@ -488,8 +488,8 @@ TEST(RigidCcd, BadInputThrowsClearly) {
   q = bisector_wall(1.0, 0.1);
   // Mode::float_only runs (the uncertified double test: tests/rigid_float_only_test.cpp).
   EXPECT_EQ(vertex_face_ccd(q, mode(Mode::float_only)).ccd.decided_by, Stage::float_only);
-  CcdOptions separated;
-  separated.min_separation = 1e-3;
+  CcdOptions separated;  // a minimum separation must be finite and >= 0
+  separated.min_separation = -1e-3;
   EXPECT_THROW(vertex_face_ccd(q, separated), std::invalid_argument);
   CcdOptions bad_t;
   bad_t.t_max = 0;

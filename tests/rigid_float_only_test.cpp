@@ -4,8 +4,9 @@
 // transversal crossing inside the primitive, or a clear gap at every coplanar instant, judged
 // here independently of the library from the positions alone) its verdict equals the certified
 // one and its TOI is within a small relative error of the exact TOI; decided_by is float_only;
-// the root finder finds the roots of a quintic; and a scene with a rigid body runs in
-// Mode::float_only and returns the default mode's contact set on a well-conditioned scene.
+// the root finder finds the roots of a quintic; with a minimum separation it runs and agrees
+// with the default mode on a clear pass; and a scene with a rigid body runs in Mode::float_only
+// and returns the default mode's contact set on a well-conditioned scene.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -94,10 +95,42 @@ TEST(RigidFloatOnly, QuarterTurnIntoAWall) {
   EXPECT_EQ(early.ccd.toi_lo, kNoContactToi);
   EXPECT_EQ(early.ccd.toi_hi, kNoContactToi);
   EXPECT_EQ(early.ccd.decided_by, Stage::float_only);
-  // min_separation stays refused for rigid motion, whatever the mode.
-  CcdOptions separated = mode_options(Mode::float_only);
-  separated.min_separation = 0.1;
-  EXPECT_THROW(vertex_face_ccd(q, separated), std::invalid_argument);
+}
+
+TEST(RigidFloatOnly, MinSeparationAgreesOnAClearPass) {
+  // The corner (5, 0, 0) turning a quarter about z passes a static triangle in the plane through
+  // the axis and (3, 4, 0) (at s = 1/2), from radius 5 + gap out: its closest distance is gap,
+  // and it crosses the triangle's plane there, transversally. float_only with min_separation
+  // runs (no longer refused) and agrees with the default mode: within delta at gap = delta / 2,
+  // not at gap = 2 delta.
+  const double delta = 0.1;
+  RigidMotion quarter;
+  quarter.cayley = {0, 0, 1};
+  const Vector3d radial(0.6, 0.8, 0), up(0, 0, 1);
+  for (const double gap : {delta / 2, 2 * delta}) {
+    SCOPED_TRACE("gap " + std::to_string(gap));
+    RigidVertexFaceQuery q;
+    q.p = {5, 0, 0};
+    q.vertex = SideMotion::of(quarter);
+    q.a = (5 + gap) * radial - up;
+    q.b = (5 + gap) * radial + up;
+    q.c = 7 * radial;
+    CcdOptions options = mode_options(Mode::filtered);
+    options.min_separation = delta;
+    const RigidCcdResult certified = vertex_face_ccd(q, options);
+    options.mode = Mode::float_only;
+    const RigidCcdResult rough = vertex_face_ccd(q, options);
+    EXPECT_EQ(certified.ccd.collides, gap < delta);
+    EXPECT_EQ(rough.ccd.collides, certified.ccd.collides);
+    EXPECT_EQ(rough.ccd.decided_by, Stage::float_only);
+    if (!rough.ccd.collides) {
+      EXPECT_EQ(rough.ccd.toi_lo, kNoContactToi);
+    } else {
+      // Conservative enough to be useful: not after the moment of closest approach.
+      EXPECT_LE(rough.ccd.toi_lo, 0.5 + 1e-12);
+      EXPECT_GE(rough.ccd.toi_lo, 0.0);
+    }
+  }
 }
 
 TEST(RigidFloatOnly, CoplanarThroughoutIsSampled) {

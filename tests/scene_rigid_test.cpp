@@ -230,6 +230,38 @@ RigidReference check(const Bodies& bodies, const SceneOptions& o = {}) {
   return ref;
 }
 
+struct Separated {
+  RigidReference ref;  ///< the brute force at delta
+  SceneStats stats;    ///< find_contacts' statistics
+};
+
+/// find_contacts and earliest_contact of `scene` (made from `bodies`) with minimum separation
+/// delta (SceneOptions::min_separation) against the brute force over every allowed pair with the
+/// per-query functions at the same delta (CcdOptions::min_separation): the same contacts, TOIs
+/// and time fields, so no pair within delta is culled.
+Separated check_separated(Scene& scene, const Bodies& bodies, double delta, SceneOptions o = {}) {
+  SCOPED_TRACE("min_separation " + hex(delta));
+  CcdOptions per_pair = o.ccd;
+  per_pair.min_separation = delta;
+  Separated out;
+  out.ref = brute_force(bodies, per_pair, o.self_collision);
+  o.min_separation = delta;
+  const SceneResult got = scene.find_contacts(o);
+  out.stats = got.stats;
+  EXPECT_TRUE(same_full_contacts(got.contacts, out.ref.contacts));
+  EXPECT_TRUE(same_full(got.earliest, earliest(out.ref.contacts))) << describe_full(got.earliest);
+  const EarliestContact first = scene.earliest_contact(o);
+  EXPECT_EQ(first.collides, !out.ref.contacts.empty());
+  EXPECT_TRUE(same_full(first.contact, got.earliest))
+      << describe_full(first.contact) << " vs " << describe_full(got.earliest);
+  return out;
+}
+
+bool has_pair(const std::vector<SceneContact>& contacts, const ScenePair& p) {
+  return std::any_of(contacts.begin(), contacts.end(),
+                     [&](const SceneContact& c) { return c.pair == p; });
+}
+
 // ---------------------------------------------------------------------------------------------
 // Random bodies and turns
 
@@ -625,17 +657,19 @@ TEST(SceneRigid, BadInputThrows) {
   Triangles bad_triangles = box.triangles;
   bad_triangles(0, 0) = 8;
   EXPECT_THROW(scene.add_rigid_body(box.start, bad_triangles), std::invalid_argument);
-  // Minimum separation has no rigid test; float_only runs the uncertified one.
+  // The scene's minimum separation is checked as without a rigid body: finite and >= 0, given
+  // once (SceneOptions::min_separation, never ccd.min_separation).
   SceneOptions o;
-  o.min_separation = 1e-3;
-  try {
-    scene.find_contacts(o);
-    ADD_FAILURE() << "min_separation with a rigid body did not throw";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("rigid"), std::string::npos) << e.what();
+  for (double bad : {-1e-3, std::nan(""), HUGE_VAL}) {
+    o.min_separation = bad;
+    EXPECT_THROW(scene.find_contacts(o), std::invalid_argument) << bad;
+    EXPECT_THROW(scene.earliest_contact(o), std::invalid_argument) << bad;
   }
-  EXPECT_THROW(scene.earliest_contact(o), std::invalid_argument);
   o.min_separation = 0;
+  o.ccd.min_separation = 1e-3;
+  EXPECT_THROW(scene.find_contacts(o), std::invalid_argument);
+  // float_only runs the uncertified rigid test.
+  o.ccd.min_separation = 0;
   o.ccd.mode = Mode::float_only;
   EXPECT_NO_THROW(scene.find_contacts(o));
   EXPECT_NO_THROW(scene.earliest_contact(o));
@@ -807,9 +841,9 @@ struct CoaxialCase {
   bool stacked = false;  ///< the outer tube instead of the inner's size, above it: met by sliding
 };
 
-/// The scene's contacts and earliest contact equal the brute force; returns the stats of
-/// find_contacts.
-SceneStats coaxial_scene(const CoaxialCase& k, std::uint64_t* contacts) {
+/// The scene's contacts and earliest contact equal the brute force (with minimum separation
+/// delta); returns the stats of find_contacts.
+SceneStats coaxial_scene(const CoaxialCase& k, std::uint64_t* contacts, double delta = 0) {
   SCOPED_TRACE(k.name);
   const Vector3d c(0.25, -0.5, 0.125);
   // Directions whose multiples below are exact, so "parallel" is decided exactly.
@@ -834,11 +868,14 @@ SceneStats coaxial_scene(const CoaxialCase& k, std::uint64_t* contacts) {
     const Vector3d off = k.outer_offset * e1;
     bodies[1].motion = {c + off, Vector3d::Zero(), -dir / 8};
   }
-  const RigidReference ref = check(bodies);
-  *contacts = ref.contacts.size();
   Scene scene = make_scene(bodies);
-  const SceneResult got = scene.find_contacts({});
-  std::cout << "[ info     ] " << k.name << ": " << ref.pairs << " pairs, "
+  const RigidReference ref = delta > 0 ? check_separated(scene, bodies, delta).ref : check(bodies);
+  *contacts = ref.contacts.size();
+  SceneOptions o;
+  o.min_separation = delta;
+  const SceneResult got = scene.find_contacts(o);
+  std::cout << "[ info     ] " << k.name << (delta > 0 ? " within " + hex(delta) : "") << ": "
+            << ref.pairs << " pairs, "
             << ref.contacts.size() << " contacts, "
             << got.stats.vertex_face_candidates + got.stats.edge_edge_candidates
             << " candidates, " << got.stats.cylinder_culled << " culled by the cylinder ranges\n";
@@ -980,6 +1017,250 @@ TEST(SceneRigidCylinders, RangesHoldExactPointsAlongMotionsAboutTheLine) {
   }
   std::cout << "[ info     ] " << checked << " exact points of moving primitives inside their "
             << "cylinder ranges\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5. Minimum separation with rigid bodies (proofs/scene.md#min-separation, #rigid-bodies)
+
+TEST(SceneRigid, MinSeparationEqualsBruteForce) {
+  // Random scenes of every kind of pair with a rigid body, at delta = 1e-3 and at delta = 0.05
+  // (a tenth of the bodies' size: many pairs apart at contact come within it). One Scene for
+  // every delta and then 0 again: the raised arc boxes are refitted when delta changes.
+  Rng rng(test_seed() + 60);
+  std::uint64_t contacts = 0, new_rigid = 0;
+  for (int s = 0; s < 2; ++s) {
+    SCOPED_TRACE("scene " + std::to_string(s));
+    const Bodies bodies = random_bodies(rng, TurnStyle{90, false, 0.5});
+    Scene scene = make_scene(bodies);
+    const RigidReference touching = brute_force(bodies, CcdOptions{}, true);
+    for (double delta : {1e-3, 0.05}) {
+      const RigidReference ref = check_separated(scene, bodies, delta).ref;
+      contacts += ref.contacts.size();
+      for (const SceneContact& c : touching.contacts)  // a contact is within every delta
+        EXPECT_TRUE(has_pair(ref.contacts, c.pair)) << describe(c);
+      for (const SceneContact& c : ref.contacts)
+        new_rigid += !has_pair(touching.contacts, c.pair) &&
+                     (bodies[c.pair.first_mesh].kind == Kind::rigid ||
+                      bodies[c.pair.second_mesh].kind == Kind::rigid);
+    }
+    EXPECT_TRUE(same_full_contacts(scene.find_contacts().contacts, touching.contacts));
+    if (::testing::Test::HasFailure()) break;
+  }
+  std::cout << "[ info     ] " << contacts << " contacts within delta, " << new_rigid
+            << " of them pairs with a rigid body that never touch\n";
+  EXPECT_GT(new_rigid, 0u);  // not a vacuous comparison: delta turns pairs into contacts
+}
+
+/// A flat triangle of a rigid body turning a quarter about the z axis (its corner (5, 0, 0)
+/// passes (3, 4, 0) at s = 1/2) and a static triangle `gap` away from the region it sweeps:
+/// above it (z = gap: the arc boxes, exactly flat, and the cylinder heights are `gap` apart) or
+/// beside it (in the plane through the axis and (3, 4, 0), from radius 5 + gap: the distances to
+/// the axis are `gap` apart). The closest distance is `gap`. With `crossing`, a static triangle
+/// the rigid one crosses later (about s = 3/4), listed first so that earliest_contact meets it
+/// first on one thread and then decides the others over a shortened window.
+Bodies turning_past(double gap, bool above, bool rigid_first, bool crossing = false) {
+  Body turning;
+  turning.kind = Kind::rigid;
+  turning.start.resize(3, 3);
+  turning.start << 5, 0, 0, 4, 0, 0, 4.5, 0.5, 0;
+  turning.triangles.resize(1, 3);
+  turning.triangles << 0, 1, 2;
+  turning.end = turning.start;
+  turning.motion.cayley = Vector3d(0, 0, 1);
+  const auto flat = [](Kind kind, const Vector3d& a, const Vector3d& b, const Vector3d& c) {
+    Body w;
+    w.kind = kind;
+    w.start.resize(3, 3);
+    w.start << a.transpose(), b.transpose(), c.transpose();
+    w.triangles.resize(1, 3);
+    w.triangles << 0, 1, 2;
+    w.end = w.start;
+    return w;
+  };
+  const Vector3d radial(0.6, 0.8, 0), up(0, 0, 1);
+  const Body wall = above ? flat(Kind::fixed, Vector3d(2.5, 3.5, gap), Vector3d(3.5, 3.5, gap),
+                                 Vector3d(3, 4.5, gap))
+                          : flat(Kind::fixed, (5 + gap) * radial - up, (5 + gap) * radial + up,
+                                 7 * radial);
+  Bodies bodies;
+  if (crossing) {  // the radial plane at s = 3/4: direction (0.28, 0.96, 0)
+    const Vector3d late(0.28, 0.96, 0);
+    bodies.push_back(flat(Kind::fixed, 3 * late - up, 3 * late + up, 6 * late));
+  }
+  if (rigid_first) {
+    bodies.push_back(turning);
+    bodies.push_back(wall);
+  } else {
+    bodies.push_back(wall);
+    bodies.push_back(turning);
+  }
+  return bodies;
+}
+
+TEST(SceneRigid, MinSeparationKeepsPairsTheBoxesAndCylindersSeparate) {
+  // Each pair is gap = delta / 2 apart at its closest: without delta its arc boxes and its
+  // cylinder heights (above) or its distances to the common axis (beside) are apart, so the
+  // broad phase drops it; with delta it must keep it (boxes raised by delta, cylinder ranges
+  // widened by delta) and find the contacts the per-query functions find. At gap = 2 delta: no
+  // contact, and the broad phase still drops the pairs (above: no candidate; beside: by the
+  // cylinder ranges). Both mesh orders (either side of a pair is the widened one).
+  const double delta = 1e-3;
+  for (bool above : {true, false})
+    for (bool rigid_first : {true, false}) {
+      SCOPED_TRACE(std::string(above ? "above" : "beside") +
+                   (rigid_first ? ", rigid body first" : ", static wall first"));
+      Bodies bodies = turning_past(delta / 2, above, rigid_first);
+      Scene scene = make_scene(bodies);
+      // What the broad phase drops without delta, and at gap = 2 delta with it.
+      const auto dropped = [above](const SceneStats& stats) {
+        return above ? stats.vertex_face_candidates + stats.edge_edge_candidates == 0
+                     : stats.cylinder_culled > 0;
+      };
+      const Separated none = check_separated(scene, bodies, 0.0);
+      EXPECT_TRUE(none.ref.contacts.empty());
+      EXPECT_TRUE(dropped(none.stats));
+      const Separated within = check_separated(scene, bodies, delta);
+      EXPECT_FALSE(within.ref.contacts.empty());
+      // The rigid corner against the wall's triangle is one of them.
+      const MeshId rigid = rigid_first ? 0 : 1, wall = 1 - rigid;
+      EXPECT_TRUE(has_pair(within.ref.contacts, {QueryType::vertex_face, rigid, 0, wall, 0}));
+      bodies = turning_past(2 * delta, above, rigid_first);
+      Scene apart = make_scene(bodies);
+      const Separated far = check_separated(apart, bodies, delta);
+      EXPECT_TRUE(far.ref.contacts.empty());
+      EXPECT_TRUE(dropped(far.stats));
+    }
+}
+
+TEST(SceneRigid, MinSeparationEarliestContactWindowKeepsPairsWithinDelta) {
+  // On one thread earliest_contact first meets the crossing at about s = 3/4 (listed first) and
+  // then decides the triangle above over [0, bound]: their boxes over that window are gap
+  // apart, less than delta, so the window cull must keep them; the earliest contact within
+  // delta is the one above, near s = 1/2.
+  const double delta = 1e-3;
+  for (bool rigid_first : {true, false}) {
+    SCOPED_TRACE(rigid_first ? "rigid body first" : "static wall first");
+    const Bodies bodies = turning_past(delta / 2, true, rigid_first, true);
+    Scene scene = make_scene(bodies);
+    SceneOptions one;
+    one.max_threads = 1;
+    const Separated within = check_separated(scene, bodies, delta, one);
+    const SceneContact first = earliest(within.ref.contacts);
+    EXPECT_LT(first.toi_hi, 0.6) << describe_full(first);
+    EXPECT_NE(first.pair.first_mesh, 0u);  // not the crossing wall's
+    EXPECT_NE(first.pair.second_mesh, 0u);
+    // Without delta only the crossing remains.
+    const Separated touching = check_separated(scene, bodies, 0.0, one);
+    EXPECT_GT(earliest(touching.ref.contacts).toi_lo, 0.6);
+  }
+}
+
+TEST(SceneRigid, MinSeparationOptionsPassThrough) {
+  // t_max, toi_width, the exact mode and the older scheme with delta > 0: each as the per-query
+  // function (the older scheme: every contact it reports is one of the swept scheme's).
+  const double delta = 1e-3;
+  const Bodies bodies = turning_past(delta / 2, true, true, true);
+  Scene scene = make_scene(bodies);
+  SceneOptions o;
+  o.ccd.t_max = 0.625;
+  EXPECT_FALSE(check_separated(scene, bodies, delta, o).ref.contacts.empty());
+  o.ccd.t_max = 1;
+  o.ccd.toi_width = 1e-3;
+  check_separated(scene, bodies, delta, o);
+  o.ccd.toi_width = 0;
+  o.ccd.mode = Mode::exact;
+  check_separated(scene, bodies, delta, o);
+  o.ccd.mode = Mode::filtered;
+  o.min_separation = delta;
+  const SceneResult swept = scene.find_contacts(o);
+  o.broad_phase = BroadPhase::static_bvh;
+  for (const SceneContact& c : scene.find_contacts(o).contacts) {
+    ASSERT_TRUE(has_pair(swept.contacts, c.pair)) << describe(c);
+  }
+}
+
+TEST(SceneRigid, MinSeparationCoaxialTurnsEqualBruteForce) {
+  // The coaxial walls 2^-20 apart: within delta = 2^-18 they are contacts (the cylinder ranges,
+  // widened by delta, must keep them); within 2^-22 they are not, and the widened ranges still
+  // cull. (The tilted axis within 2^-18, many near-tangent rigid pairs, takes seconds: the
+  // z axis stands for it.)
+  const double tight = std::ldexp(1.0, -20);
+  const CoaxialCase z_axis{"z axis, static outer, clearance 2^-20", false, false, false, tight, 0};
+  const CoaxialCase tilted{"tilted axis, both turning, clearance 2^-20", true, true, false, tight, 0};
+  for (const CoaxialCase& k : {z_axis, tilted}) {
+    std::uint64_t contacts = 0;
+    const SceneStats near = coaxial_scene(k, &contacts, std::ldexp(1.0, -22));
+    EXPECT_EQ(contacts, 0u) << k.name;
+    EXPECT_GT(near.cylinder_culled, 0u) << k.name;
+  }
+  std::uint64_t contacts = 0;
+  coaxial_scene(z_axis, &contacts, std::ldexp(1.0, -18));
+  EXPECT_GT(contacts, 0u);
+}
+
+TEST(SceneRigidCylinders, WidenedRangesHoldPointsWithinDelta) {
+  // Rational points within delta of random points, segments and triangles (each offset
+  // coordinate at most delta / 2, so the offset is at most delta sqrt(3) / 2): inside the ranges
+  // widened by delta (scene::widened), which are not much wider than that.
+  Rng rng(test_seed() + 61);
+  std::uint64_t checked = 0;
+  const int trials = static_cast<int>(scaled_count(200));
+  for (int i = 0; i < trials; ++i) {
+    const Vector3d dir = std::array<Vector3d, 3>{Vector3d(0, 0, 1), Vector3d(1, 2, 2),
+                                                 Vector3d(0, -0.5, 0)}[i % 3];
+    const double delta = std::array<double, 3>{1e-3, 0.25, std::ldexp(1.0, -30)}[(i / 3) % 3];
+    const Vector3d c(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    std::array<Vector3d, 3> v;
+    for (Vector3d& x : v) x = c + Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    if (i % 5 == 1) v[2] = c + uniform(rng, -1, 1) * dir;  // a vertex on the axis
+    const scene::AxisLine line{c, dir};
+    scene::MeshCylinderRanges r, w;
+    {
+      const predicates::RoundingGuard upward;
+      r.line = line;
+      r.vertices = {scene::point_range(line, v[0])};
+      r.edges = {scene::segment_range(line, v[0], v[1])};
+      r.faces = {scene::triangle_range(line, v[0], v[1], v[2])};
+      w = scene::widened(r, delta);
+    }
+    // Not so loose as to be useless: every end moves by about |u| delta.
+    const double reach = 1.01 * dir.norm() * delta + 1e-12;
+    const auto near_tight = [&](const scene::CylinderRange& tight, const scene::CylinderRange& wide) {
+      EXPECT_LE(wide.h_hi - tight.h_hi, reach) << i;
+      EXPECT_LE(tight.h_lo - wide.h_lo, reach) << i;
+      EXPECT_LE(std::sqrt(wide.rho2_hi) - std::sqrt(tight.rho2_hi), reach) << i;
+      EXPECT_LE(std::sqrt(tight.rho2_lo) - std::sqrt(wide.rho2_lo), reach) << i;
+    };
+    near_tight(r.vertices[0], w.vertices[0]);
+    near_tight(r.edges[0], w.edges[0]);
+    near_tight(r.faces[0], w.faces[0]);
+    for (int j = 0; j < 24; ++j) {
+      const mpq_class a(uniform_int(rng, 0, 16), 16), b(uniform_int(rng, 0, 16), 16);
+      const mpq_class wa = a, wb = (1 - a) * b, wc = (1 - a) * (1 - b);
+      Q3 offset;
+      for (int k = 0; k < 3; ++k) offset[k] = mpq_class(delta) * uniform_int(rng, -16, 16) / 32;
+      Q3 on_point, on_seg, on_tri;
+      for (int k = 0; k < 3; ++k) {
+        on_point[k] = mpq_class(v[0][k]) + offset[k];
+        on_seg[k] = a * v[0][k] + (1 - a) * v[1][k] + offset[k];
+        on_tri[k] = wa * v[0][k] + wb * v[1][k] + wc * v[2][k] + offset[k];
+      }
+      for (const auto& [x, range] : {std::pair<Q3, scene::CylinderRange>{on_point, w.vertices[0]},
+                                     std::pair<Q3, scene::CylinderRange>{on_seg, w.edges[0]},
+                                     std::pair<Q3, scene::CylinderRange>{on_tri, w.faces[0]}}) {
+        const auto e = exact_cylinder(line, x);
+        ASSERT_TRUE(inside(range.rho2_lo, e[0], range.rho2_hi))
+            << "trial " << i << ": |w|^2 " << e[0].get_d() << " outside [" << range.rho2_lo
+            << ", " << range.rho2_hi << "]";
+        ASSERT_TRUE(inside(range.h_lo, e[1], range.h_hi))
+            << "trial " << i << ": h " << e[1].get_d() << " outside [" << range.h_lo << ", "
+            << range.h_hi << "]";
+        ++checked;
+      }
+    }
+  }
+  std::cout << "[ info     ] " << checked << " exact points within delta of primitives inside "
+            << "their widened cylinder ranges\n";
 }
 
 }  // namespace

@@ -236,7 +236,8 @@ int main(int argc, char** argv) {
   bench->add_flag("--rigid", bench_rigid,
                   "Time the rigid-body modes (default, exact; float_only on request, graded "
                   "against the first certified mode) on seeded random rigid pairs near contact "
-                  "instead (--rigid-count, --seed, --modes, --repetitions, --json); exit status 1 "
+                  "instead (--rigid-count, --seed, --modes, --repetitions, --min-separation, "
+                  "--relative-separation, --json; each delta a run of every mode); exit status 1 "
                   "when the certified modes' answers differ");
   CLI::Option* bench_rigid_count =
       bench->add_option("--rigid-count", rigid_bench_options.count, "Rigid pairs (with --rigid)")
@@ -322,9 +323,17 @@ int main(int argc, char** argv) {
   rigid->footer(kRigidExitStatusHelp);
   rigid->add_option("SCENE", rigid_options.scene_path, "The JSON scene file")->required();
   rigid->add_flag("--json", rigid_options.json,
-                  "Print one JSON object (scene, mode, t_max, toi_width, bodies, steps[{step, "
-                  "start_rounding, collides, contact{type, s_lo, s_hi, time_lo, time_hi, first, "
-                  "second}}], first_contact_step)");
+                  "Print one JSON object (scene, mode, t_max, toi_width, min_separation, bodies, "
+                  "steps[{step, start_rounding, collides, contact{type, s_lo, s_hi, time_lo, "
+                  "time_hi, first, second}}], first_contact_step)");
+  double rigid_min_separation = 0.0;
+  CLI::Option* rigid_min_separation_option =
+      rigid
+          ->add_option("--min-separation", rigid_min_separation,
+                       "Minimum separation delta >= 0 (finite): a step's contact is the first s "
+                       "at which primitives of two bodies come within Euclidean distance delta "
+                       "(0: contact). Replaces the scene file's \"min_separation\"")
+          ->check(numeric_text(false));
 
   // CLI11 would only say that a subcommand is required.
   if (argc >= 2 && argv[1][0] != '-') {
@@ -368,6 +377,8 @@ int main(int argc, char** argv) {
       rigid_bench_options.seed = bench_options.simulation_config.seed;
       rigid_bench_options.repetitions = bench_options.repetitions;
       rigid_bench_options.json = bench_options.json;
+      rigid_bench_options.min_separations = bench_options.min_separations;
+      rigid_bench_options.relative_separation = bench_options.relative_separation;
       if (bench_modes_option->count() > 0) {  // else default, exact
         rigid_bench_options.modes.clear();
         for (const std::string& name : bench_modes)
@@ -386,7 +397,11 @@ int main(int argc, char** argv) {
         bench_options.modes.push_back(*parse_mode_name(name));
       return run_bench(bench_options);
     }
-    if (rigid->parsed()) return run_rigid(rigid_options);
+    if (rigid->parsed()) {
+      if (rigid_min_separation_option->count() > 0)
+        rigid_options.min_separation = rigid_min_separation;
+      return run_rigid(rigid_options);
+    }
     if (generate->parsed()) {
       if (generate_min_separation_option->count() > 0)
         generate_options.min_separation = generate_min_separation;

@@ -84,15 +84,18 @@ Json json_of(const Feature& f, const RigidSceneFile& file) {
 
 Json nullable(bool defined, double value) { return defined ? Json(value) : Json(nullptr); }
 
-void print_text(const RigidOptions& o, const RigidSceneFile& file, const Scene& scene,
-                const std::vector<StepResult>& steps) {
+void print_text(const RigidOptions& o, const RigidSceneFile& file, double delta,
+                const Scene& scene, const std::vector<StepResult>& steps) {
   std::size_t rigid = 0;
   for (const SceneBody& b : file.bodies) rigid += b.kind == BodyKind::rigid;
   std::cout << o.scene_path << ": " << file.bodies.size()
             << (file.bodies.size() == 1 ? " body (" : " bodies (") << rigid << " rigid), "
             << steps.size() << (steps.size() == 1 ? " step" : " steps") << ", mode "
             << to_string(file.mode) << ", t_max "
-            << format_double(file.t_max) << "\n";
+            << format_double(file.t_max);
+  // Only when set: the header of a contact-only run stays as it was.
+  if (delta > 0) std::cout << ", min_separation " << format_double(delta);
+  std::cout << "\n";
   std::optional<std::size_t> first;
   for (std::size_t k = 0; k < steps.size(); ++k) {
     const StepResult& r = steps[k];
@@ -122,8 +125,8 @@ void print_text(const RigidOptions& o, const RigidSceneFile& file, const Scene& 
     std::cout << "collision-free in every step\n";
 }
 
-void print_json(const RigidOptions& o, const RigidSceneFile& file, const Scene& scene,
-                const std::vector<StepResult>& steps) {
+void print_json(const RigidOptions& o, const RigidSceneFile& file, double delta,
+                const Scene& scene, const std::vector<StepResult>& steps) {
   Json bodies = Json::array();
   for (const SceneBody& b : file.bodies)
     bodies.push_back({{"name", b.name},
@@ -135,6 +138,7 @@ void print_json(const RigidOptions& o, const RigidSceneFile& file, const Scene& 
               {"mode", to_string(file.mode)},
               {"t_max", file.t_max},
               {"toi_width", file.toi_width},
+              {"min_separation", delta},
               {"bodies", bodies},
               {"first_contact_step", nullptr}};
   Json list = Json::array();
@@ -163,10 +167,19 @@ void print_json(const RigidOptions& o, const RigidSceneFile& file, const Scene& 
   std::cout << out.dump(2, ' ', false, Json::error_handler_t::replace) << "\n";
 }
 
+/// The run's minimum separation: --min-separation when given, else the file's (validated as it
+/// was read).
+double min_separation_of(const RigidOptions& o, const RigidSceneFile& file) {
+  return o.min_separation ? *o.min_separation : file.min_separation;
+}
+
 }  // namespace
 
 int run_rigid(const RigidOptions& options) {
+  // The command line first: a bad --min-separation is refused before any file is read.
+  if (options.min_separation) oracle::validate_min_separation(*options.min_separation);
   const RigidSceneFile file = read_rigid_scene_file(options.scene_path);
+  const double delta = min_separation_of(options, file);
   Scene scene;
   std::vector<Positions> start;  // each body's positions at the start of the current step
   for (std::size_t i = 0; i < file.bodies.size(); ++i) {
@@ -186,6 +199,7 @@ int run_rigid(const RigidOptions& options) {
   o.ccd.t_max = file.t_max;
   o.ccd.toi_width = file.toi_width;
   o.ccd.mode = file.mode;
+  o.min_separation = delta;  // the scene gives every pair this delta
   std::vector<StepResult> results;
   for (std::size_t k = 0; k < file.step_count; ++k) {
     StepResult r;
@@ -213,9 +227,9 @@ int run_rigid(const RigidOptions& options) {
     results.push_back(r);
   }
   if (options.json)
-    print_json(options, file, scene, results);
+    print_json(options, file, delta, scene, results);
   else
-    print_text(options, file, scene, results);
+    print_text(options, file, delta, scene, results);
   const bool contact = std::any_of(results.begin(), results.end(),
                                    [](const StepResult& r) { return r.earliest.collides; });
   return contact ? oracle::kExitDisagree : oracle::kExitAgree;

@@ -253,7 +253,8 @@ class Reader {
 
   RigidSceneFile scene(const Json& v, const std::filesystem::path& folder) const {
     expect(v.is_object(), v, "the scene", "an object with \"bodies\"");
-    only_keys(v, "the scene", {"bodies", "t_max", "toi_width", "mode", "comment"});
+    only_keys(v, "the scene",
+              {"bodies", "t_max", "toi_width", "mode", "min_separation", "comment"});
     RigidSceneFile s;
     if (const auto it = v.find("t_max"); it != v.end()) {
       s.t_max = number(*it, "t_max");
@@ -262,6 +263,10 @@ class Reader {
     if (const auto it = v.find("toi_width"); it != v.end()) {
       s.toi_width = number(*it, "toi_width");
       if (!(s.toi_width >= 0.0)) fail("toi_width", "must be >= 0");
+    }
+    if (const auto it = v.find("min_separation"); it != v.end()) {
+      s.min_separation = number(*it, "min_separation");  // finite
+      if (!(s.min_separation >= 0.0)) fail("min_separation", "must be >= 0");
     }
     if (const auto it = v.find("mode"); it != v.end()) {
       expect(it->is_string(), *it, "mode", "\"default\", \"exact\" or \"float_only\"");

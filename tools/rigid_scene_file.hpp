@@ -1,6 +1,6 @@
 // The scene files of `exactccd rigid` (the format: docs/rigid_scene_format.md): bodies as OBJ
 // files or inline arrays, each rigid, static or deformable, rigid bodies with one motion or a
-// list of steps; options t_max, toi_width, mode.
+// list of steps; options t_max, toi_width, mode, min_separation.
 #pragma once
 
 #include <cstddef>
@@ -35,6 +35,8 @@ struct RigidSceneFile {
   double t_max = 1.0;
   double toi_width = 0.0;
   Mode mode = Mode::filtered;
+  /// The minimum separation delta >= 0 (SceneOptions::min_separation; 0: contact).
+  double min_separation = 0.0;
   /// max(1, the longest list of steps).
   std::size_t step_count = 1;
 };
@@ -44,9 +46,8 @@ struct RigidSceneFile {
 /// be read or is not a regular file, invalid JSON, a missing or unknown key, a value of the
 /// wrong type, a non-finite number, an index out of range or a triangle repeating a vertex, a
 /// row count that does not match, a turn of 180 degrees or more or about a zero axis, an
-/// option outside its domain (t_max in (0, 1], toi_width >= 0, mode default, exact or
-/// float_only); OBJ
-/// errors as read_obj.
+/// option outside its domain (t_max in (0, 1], toi_width >= 0, min_separation >= 0, mode
+/// default, exact or float_only); OBJ errors as read_obj.
 RigidSceneFile read_rigid_scene_file(const std::string& path);
 
 }  // namespace exactccd::cli

@@ -8,6 +8,8 @@
 #include "core/float_only/sign_change_bisection.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "core/predicates/rigid_coplanarity.hpp"
+#include "core/predicates/rigid_paths.hpp"
+#include "core/predicates/separation.hpp"
 
 namespace exactccd::float_only {
 
@@ -67,60 +69,59 @@ int roots_on(const FixedPoly<double, D>& f, double lo, double hi, double* roots)
 
 using predicates::DoubleSide;
 
-/// The four points' paths x(s) = X(s) / w(s) in doubles (w = 1 on a linear side).
-class Paths {
- public:
-  Paths(const std::array<Vec3<double>, 4>& start, const DoubleSide& first,
-        const DoubleSide& second, int first_count)
-      : first_count_(first_count) {
-    for (int i = 0; i < 4; ++i) {
-      const bool on_first = i < first_count;
-      const DoubleSide& side = on_first ? first : second;
-      const int index = on_first ? i : i - first_count;
-      numerator_[i] = side.rigid ? predicates::rigid_path_numerator(side.motion, start[i])
-                                 : predicates::linear_path_numerator(start[i], side.end[index]);
-    }
-    denominator_[0] = denominator_of(first);
-    denominator_[1] = denominator_of(second);
-  }
-
-  /// The four positions at s, rounded.
-  std::array<Vec3<double>, 4> at(double s) const {
-    const double w[2] = {predicates::evaluate(denominator_[0], s),
-                         predicates::evaluate(denominator_[1], s)};
-    std::array<Vec3<double>, 4> x;
-    for (int i = 0; i < 4; ++i) {
-      const double d = w[i < first_count_ ? 0 : 1];
-      const auto& X = numerator_[i];
-      x[i] = {predicates::evaluate(X.x, s) / d, predicates::evaluate(X.y, s) / d,
-              predicates::evaluate(X.z, s) / d};
-    }
-    return x;
-  }
-
- private:
-  static FixedPoly<double, 2> denominator_of(const DoubleSide& side) {
-    return side.rigid ? predicates::rigid_path_denominator(side.motion)
-                      : FixedPoly<double, 2>{{1.0, 0.0, 0.0}};
-  }
-
-  int first_count_;
-  std::array<Vec3<FixedPoly<double, 3>>, 4> numerator_;
-  std::array<FixedPoly<double, 2>, 2> denominator_;
-};
+using Paths = predicates::RigidPaths<double>;
 
 /// The contact test at one parameter: the inclusion test on the positions there, signs of
 /// doubles (given that the four points are coplanar there, which only g's root says).
 bool contact_at(QueryType type, const Paths& paths, double s) {
-  const std::array<Vec3<double>, 4> x = paths.at(s);
+  const std::array<Vec3<double>, 4> x = paths.positions_at(s);
   const auto sign_at = [](double v) { return sign(v); };
   return type == QueryType::vertex_face
              ? predicates::point_in_triangle_at(x[0], x[1], x[2], x[3], sign_at)
              : predicates::segments_intersect_at(x[0], x[1], x[2], x[3], sign_at);
 }
 
-/// Samples of the coplanar-throughout case (g identically zero in doubles).
+/// Within delta at s: the region polynomials' signs on the positions there, all in doubles.
+template <class Separation>
+bool within_at(const Paths& paths, double delta2, double s) {
+  using Point = Vec3<FixedPoly<double, 0>>;
+  const std::array<Vec3<double>, 4> x = paths.positions_at(s);
+  auto point = [&x](int i) { return Point{{{x[i].x}}, {{x[i].y}}, {{x[i].z}}}; };
+  double value[Separation::kCount];
+  int n = 0;
+  Separation{point(0), point(1), point(2), point(3), delta2}.for_each_polynomial(
+      [&](const auto& g) { value[n++] = g.c[0]; });
+  return Separation::within([&value](int k) { return sign(value[k]); });
+}
+
+/// Samples of the coplanar-throughout case and of minimum separation.
 constexpr int kSamples = 64;
+
+/// The first s in [0, t_max] at which holds(s): the first of kSamples + 1 equally spaced
+/// parameters at which it holds, then bisection between it and the sample before (which fails).
+template <class Holds>
+CcdResult first_sampled(Holds&& holds, double t_max) {
+  CcdResult r;
+  r.decided_by = Stage::float_only;
+  double before = 0.0;
+  for (int j = 0; j <= kSamples; ++j) {
+    const double s = j == kSamples ? t_max : t_max * (static_cast<double>(j) / kSamples);
+    if (!holds(s)) {
+      before = s;
+      continue;
+    }
+    double lo = before, hi = s;
+    for (int it = 0; j > 0 && it < 200; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      if (mid <= lo || mid >= hi) break;
+      (holds(mid) ? hi : lo) = mid;
+    }
+    r.collides = true;
+    r.toi_lo = r.toi_hi = hi;
+    return r;
+  }
+  return r;
+}
 
 }  // namespace
 
@@ -136,8 +137,24 @@ CcdResult rigid_ccd(const predicates::DoubleRigidQuery& q, const CcdOptions& opt
   const double t_max = options.t_max;
   CcdResult r;
   r.decided_by = Stage::float_only;
-  const int first_count = type == QueryType::vertex_face ? 1 : 2;
-  const Paths paths(start, first, second, first_count);
+  const Paths paths = predicates::rigid_paths<double>(q);
+  if (options.min_separation > 0) {  // the distance sampled: the common practice
+    using predicates::EdgeEdgeSeparation;
+    using predicates::VertexFaceSeparation;
+    using Point = Vec3<FixedPoly<double, 0>>;
+    const double delta2 = options.min_separation * options.min_separation;
+    return type == QueryType::vertex_face
+               ? first_sampled(
+                     [&](double s) {
+                       return within_at<VertexFaceSeparation<Point, double>>(paths, delta2, s);
+                     },
+                     t_max)
+               : first_sampled(
+                     [&](double s) {
+                       return within_at<EdgeEdgeSeparation<Point, double>>(paths, delta2, s);
+                     },
+                     t_max);
+  }
   const FixedPoly<double, 5> g =
       type == QueryType::vertex_face
           ? predicates::vertex_face_rigid_coplanarity<double>(start[0], start[1], start[2],
@@ -149,27 +166,8 @@ CcdResult rigid_ccd(const predicates::DoubleRigidQuery& q, const CcdOptions& opt
     r.toi_lo = r.toi_hi = s;
     return r;
   };
-  if (is_zero(g)) {
-    // Coplanar throughout: contact wherever the inclusion test passes. The first sample that
-    // passes, then bisection between it and the sample before (which fails).
-    double before = 0.0;
-    for (int j = 0; j <= kSamples; ++j) {
-      const double s = j == kSamples ? t_max : t_max * (static_cast<double>(j) / kSamples);
-      if (!contact_at(type, paths, s)) {
-        before = s;
-        continue;
-      }
-      if (j == 0) return found(s);
-      double lo = before, hi = s;
-      for (int it = 0; it < 200; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        if (mid <= lo || mid >= hi) break;
-        (contact_at(type, paths, mid) ? hi : lo) = mid;
-      }
-      return found(hi);
-    }
-    return r;
-  }
+  if (is_zero(g))  // coplanar throughout: contact wherever the inclusion test passes
+    return first_sampled([&](double s) { return contact_at(type, paths, s); }, t_max);
   double roots[5];
   const int n = polynomial_roots(g, t_max, roots);
   for (int i = 0; i < n; ++i)

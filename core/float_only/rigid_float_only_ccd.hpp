@@ -25,8 +25,10 @@ namespace exactccd::float_only {
 
 /// The float_only test of a rigid query (vertex-face or edge-edge, as query.type says) over s in
 /// [0, options.t_max] (options already validated, the query checked finite by the pipeline;
-/// toi_width and min_separation are not read: the TOI is one double). The time of a rotation is
-/// left to the caller.
+/// toi_width is not read: the TOI is one double). With min_separation > 0 the common practice
+/// instead: the instant predicate "within delta" (core/predicates/separation.hpp) in doubles at
+/// 65 equally spaced parameters, the first transition bisected (a contact shorter than the
+/// spacing is missed). The time of a rotation is left to the caller.
 CcdResult rigid_ccd(const predicates::DoubleRigidQuery& query, const CcdOptions& options);
 
 /// The roots in [0, t_max] of the degree-5 polynomial g found in double arithmetic, ascending,

@@ -2,8 +2,11 @@
 // one instant", written once: the region polynomials over any number type, and the region
 // logic once over their signs.
 //
-// A Point is a Vec3 of FixedPoly<NT, D> (a moving point, D = 1); `delta2` is delta squared, an
-// NT. Each separation numbers its polynomials: the non-strict ones first (0 ..
+// A Point is a Vec3 of FixedPoly<NT, D> (a moving point: D = 1 linear, D = 5 rigid on a common
+// denominator); `delta2` is delta squared: an NT, or for rigid motion the polynomial delta^2 W^2
+// (every region polynomial is homogeneous in coordinate differences, and delta^2 stands in each
+// for a factor of degree 2, so multiplying through by a power of W > 0 keeps every sign).
+// PROOF: proofs/min_separation.md#rigid-separation Each separation numbers its polynomials: the non-strict ones first (0 ..
 // kNonStrictCount - 1, every condition "<= 0" or ">= 0"), then the strict ones (each "> 0", a
 // sum of squares); for_each_polynomial visits them in that order. within(sign) decides the
 // instant predicate from sign(k), the sign (-1, 0, +1) of polynomial k at the instant under
@@ -26,6 +29,23 @@ EXACTCCD_CERTIFIED FixedPoly<NT, D> scaled(const NT& k, const FixedPoly<NT, D>& 
   return r;
 }
 
+/// delta^2 given as a polynomial (rigid motion on a common denominator W: delta^2 W^2) times p.
+template <class NT, int K, int D>
+EXACTCCD_CERTIFIED FixedPoly<NT, K + D> scaled(const FixedPoly<NT, K>& k,
+                                               const FixedPoly<NT, D>& p) {
+  return k * p;
+}
+
+/// delta^2 as a polynomial: a constant, or the polynomial it already is.
+template <class NT>
+EXACTCCD_CERTIFIED FixedPoly<NT, 0> as_polynomial(const NT& k) {
+  return {{k}};
+}
+template <class NT, int K>
+EXACTCCD_CERTIFIED const FixedPoly<NT, K>& as_polynomial(const FixedPoly<NT, K>& k) {
+  return k;
+}
+
 /// The polynomials of "p within delta of the closed segment [x, y]", e = y - x: the end
 /// spheres |p - x|^2 - delta^2 <= 0 and |p - y|^2 - delta^2 <= 0; the capsule's side
 /// (p - x).e >= 0, (p - y).(x - y) >= 0, |p - x|^2 |e|^2 - ((p - x).e)^2 - delta^2 |e|^2 <= 0
@@ -39,7 +59,7 @@ struct PointSegmentPolynomials {
 
   auto sphere(const Point& v) const {
     const auto w = p - v;
-    return dot(w, w) - FixedPoly<NT, 0>{{delta2}};
+    return dot(w, w) - as_polynomial(delta2);
   }
   auto projection_from_x() const { return dot(p - x, y - x); }
   auto projection_from_y() const { return dot(p - y, x - y); }

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <vector>
 
+#include "core/predicates/rigid_paths.hpp"
 #include "core/predicates/separation.hpp"
 #include "exact/reference/earliest_contact.hpp"
 
@@ -17,9 +19,12 @@ namespace {
 /// (t_from, t_to] of one of its non-strict polynomials whose sign the hint does not fix;
 /// polynomials certainly without a root in [t_from, t_to] are skipped.
 /// PROOF: proofs/min_separation.md#candidate-times
+/// Each of `positive_factors` (polynomials with no real root, positive) is divided out of every
+/// region polynomial as often as it divides it: the signs stay, the degrees fall.
 template <class Separation>
 CcdResult earliest_within(const Separation& separation, const CcdOptions& options,
-                          const SeparationHint& hint) {
+                          const SeparationHint& hint,
+                          const std::vector<Polynomial>& positive_factors = {}) {
   const Rational from(hint.t_from), to(hint.t_to > 0 ? hint.t_to : options.t_max);
   std::array<signed char, Separation::kCount> known;
   known.fill(2);
@@ -28,6 +33,14 @@ CcdResult earliest_within(const Separation& separation, const CcdOptions& option
   std::vector<Polynomial> all;
   all.reserve(Separation::kCount);
   separation.for_each_polynomial([&all](const auto& g) { all.emplace_back(g); });
+  for (Polynomial& g : all)
+    for (const Polynomial& f : positive_factors)
+      while (!g.is_zero()) {
+        Polynomial quotient, remainder;
+        divide(g, f, &quotient, &remainder);
+        if (!remainder.is_zero()) break;
+        g = std::move(quotient);
+      }
   std::vector<Polynomial> candidates;
   for (int k = 0; k < Separation::kNonStrictCount; ++k)
     if (known[k] == 2 && all[k].degree() >= 1 && !certainly_root_free(all[k], from, to))
@@ -76,6 +89,23 @@ CcdResult edge_edge_min_separation_exact(const RationalQuery& query, const Ratio
   return min_separation_exact(query, delta, options, hint, [](auto... a) {
     return predicates::edge_edge_separation(a...);
   });
+}
+
+CcdResult rigid_min_separation_exact(const RationalRigidQuery& query, const Rational& delta,
+                                     const CcdOptions& options, const SeparationHint& hint) {
+  const predicates::RigidPaths<Rational> paths = predicates::rigid_paths<Rational>(query);
+  const auto W = paths.common_denominator();
+  const auto delta2 = predicates::scaled(Rational(delta * delta), W * W);
+  std::array<predicates::RigidPoint<Rational>, 4> y;
+  for (int i = 0; i < 4; ++i) y[i] = paths.on_common_denominator(i);
+  std::vector<Polynomial> denominators;  // w_side = 1 + |q|^2 s^2 of each turning side
+  for (const auto& w : paths.denominator)
+    if (sgn(w.c[2]) > 0) denominators.emplace_back(w);
+  return query.type == QueryType::vertex_face
+             ? earliest_within(predicates::vertex_face_separation(y[0], y[1], y[2], y[3], delta2),
+                               options, hint, denominators)
+             : earliest_within(predicates::edge_edge_separation(y[0], y[1], y[2], y[3], delta2),
+                               options, hint, denominators);
 }
 
 }  // namespace exactccd::exact

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "exact/arithmetic/rational.hpp"
+#include "exact/reference/rigid_ccd.hpp"
 #include "exactccd/rational_query.hpp"
 
 namespace exactccd::exact {
@@ -27,5 +28,11 @@ CcdResult vertex_face_min_separation_exact(const RationalQuery& query, const Rat
 CcdResult edge_edge_min_separation_exact(const RationalQuery& query, const Rational& delta,
                                          const CcdOptions& options,
                                          const SeparationHint& hint = {});
+
+/// Rigid (or per-vertex linear) motion: the region polynomials of the four points on the common
+/// denominator W with delta^2 W^2 in place of delta^2 (degree <= 30 in s); the hint as above, in s.
+/// PROOF: proofs/min_separation.md#rigid-separation
+CcdResult rigid_min_separation_exact(const RationalRigidQuery& query, const Rational& delta,
+                                     const CcdOptions& options, const SeparationHint& hint = {});
 
 }  // namespace exactccd::exact

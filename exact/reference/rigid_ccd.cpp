@@ -5,48 +5,18 @@
 
 #include "core/predicates/inclusion.hpp"
 #include "core/predicates/rigid_coplanarity.hpp"
+#include "core/predicates/rigid_paths.hpp"
 #include "exact/reference/earliest_contact.hpp"
 #include "exact/reference/primitive_contact.hpp"
 
 namespace exactccd::exact {
 
-namespace {
-
-using predicates::FixedPoly;
 using predicates::RigidPoint;
-using predicates::Vec3;
-
-struct SidePaths {
-  std::array<Vec3<FixedPoly<Rational, 3>>, 3> numerator;
-  FixedPoly<Rational, 2> denominator;
-};
-
-FixedPoly<Rational, 2> denominator_of(const RationalSide& side) {
-  return side.rigid ? predicates::rigid_path_denominator(side.motion)
-                    : FixedPoly<Rational, 2>{{Rational(1), Rational(0), Rational(0)}};
-}
-
-SidePaths paths_of(const RationalSide& side, const Vec3<Rational>* start, int count) {
-  SidePaths paths;
-  for (int i = 0; i < count; ++i)
-    paths.numerator[i] = side.rigid ? predicates::rigid_path_numerator(side.motion, start[i])
-                                    : predicates::linear_path_numerator(start[i], side.end[i]);
-  paths.denominator = denominator_of(side);
-  return paths;
-}
-
-}  // namespace
 
 std::array<RigidPoint<Rational>, 4> common_denominator_points(const RationalRigidQuery& q) {
-  const int first_side_count = q.type == QueryType::vertex_face ? 1 : 2;
-  const SidePaths a = paths_of(q.side[0], &q.start[0], first_side_count);
-  const SidePaths b = paths_of(q.side[1], &q.start[first_side_count], 4 - first_side_count);
+  const predicates::RigidPaths<Rational> paths = predicates::rigid_paths<Rational>(q);
   std::array<RigidPoint<Rational>, 4> points;
-  for (int i = 0; i < 4; ++i)
-    points[i] = i < first_side_count
-                    ? predicates::on_common_denominator(a.numerator[i], b.denominator)
-                    : predicates::on_common_denominator(b.numerator[i - first_side_count],
-                                                        a.denominator);
+  for (int i = 0; i < 4; ++i) points[i] = paths.on_common_denominator(i);
   return points;
 }
 

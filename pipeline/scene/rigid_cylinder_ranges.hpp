@@ -12,7 +12,8 @@
 //
 // Every bound is certified: interval arithmetic (Interval_nt<false>, so the caller holds a
 // predicates::RoundingGuard) on the input doubles; "same line" and "parallel" are decided by
-// intervals that are exactly [0, 0] (else the pair is not culled).
+// intervals that are exactly [0, 0] (else the pair is not culled). With a minimum separation delta
+// one side's ranges are widened by |u| delta (widened), so pairs within delta are kept.
 // PROOF: proofs/scene.md#cylinder-ranges
 #pragma once
 
@@ -260,6 +261,27 @@ inline MeshCylinderRanges shifted(MeshCylinderRanges r, const std::array<double,
     for (CylinderRange& c : *list) {
       c.h_lo = (Interval(c.h_lo) + shift[0]).inf();
       c.h_hi = (Interval(c.h_hi) + shift[1]).sup();
+    }
+  return r;
+}
+
+/// `r` with every range widened by the minimum separation delta >= 0 (rounded outward), so that
+/// a point within distance delta of a primitive lies in its widened ranges: the distance to the
+/// line and the height along it are 1-Lipschitz, so |w| (|u| times the distance) and h change by
+/// at most |u| delta. Two primitives that come within delta then have overlapping ranges once
+/// either side is widened. Needs upward rounding.
+EXACTCCD_CERTIFIED MeshCylinderRanges widened(MeshCylinderRanges r, double delta) {
+  using predicates::Interval;
+  const Interval reach =
+      CGAL::sqrt(cylinder_detail::norm2(cylinder_detail::ivec(r.line.direction))) * delta;
+  for (auto* list : {&r.vertices, &r.edges, &r.faces})
+    for (CylinderRange& c : *list) {
+      // A lower end <= 0 (or NaN, never expected) gives 0: no lower bound, never a cull.
+      const double w_lo = (CGAL::sqrt(Interval(c.rho2_lo)) - reach).inf();
+      c.rho2_lo = w_lo > 0 ? CGAL::square(Interval(w_lo)).inf() : 0.0;
+      c.rho2_hi = CGAL::square(CGAL::sqrt(Interval(c.rho2_hi)) + reach).sup();
+      c.h_lo = (Interval(c.h_lo) - reach).inf();
+      c.h_hi = (Interval(c.h_hi) + reach).sup();
     }
   return r;
 }

@@ -91,14 +91,17 @@ std::shared_ptr<const scene::MeshCylinderRanges> cylinder_ranges(Mesh& m,
 }
 
 /// The cylinder cull of one mesh pair: both sides' ranges about their common line, h widened by
-/// each side's slide along it. PROOF: proofs/scene.md#cylinder-ranges
+/// each side's slide along it, the first side's ranges also widened by the minimum separation.
+/// PROOF: proofs/scene.md#cylinder-ranges
 struct CylinderCull {
   std::shared_ptr<const scene::MeshCylinderRanges> first, second;
 };
 
-/// The cull of the mesh pair (a, b), or nullopt when no line is kept by both motions (always
-/// when neither is a rigid body: scenes without rigid bodies are unchanged).
-std::optional<CylinderCull> cylinder_cull(std::vector<Mesh>& meshes, MeshId a, MeshId b) {
+/// The cull of the mesh pair (a, b) with minimum separation delta >= 0, or nullopt when no line
+/// is kept by both motions (always when neither is a rigid body: scenes without rigid bodies are
+/// unchanged).
+std::optional<CylinderCull> cylinder_cull(std::vector<Mesh>& meshes, MeshId a, MeshId b,
+                                          double delta) {
   Mesh& ma = meshes[a];
   Mesh& mb = meshes[b];
   if (a == b || !(ma.is_rigid || mb.is_rigid)) return std::nullopt;
@@ -112,7 +115,11 @@ std::optional<CylinderCull> cylinder_cull(std::vector<Mesh>& meshes, MeshId a, M
     return std::shared_ptr<const scene::MeshCylinderRanges>(std::make_shared<
         const scene::MeshCylinderRanges>(scene::shifted(*r, scene::h_shift(*line, m.motion.translation))));
   };
-  return CylinderCull{side(ma), side(mb)};
+  auto first = side(ma);
+  // Widening one side by delta is enough: a pair within delta then has overlapping ranges.
+  if (delta > 0.0)
+    first = std::make_shared<const scene::MeshCylinderRanges>(scene::widened(*first, delta));
+  return CylinderCull{first, side(mb)};
 }
 
 Edges edges_of(const Triangles& triangles) {
@@ -151,14 +158,6 @@ void check_triangles(const Triangles& triangles, Eigen::Index vertex_count) {
   }
   if (vertex_count > std::numeric_limits<std::int32_t>::max())
     throw std::invalid_argument("exactccd: too many vertices in one mesh");
-}
-
-/// The limits of rigid motion (rigid.hpp) for a scene holding a rigid body.
-void check_rigid_options(const SceneOptions& o) {
-  if (o.min_separation != 0.0)
-    throw std::invalid_argument(
-        "exactccd: SceneOptions::min_separation must be 0 in a scene with a rigid body "
-        "(minimum separation is not supported for rigid motion)");
 }
 
 void check_options(const SceneOptions& o) {
@@ -402,22 +401,23 @@ struct Scene::Impl {
       scene::grow_by_segment(box, row(m.start, v), row(m.end, v), 0.0, window);
   }
 
-  /// True when the two sides of a pair involving a rigid body cannot meet at any s in
-  /// [0, window]: their certified boxes over the window are apart on some axis
-  /// (proofs/scene.md#rigid-boxes). Needs upward rounding.
+  /// True when the two sides of a pair involving a rigid body cannot come within delta >= 0
+  /// (0: meet) at any s in [0, window]: their certified boxes over the window are more than
+  /// delta apart on some axis, the sum hi + delta rounded upwards as in time_window.hpp
+  /// (proofs/scene.md#rigid-boxes, #min-separation). Needs upward rounding.
   template <std::size_t NA, std::size_t NB>
   static bool rigid_sides_disjoint(const Mesh& a, const std::array<std::int32_t, NA>& va,
                                    const Mesh& b, const std::array<std::int32_t, NB>& vb,
-                                   double window) {
+                                   double window, double delta) {
     Box box_a = scene::empty_box(), box_b = scene::empty_box();
     grow_over_window(box_a, a, va, window);
     grow_over_window(box_b, b, vb, window);
     for (int k = 0; k < 3; ++k)
-      if (box_a.hi[k] < box_b.lo[k] || box_b.hi[k] < box_a.lo[k]) return true;
+      if (box_a.hi[k] + delta < box_b.lo[k] || box_b.hi[k] + delta < box_a.lo[k]) return true;
     return false;
   }
 
-  bool rigid_disjoint_over_window(const ScenePair& p, double window) const {
+  bool rigid_disjoint_over_window(const ScenePair& p, double window, double delta) const {
     const Mesh& a = meshes[p.first_mesh];
     const Mesh& b = meshes[p.second_mesh];
     if (p.type == QueryType::vertex_face) {
@@ -425,12 +425,13 @@ struct Scene::Impl {
       return rigid_sides_disjoint(
           a, std::array<std::int32_t, 1>{static_cast<std::int32_t>(p.first_index)}, b,
           std::array<std::int32_t, 3>{b.triangles(f, 0), b.triangles(f, 1), b.triangles(f, 2)},
-          window);
+          window, delta);
     }
     const auto i = static_cast<Eigen::Index>(p.first_index);
     const auto j = static_cast<Eigen::Index>(p.second_index);
     return rigid_sides_disjoint(a, std::array<std::int32_t, 2>{a.edges(i, 0), a.edges(i, 1)}, b,
-                                std::array<std::int32_t, 2>{b.edges(j, 0), b.edges(j, 1)}, window);
+                                std::array<std::int32_t, 2>{b.edges(j, 0), b.edges(j, 1)}, window,
+                                delta);
   }
 
   const Mesh& mesh(MeshId id) const {
@@ -465,8 +466,9 @@ struct Scene::Impl {
     const std::size_t n = meshes.size();
     std::vector<std::optional<CylinderCull>> culls(n * n);
     if (!any_rigid()) return culls;
-    for_each_mesh_pair(meshes, o.self_collision, true,
-                       [&](MeshId a, MeshId b) { culls[a * n + b] = cylinder_cull(meshes, a, b); });
+    for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
+      culls[a * n + b] = cylinder_cull(meshes, a, b, o.min_separation);
+    });
     return culls;
   }
 
@@ -710,7 +712,7 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
       std::optional<CcdResult> decided;
       if (involves_rigid(p)) {
         // The same over the arcs: certified boxes over [0, window], then the rigid test.
-        if (!(window < t_max && rigid_disjoint_over_window(p, window))) {
+        if (!(window < t_max && rigid_disjoint_over_window(p, window, o.min_separation))) {
           ++local.tests;
           decided = p.type == QueryType::vertex_face
                         ? vertex_face_ccd(rigid_vertex_face(p), options).ccd
@@ -868,7 +870,6 @@ auto with_threads(int max_threads, F&& f) {
 SceneResult Scene::find_contacts(const SceneOptions& options) {
   const predicates::RoundToNearestGuard fp;
   check_options(options);
-  if (impl_->any_rigid()) check_rigid_options(options);
   const SceneOptions o = with_pair_separation(options);
   return with_threads(o.max_threads, [&] { return impl_->find_contacts(o); });
 }
@@ -876,7 +877,6 @@ SceneResult Scene::find_contacts(const SceneOptions& options) {
 EarliestContact Scene::earliest_contact(const SceneOptions& options) {
   const predicates::RoundToNearestGuard fp;
   check_options(options);
-  if (impl_->any_rigid()) check_rigid_options(options);
   if (options.broad_phase != BroadPhase::swept_bvh)
     throw std::invalid_argument("exactccd: earliest_contact needs the swept_bvh broad phase");
   const SceneOptions o = with_pair_separation(options);

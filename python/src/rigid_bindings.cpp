@@ -80,7 +80,8 @@ void bind_rigid(py::module_& m) {
   m.def(
       "rigid_vertex_face_ccd",
       [](const py::handle& points, const py::handle& vertex_motion,
-         const py::handle& face_motion, double t_max, double toi_width, const std::string& mode) {
+         const py::handle& face_motion, double t_max, double toi_width, const std::string& mode,
+         double min_separation) {
         const DoubleArray x = as_double_array(points, {4, 3}, "the points p, a, b, c");
         RigidVertexFaceQuery q;
         Eigen::Vector3d* rows[4] = {&q.p, &q.a, &q.b, &q.c};
@@ -88,20 +89,23 @@ void bind_rigid(py::module_& m) {
           *rows[i] = Eigen::Vector3d(x.data()[3 * i], x.data()[3 * i + 1], x.data()[3 * i + 2]);
         q.vertex = side_motion(vertex_motion, 1, "the vertex's end position");
         q.face = side_motion(face_motion, 3, "the face's end positions");
-        const CcdOptions options = make_options(t_max, toi_width, mode);
+        const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
         py::gil_scoped_release release;
         return vertex_face_ccd(q, options);
       },
       py::arg("points"), py::arg("vertex_motion"), py::arg("face_motion"), py::kw_only(),
       py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "default",
+      py::arg("min_separation") = 0.0,
       "Vertex p against the closed triangle (a, b, c): points = (4, 3) positions at s = 0; each "
       "motion a RigidMotion or an array of end positions (straight lines). mode: \"default\" "
       "(certified), \"exact\", or \"float_only\" (the uncertified double test, for "
-      "comparison: toi_lo == toi_hi, stage \"float_only\").");
+      "comparison: toi_lo == toi_hi, stage \"float_only\"). min_separation: delta >= 0, finite; "
+      "collides iff the vertex comes within Euclidean distance delta of the triangle, the TOI "
+      "the earliest such s (0: contact).");
   m.def(
       "rigid_edge_edge_ccd",
       [](const py::handle& points, const py::handle& motion_a, const py::handle& motion_b,
-         double t_max, double toi_width, const std::string& mode) {
+         double t_max, double toi_width, const std::string& mode, double min_separation) {
         const DoubleArray x = as_double_array(points, {4, 3}, "the points ea0, ea1, eb0, eb1");
         RigidEdgeEdgeQuery q;
         Eigen::Vector3d* rows[4] = {&q.ea0, &q.ea1, &q.eb0, &q.eb1};
@@ -109,15 +113,16 @@ void bind_rigid(py::module_& m) {
           *rows[i] = Eigen::Vector3d(x.data()[3 * i], x.data()[3 * i + 1], x.data()[3 * i + 2]);
         q.edge_a = side_motion(motion_a, 2, "edge a's end positions");
         q.edge_b = side_motion(motion_b, 2, "edge b's end positions");
-        const CcdOptions options = make_options(t_max, toi_width, mode);
+        const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
         py::gil_scoped_release release;
         return edge_edge_ccd(q, options);
       },
       py::arg("points"), py::arg("motion_a"), py::arg("motion_b"), py::kw_only(),
       py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "default",
+      py::arg("min_separation") = 0.0,
       "Closed segment [ea0, ea1] against [eb0, eb1]: points = (4, 3) positions at s = 0; each "
-      "motion a RigidMotion or an array of end positions (straight lines). mode: as "
-      "rigid_vertex_face_ccd.");
+      "motion a RigidMotion or an array of end positions (straight lines). mode and "
+      "min_separation: as rigid_vertex_face_ccd (delta: the distance between the segments).");
 }
 
 }  // namespace exactccd::python

@@ -357,7 +357,7 @@ void bind_scene(py::module_& m) {
           py::arg("self_collision") = true, py::arg("max_threads") = 0,
           py::arg("record_candidates") = false, py::arg("min_separation") = 0.0,
           "Every colliding pair of the step (SceneResult); with min_separation delta > 0, every "
-          "pair that comes within delta.")
+          "pair that comes within delta (rigid bodies included).")
       .def(
           "earliest_contact",
           [](GuardedScene& g, double t_max, double toi_width, const std::string& mode,

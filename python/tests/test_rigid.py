@@ -237,3 +237,36 @@ def test_rigid_api_from_python():
         exactccd.rigid_edge_edge_ccd(np.zeros((3, 3)), quarter, quarter)
     with pytest.raises(ValueError):
         exactccd.RigidMotion.turn((0, 0, 0), (0, 0, 0), 1.0)
+
+
+def test_rigid_min_separation_keyword():
+    # The corner (5, 0, 0) turning a quarter about z passes (3, 4, 0) at s = 1/2, beside a static
+    # triangle in the plane through the axis and (3, 4, 0) that starts at radius 5 + gap: the
+    # closest distance is gap. min_separation=delta: within delta iff gap <= delta; the default
+    # (0) is contact, which never happens here. The same for an edge of the body along z passing
+    # the triangle's inner edge (the static side given as straight lines, at rest).
+    quarter = exactccd.RigidMotion(cayley=(0, 0, 1))
+    rest = exactccd.RigidMotion()
+    radial, up = np.array([0.6, 0.8, 0.0]), np.array([0.0, 0.0, 1.0])
+    delta = 1e-3
+    for gap, within in ((delta / 2, True), (2 * delta, False)):
+        inner = [(5 + gap) * radial - up, (5 + gap) * radial + up]
+        points = np.array([[5, 0, 0], *inner, 7 * radial])
+        r = exactccd.rigid_vertex_face_ccd(points, quarter, rest, min_separation=delta)
+        assert r.collides == within, gap
+        assert not exactccd.rigid_vertex_face_ccd(points, quarter, rest).collides
+        if within:
+            assert 0 <= r.toi_lo <= r.toi_hi <= 0.5 and r.stage != "float_only"
+        else:
+            assert r.toi_lo == r.toi_hi == math.inf
+        rough = exactccd.rigid_vertex_face_ccd(points, quarter, rest, mode="float_only",
+                                               min_separation=delta)
+        assert rough.collides == within and rough.stage == "float_only"
+        edges = np.array([[5, 0, -0.5], [5, 0, 0.5], *inner])
+        e = exactccd.rigid_edge_edge_ccd(edges, quarter, np.array(inner), min_separation=delta)
+        assert e.collides == within, gap
+        assert not exactccd.rigid_edge_edge_ccd(edges, quarter, np.array(inner)).collides
+    with pytest.raises(ValueError):
+        exactccd.rigid_vertex_face_ccd(points, quarter, rest, min_separation=-1e-3)
+    with pytest.raises(ValueError):
+        exactccd.rigid_edge_edge_ccd(edges, quarter, rest, min_separation=math.nan)

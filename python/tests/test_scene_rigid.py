@@ -1,6 +1,7 @@
 """Rigid bodies in the Scene (Scene.add_rigid_body, Scene.set_rigid_motion): a cube turning into a
 wall at a contact parameter worked out by hand, the same scene through `exactccd rigid`, a rigid
-body with q = 0 equal to a moving mesh with translated end positions, and bad input."""
+body with q = 0 equal to a moving mesh with translated end positions, a minimum separation
+(min_separation=) against every pair's rigid query, and bad input."""
 
 import json
 import math
@@ -139,8 +140,59 @@ def test_bad_rigid_input():
     with pytest.raises(ValueError, match="rigid"):
         scene.set_motion(body, CUBE, CUBE)
     with pytest.raises(ValueError, match="min_separation"):
-        scene.find_contacts(min_separation=1e-3)
+        scene.find_contacts(min_separation=-1e-3)
+    with pytest.raises(ValueError, match="min_separation"):
+        scene.earliest_contact(min_separation=math.inf)
     with pytest.raises(ValueError):
         exactccd.RigidMotion.turn([0, 0, 0], [0, 0, 0], 1.0)
     with pytest.raises(ValueError):
         exactccd.RigidMotion.turn([0, 0, 0], [0, 0, 1], 4.0)
+
+
+def rigid_pairs_within(scene, delta):
+    """Every pair of the cube (mesh 0, rigid) and the wall (mesh 1, static) decided one by one
+    with the rigid functions and min_separation=delta, as the scene decides a pair with a rigid
+    body: the static side as straight lines from its positions to the same positions."""
+    x = [scene.start_positions(m) for m in (0, 1)]
+    triangles = [scene.triangles(m) for m in (0, 1)]
+    edges = [scene.edges(m) for m in (0, 1)]
+
+    def motion(mesh, rows):
+        return scene.rigid_motion(mesh) if scene.is_rigid(mesh) else x[mesh][rows]
+
+    found = []
+    for a, b in ((0, 1), (1, 0)):
+        for v in range(len(x[a])):
+            for f, t in enumerate(triangles[b]):
+                r = exactccd.rigid_vertex_face_ccd(np.vstack([x[a][[v]], x[b][t]]),
+                                                   motion(a, [v]), motion(b, t),
+                                                   min_separation=delta)
+                if r.collides:
+                    found.append(("vertex-face", a, v, b, f, r.toi_lo, r.toi_hi))
+    for i, ea in enumerate(edges[0]):
+        for j, eb in enumerate(edges[1]):
+            r = exactccd.rigid_edge_edge_ccd(np.vstack([x[0][ea], x[1][eb]]), motion(0, ea),
+                                             motion(1, eb), min_separation=delta)
+            if r.collides:
+                found.append(("edge-edge", 0, i, 1, j, r.toi_lo, r.toi_hi))
+    return sorted(found)
+
+
+def test_min_separation_with_a_rigid_body():
+    # The turn clear of the wall at x = 7.075 passes it 0.0039 short (5 sqrt(2) = 7.0711): no
+    # contact, none within 0.001, some within 0.01. Every delta gives exactly the pairs (and
+    # TOIs) of the per-pair rigid queries with that delta: the broad phase drops none.
+    scene = cube_and_wall(7.075, [0, 0, -0.5])
+    for delta in (0.0, 1e-3, 1e-2):
+        result = scene.find_contacts(min_separation=delta)
+        got = sorted((c.pair.type, c.pair.first_mesh, c.pair.first_index, c.pair.second_mesh,
+                      c.pair.second_index, c.toi_lo, c.toi_hi) for c in result.contacts)
+        assert got == rigid_pairs_within(scene, delta), delta
+        assert bool(got) == (delta == 1e-2), delta
+        earliest = scene.earliest_contact(min_separation=delta)
+        assert earliest.collides == bool(got)
+        if got:
+            assert (earliest.contact.pair, earliest.contact.toi_lo) == \
+                (result.earliest.pair, result.earliest.toi_lo)
+    # float_only runs with a minimum separation too (uncertified: its verdict is not checked).
+    scene.find_contacts(min_separation=1e-2, mode="float_only")

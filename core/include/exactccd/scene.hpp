@@ -26,9 +26,11 @@
 /// rigid-deformable, rigid-static; never two primitives of one rigid body, which cannot
 /// collide with itself) is decided by the rigid vertex_face_ccd / edge_edge_ccd of rigid.hpp,
 /// so its TOI is in s; pairs without a rigid body take exactly today's path. Their swept boxes
-/// are certified interval enclosures of the vertices' arcs over pieces of [0, 1]. Rigid bodies
-/// need SceneOptions::min_separation = 0; with Mode::float_only their pairs get the rigid
-/// functions' uncertified float_only test (for comparison only), the others the linear one.
+/// are certified interval enclosures of the vertices' arcs over pieces of [0, 1], raised by the
+/// minimum separation as every box is, so SceneOptions::min_separation works with rigid bodies
+/// too (each rigid pair decided with CcdOptions::min_separation = delta); with Mode::float_only
+/// their pairs get the rigid functions' uncertified float_only test (for comparison only), the
+/// others the linear one.
 /// PROOF: proofs/scene.md (section 9, rigid bodies)
 ///
 /// Threads: the narrow phase runs in parallel (TBB); the results do not depend on the number of
@@ -87,8 +89,9 @@ struct SceneOptions {
   /// such time as its TOI, exactly as vertex_face_ccd / edge_edge_ccd decide it with
   /// CcdOptions::min_separation = delta; the broad phase keeps every such pair. 0 (the default)
   /// is contact itself, the same answers as without this field. The only place to give the
-  /// scene's delta (ccd.min_separation must stay 0). Must be finite and >= 0. Must be 0 when
-  /// the scene holds a rigid body (rigid min-separation is not supported).
+  /// scene's delta (ccd.min_separation must stay 0). Must be finite and >= 0. With a rigid body
+  /// in the scene its pairs are decided by the rigid functions with the same delta (the TOI in
+  /// the motion parameter s), and the broad phase keeps every pair that comes within delta.
   double min_separation = 0.0;
   /// The broad phase (swept_bvh, the default, never drops a colliding pair).
   BroadPhase broad_phase = BroadPhase::swept_bvh;
