@@ -4,9 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "core/predicates/double_bits.hpp"
+#include "core/predicates/rigid_separation.hpp"
 #include "core/predicates/separation.hpp"
+#include "core/predicates/x87_interval.hpp"
 #include "filters/rigid_paths_in_intervals.hpp"
 
 namespace exactccd::filters {
@@ -19,36 +22,49 @@ using predicates::order_bits;
 using predicates::Vec3;
 using rigid::Boxes;
 using rigid::IntervalPaths;
+#if EXACTCCD_X87_INTERVAL
+using predicates::X87Interval;
+#endif
 
-/// A number and its derivative in s, both enclosed (forward differentiation over intervals).
+/// A number and its first two derivatives in s, each enclosed (forward differentiation over
+/// intervals).
 struct Jet {
-  Interval v{0.0}, d{0.0};
+  Interval v{0.0}, d{0.0}, dd{0.0};
 };
-Jet operator+(const Jet& a, const Jet& b) { return {a.v + b.v, a.d + b.d}; }
-Jet operator-(const Jet& a, const Jet& b) { return {a.v - b.v, a.d - b.d}; }
-Jet operator-(const Jet& a) { return {-a.v, -a.d}; }
-Jet operator*(const Jet& a, const Jet& b) { return {a.v * b.v, a.d * b.v + a.v * b.d}; }
+Jet operator+(const Jet& a, const Jet& b) { return {a.v + b.v, a.d + b.d, a.dd + b.dd}; }
+Jet operator-(const Jet& a, const Jet& b) { return {a.v - b.v, a.d - b.d, a.dd - b.dd}; }
+Jet operator-(const Jet& a) { return {-a.v, -a.d, -a.dd}; }
+Jet operator*(const Jet& a, const Jet& b) {
+  return {a.v * b.v, a.d * b.v + a.v * b.d, a.dd * b.v + Interval(2) * (a.d * b.d) + a.v * b.dd};
+}
 
 template <class NT>
 using ConstantPoint = Vec3<FixedPoly<NT, 0>>;
 template <class NT>
 using Positions = std::array<Vec3<NT>, 4>;
 
-/// Positions and their derivatives over T: x = X / w, x' = (X' w - X w') / w^2 (w >= 1).
+/// Positions and their derivatives over T (or at an instant): x = X / w,
+/// x' = (X' - w' x) / w, x'' = (X'' - 2 w' x' - w'' x) / w (w >= 1).
 Positions<Jet> position_jets(const IntervalPaths& paths, const Interval& T) {
-  Interval w[2], dw[2];
+  Interval w[2], dw[2], ddw[2];
   for (int side = 0; side < 2; ++side) {
-    w[side] = predicates::evaluate(paths.denominator[side], T);
-    dw[side] = predicates::evaluate(predicates::derivative(paths.denominator[side]), T);
+    const auto& p = paths.denominator[side];
+    w[side] = predicates::evaluate(p, T);
+    dw[side] = predicates::evaluate(predicates::derivative(p), T);
+    ddw[side] = predicates::evaluate(predicates::derivative(predicates::derivative(p)), T);
   }
   Positions<Jet> x;
   for (int i = 0; i < 4; ++i) {
     const int side = i < paths.first_side_count ? 0 : 1;
     const auto& X = paths.numerator[i];
     auto jet = [&](const FixedPoly<Interval, 3>& c) {
-      const Interval v = predicates::evaluate(c, T);
-      const Interval dv = predicates::evaluate(predicates::derivative(c), T);
-      return Jet{v / w[side], (dv * w[side] - v * dw[side]) / (w[side] * w[side])};
+      const auto dc = predicates::derivative(c);
+      const Interval v = predicates::evaluate(c, T) / w[side];
+      const Interval d = (predicates::evaluate(dc, T) - dw[side] * v) / w[side];
+      const Interval dd = (predicates::evaluate(predicates::derivative(dc), T) -
+                           Interval(2) * (dw[side] * d) - ddw[side] * v) /
+                          w[side];
+      return Jet{v, d, dd};
     };
     x[i] = {jet(X.x), jet(X.y), jet(X.z)};
   }
@@ -84,9 +100,9 @@ class Search {
   using Values = std::array<Interval, kCount>;
 
  public:
-  Search(const IntervalPaths& paths, double delta, const CcdOptions& options,
-         RigidExactSigns& exact)
-      : paths_(paths), delta_(delta), delta2_(Interval(delta) * Interval(delta)),
+  Search(const DoubleRigidQuery& query, const IntervalPaths& paths, double delta,
+         const CcdOptions& options, RigidExactSigns& exact)
+      : query_(query), paths_(paths), delta_(delta), delta2_(Interval(delta) * Interval(delta)),
         t_max_(options.t_max), toi_width_(options.toi_width), exact_(exact) {}
 
   SeparationOutcome run();
@@ -102,25 +118,114 @@ class Search {
     int n = 0;
     s.for_each_polynomial([&](const auto& g) { out[only < 0 ? n++ : only] = g.c[0]; }, only);
   }
-  /// Enclosures over T of every region polynomial: the box evaluation intersected with the
-  /// mean-value form f(m) + f'(T) (T - m), which narrows quadratically with T.
-  Values values_over(const Interval& T, const Boxes& x) const {
-    Values v;
-    region_values<Interval>(x, delta2_, v.data());
-    if (T.inf() == T.sup()) return v;
-    const double m = T.inf() + (T.sup() - T.inf()) / 2;  // rounded upwards: inside T
-    Jet jets[kCount];
-    region_values<Jet>(position_jets(paths_, T), Jet{delta2_, Interval(0.0)}, jets);
-    Interval at_m[kCount];
-    region_values<Interval>(rigid::positions_over(paths_, Interval(m)), delta2_, at_m);
-    const Interval offset = T - Interval(m);
-    for (int k = 0; k < kCount; ++k) {
-      const Interval mean_value = at_m[k] + jets[k].d * offset;
-      const double lo = std::max(v[k].inf(), mean_value.inf());
-      const double hi = std::min(v[k].sup(), mean_value.sup());
-      if (lo <= hi) v[k] = Interval(lo, hi);  // both enclose f(T): they meet (NaN: keep the box)
+  /// Enclosures over a piece T of the region polynomials, each formed when first asked for
+  /// (`within` short-circuits: an excluded piece needs few of them): the box evaluation,
+  /// intersected, when its sign is uncertain, with the mean-value form f(m) + f'(T) (T - m),
+  /// which narrows quadratically with T.
+  class PieceValues {
+   public:
+    /// narrow: worth the Taylor form (a piece of at most 1/8 of [0, t_max], not an instant).
+    PieceValues(const Search& search, const Interval& T, const Boxes& x, bool narrow)
+        : search_(search), T_(T), x_(x), narrow_(narrow) {}
+    const Interval& operator[](int k) {
+      if (!((formed_ >> k) & 1)) form(k);
+      return v_[k];
     }
-    return v;
+    const Interval& piece() const { return T_; }
+    /// Position jets over T, and at the double m in its middle; T - m.
+    const Positions<Jet>& positions_over() {
+      prepare();
+      return over_;
+    }
+    const Interval& offset() {
+      prepare();
+      return offset_;
+    }
+    /// Polynomial k's jets over T and at m.
+    const Jet& jet_over(int k) {
+      jets_of(k);
+      return jet_over_[k];
+    }
+    const Jet& jet_at_m(int k) {
+      jets_of(k);
+      return jet_at_m_[k];
+    }
+
+   private:
+    void form(int k) {
+      formed_ |= std::uint32_t{1} << k;
+      region_values<Interval>(x_, search_.delta2_, v_.data(), k);
+      if (certified_sign(v_[k]) != CertifiedSign::uncertain || !narrow_) return;
+      // Taylor at m: f(m) + f'(m) o + f''(T) o^2 / 2, o = T - m.
+      const Jet& m = jet_at_m(k);
+      const Interval taylor =
+          m.v + m.d * offset_ + jet_over(k).dd * CGAL::square(offset_) * Interval(0.5);
+      const double lo = std::max(v_[k].inf(), taylor.inf());
+      const double hi = std::min(v_[k].sup(), taylor.sup());
+      if (lo <= hi) v_[k] = Interval(lo, hi);  // both enclose f(T): they meet (NaN: keep the box)
+    }
+    void prepare() {
+      if (ready_) return;
+      const double m = T_.inf() + (T_.sup() - T_.inf()) / 2;  // rounded upwards: inside T
+      over_ = position_jets(search_.paths_, T_);
+      at_m_ = position_jets(search_.paths_, Interval(m));
+      offset_ = T_ - Interval(m);
+      ready_ = true;
+    }
+    void jets_of(int k) {
+      if ((jets_formed_ >> k) & 1) return;
+      prepare();
+      jets_formed_ |= std::uint32_t{1} << k;
+      jet_over_[k] = search_.jet_of(k, over_);
+      jet_at_m_[k] = search_.jet_of(k, at_m_);
+    }
+
+    const Search& search_;
+    const Interval T_;
+    const Boxes& x_;
+    const bool narrow_;
+    Values v_;
+    std::uint32_t formed_ = 0, jets_formed_ = 0;
+    bool ready_ = false;
+    Positions<Jet> over_, at_m_;
+    Interval offset_;
+    Jet jet_over_[kCount], jet_at_m_[kCount];
+  };
+
+
+  /// Polynomial k's jet from position jets.
+  Jet jet_of(int k, const Positions<Jet>& x) const {
+    Jet out[kCount];
+    region_values<Jet>(x, Jet{delta2_, Interval(0.0), Interval(0.0)}, out, k);
+    return out[k];
+  }
+  /// f_k changes sign at most once on T: f_k' of certain sign; or, for f_k = P - delta^2 Q with
+  /// P, Q > 0 on T (the spheres, capsules, the face and the lines' region: squared distances
+  /// times Q), h = sqrt(P) - delta sqrt(Q) of certain slope, h having f_k's sign (f_k = h times
+  /// sqrt(P) + delta sqrt(Q) > 0). h is what the distance does; f_k's slope near its root is
+  /// delta times smaller and its curvature is not, so f_k' is seldom certain on a wide piece.
+  template <class V>
+  bool certainly_monotone(int k, V& v) const {
+    if (certain_strict_sign(derivative_over(k, v)) != 0) return true;
+    const Positions<Jet>& over = v.positions_over();
+    Jet p[kCount], p_minus_q[kCount];
+    region_values<Jet>(over, Jet{Interval(0.0), Interval(0.0), Interval(0.0)}, p, k);
+    region_values<Jet>(over, Jet{Interval(1.0), Interval(0.0), Interval(0.0)}, p_minus_q, k);
+    const Jet& P = p[k];
+    const Jet Q = p[k] - p_minus_q[k];
+    if (!(P.v.inf() > 0 && Q.v.inf() > 0)) return false;
+    const Interval slope = P.d / (Interval(2) * CGAL::sqrt(P.v)) -
+                           Interval(delta_) * Q.d / (Interval(2) * CGAL::sqrt(Q.v));
+    return certain_strict_sign(slope) != 0;
+  }
+  /// f_k' over T: f'(m) + f''(T) o, within the direct enclosure f'(T).
+  template <class V>
+  static Interval derivative_over(int k, V& v) {
+    const Jet& m = v.jet_at_m(k);
+    const Jet& t = v.jet_over(k);
+    const Interval taylor = m.d + t.dd * v.offset();
+    const double lo = std::max(t.d.inf(), taylor.inf()), hi = std::min(t.d.sup(), taylor.sup());
+    return lo <= hi ? Interval(lo, hi) : t.d;
   }
   Interval value_at(int k, double t) const {
     Interval v[kCount];
@@ -128,7 +233,8 @@ class Search {
     return v[k];
   }
   /// Within delta somewhere the signs allow: uncertain conditions taken as met.
-  static bool possibly_within(const Values& v) {
+  template <class V>
+  static bool possibly_within(V& v) {
     return Kind::within([&v](int k) {
       const CertifiedSign s = certified_sign(v[k]);
       if (s == CertifiedSign::uncertain) return k < kNonStrict ? 0 : 1;
@@ -136,7 +242,8 @@ class Search {
     });
   }
   /// Within delta with every condition it uses met strictly: then also at nearby instants.
-  static bool surely_within(const Values& v) {
+  template <class V>
+  static bool surely_within(V& v) {
     return Kind::within([&v](int k) {
       const int s = certain_strict_sign(v[k]);
       if (k >= kNonStrict) return s > 0 ? 1 : 0;
@@ -144,48 +251,64 @@ class Search {
       return s == c ? c : -c;
     });
   }
-  /// The one non-strict polynomial whose condition alone decides `within` over the piece (for
-  /// every sign the other uncertain ones may take, within when it is met and not otherwise),
-  /// or -1.
-  static int deciding_polynomial(const Values& v) {
+  /// The non-strict polynomials whose conditions decide `within` over the piece as their
+  /// disjunction, for every sign the other uncertain polynomials may take (a bit mask; 0 when
+  /// there are none): one polynomial, or all the uncertain ones (a contact close to the border
+  /// of two regions, where both cross).
+  template <class V>
+  static std::uint32_t deciding_set(V& v) {
     constexpr int kMaxUncertain = 4;
     int uncertain[kMaxUncertain], count = 0;
     for (int i = 0; i < kCount; ++i) {
       if (certified_sign(v[i]) != CertifiedSign::uncertain) continue;
-      if (count == kMaxUncertain) return -1;
+      if (count == kMaxUncertain) return 0;
       uncertain[count++] = i;
     }
+    int combinations = 1;
+    for (int i = 0; i < count; ++i) combinations *= 3;
+    auto decides = [&](std::uint32_t set) {
+      for (int code = 0; code < combinations; ++code) {
+        int assigned[kCount];  // the uncertain ones' signs: code's base-3 digits - 1
+        bool any_met = false;
+        for (int i = 0, rest = code; i < count; ++i, rest /= 3) {
+          const int k = uncertain[i];
+          assigned[k] = rest % 3 - 1;
+          if ((set >> k) & 1)
+            any_met = any_met || assigned[k] == 0 || assigned[k] == Kind::condition(k);
+        }
+        const bool within = Kind::within([&](int i) {
+          const CertifiedSign s = certified_sign(v[i]);
+          return s == CertifiedSign::uncertain ? assigned[i] : static_cast<int>(s);
+        });
+        if (within != any_met) return false;
+      }
+      return true;
+    };
+    std::uint32_t all = 0;
     for (int j = 0; j < count; ++j) {
       const int k = uncertain[j];
-      if (k >= kNonStrict) continue;
-      const int c = Kind::condition(k);
-      bool decides = true;
-      int combinations = 1;
-      for (int i = 1; i < count; ++i) combinations *= 3;
-      for (int code = 0; code < combinations && decides; ++code) {
-        int assigned[kCount];  // the others' signs: code's base-3 digits - 1
-        for (int i = 0, rest = code; i < count; ++i) {
-          if (i == j) continue;
-          assigned[uncertain[i]] = rest % 3 - 1;
-          rest /= 3;
-        }
-        auto within_when = [&](int sign_k) {
-          return Kind::within([&](int i) {
-            if (i == k) return sign_k;
-            const CertifiedSign s = certified_sign(v[i]);
-            return s == CertifiedSign::uncertain ? assigned[i] : static_cast<int>(s);
-          });
-        };
-        decides = within_when(c) && !within_when(-c);
-      }
-      if (decides) return k;
+      if (k >= kNonStrict) return 0;
+      all |= std::uint32_t{1} << k;
+      if (decides(std::uint32_t{1} << k)) return std::uint32_t{1} << k;
     }
-    return -1;
+    return count > 1 && decides(all) ? all : 0;
   }
-  /// The exact sign of polynomial k at the double t: intervals first, then exact.
+  /// The exact sign of polynomial k at the double t: double intervals first, then extended
+  /// ones on the common denominator, then exact.
   int fine_sign(int k, double t) {
     const CertifiedSign s = certified_sign(value_at(k, t));
     if (s != CertifiedSign::uncertain) return static_cast<int>(s);
+#if EXACTCCD_X87_INTERVAL
+    {
+      // The query's numbers are doubles, normalised; the polynomial's degree is at most 30 in
+      // them: far inside the extended exponent range.
+      const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
+      if (!extended_paths_) extended_paths_ = predicates::rigid_paths<X87Interval>(query_);
+      const int x = predicates::certain_sign_or_zero(predicates::rigid_region_value(
+          *extended_paths_, query_.type, X87Interval(delta_), k, X87Interval(t)));
+      if (x != 0) return x == 2 ? 0 : x;
+    }
+#endif
     exact_used_ = true;
     return exact_.region_sign_at(k, t);
   }
@@ -194,7 +317,7 @@ class Search {
            (toi_width_ > 0 && (Interval(hi) - Interval(lo)).sup() <= toi_width_);
   }
   enum class PieceVerdict : std::uint8_t { excluded, contact, undecided };
-  PieceVerdict decide_piece(int k, const Interval& T, SeparationOutcome* out);
+  PieceVerdict decide_piece(std::uint32_t set, PieceValues& v, SeparationOutcome* out);
   void tighten(int k, double* lo, double* hi);
 
   static SeparationOutcome contact(double lo, double hi, bool exact_used) {
@@ -206,35 +329,47 @@ class Search {
     return r;
   }
 
+  const DoubleRigidQuery& query_;
   const IntervalPaths& paths_;
   const double delta_;
   const Interval delta2_;
   const double t_max_, toi_width_;
   RigidExactSigns& exact_;
   bool exact_used_ = false;
+#if EXACTCCD_X87_INTERVAL
+  std::optional<predicates::RigidPaths<X87Interval>> extended_paths_;
+#endif
 };
 
 /// On a piece where polynomial k alone decides: k monotone over it (its derivative of certain
 /// sign) makes `within` false up to k's only root and true after it.
 template <template <class, class> class Separation>
 typename Search<Separation>::PieceVerdict Search<Separation>::decide_piece(
-    int k, const Interval& T, SeparationOutcome* out) {
-  Jet jets[kCount];
-  region_values<Jet>(position_jets(paths_, T), Jet{delta2_, Interval(0.0)}, jets, k);
-  if (certain_strict_sign(jets[k].d) == 0) return PieceVerdict::undecided;
-  const int c = Kind::condition(k);
-  double lo = T.inf(), hi = T.sup();
-  const int at_lo = fine_sign(k, lo);
-  if (at_lo == 0 || at_lo == c) {  // within at lo: the first instant only at s = 0
-    if (lo != 0.0) return PieceVerdict::undecided;
-    *out = contact(0.0, 0.0, exact_used_);
-    return PieceVerdict::contact;
+    std::uint32_t set, PieceValues& v, SeparationOutcome* out) {
+  const double lo = v.piece().inf(), hi = v.piece().sup();
+  double first_lo = INFINITY, first_hi = INFINITY;  // the earliest root's bracket so far
+  for (int k = 0; k < kCount; ++k) {
+    if (!((set >> k) & 1)) continue;
+    if (!certainly_monotone(k, v)) return PieceVerdict::undecided;
+    const int c = Kind::condition(k);
+    const int at_lo = fine_sign(k, lo);
+    if (at_lo == 0 || at_lo == c) {  // within at lo: the first instant only at s = 0
+      if (lo != 0.0) return PieceVerdict::undecided;
+      *out = contact(0.0, 0.0, exact_used_);
+      return PieceVerdict::contact;
+    }
+    const int at_hi = fine_sign(k, hi);
+    if (at_hi == -c) continue;  // unmet at both ends: unmet throughout
+    double root_lo = lo, root_hi = hi;
+    if (at_hi != 0) tighten(k, &root_lo, &root_hi);
+    else root_lo = hi;  // the root is hi itself
+    // The earliest of the roots: [min lo, min hi] encloses it and, on tightest pairs and exact
+    // roots of one grid of doubles, is again the tightest.
+    first_lo = std::min(first_lo, root_lo);
+    first_hi = std::min(first_hi, root_hi);
   }
-  const int at_hi = fine_sign(k, hi);
-  if (at_hi == -c) return PieceVerdict::excluded;  // unmet at both ends: unmet throughout
-  if (at_hi != 0) tighten(k, &lo, &hi);
-  else lo = hi;  // the root is hi itself
-  *out = contact(lo, hi, exact_used_);
+  if (first_hi == INFINITY) return PieceVerdict::excluded;  // no condition met on T
+  *out = contact(first_lo, first_hi, exact_used_);
   return PieceVerdict::contact;
 }
 
@@ -253,17 +388,15 @@ void Search<Separation>::tighten(int k, double* lo, double* hi) {
   bool unknown = false;
   for (int n = 0; n < 12 && !toi_final(*lo, *hi); ++n) {
     if (!(t > *lo && t < *hi) && !predicates::middle_double(*lo, *hi, &t)) break;
-    Jet jets[kCount];
-    Positions<Jet> x = position_jets(paths_, Interval(t));
-    region_values<Jet>(x, Jet{delta2_, Interval(0.0)}, jets, k);
-    const CertifiedSign s = certified_sign(jets[k].v);
+    const Jet jet = jet_of(k, position_jets(paths_, Interval(t)));
+    const CertifiedSign s = certified_sign(jet.v);
     if (s == CertifiedSign::uncertain) {
       unknown = true;
       break;
     }
     classify(t, static_cast<int>(s));
-    const double v = jets[k].v.inf() / 2 + jets[k].v.sup() / 2;
-    const double d = jets[k].d.inf() / 2 + jets[k].d.sup() / 2;
+    const double v = jet.v.inf() / 2 + jet.v.sup() / 2;
+    const double d = jet.d.inf() / 2 + jet.d.sup() / 2;
     t = t - v / d;  // a guess only: NaN or outside the bracket falls back to the middle
   }
   if (unknown && !toi_final(*lo, *hi)) {  // walk out of the band where intervals cannot tell
@@ -289,7 +422,9 @@ void Search<Separation>::tighten(int k, double* lo, double* hi) {
 
 template <template <class, class> class Separation>
 SeparationOutcome Search<Separation>::run() {
-  if (surely_within(values_over(Interval(0.0), rigid::positions_over(paths_, Interval(0.0)))))
+  const Boxes at_start = rigid::positions_over(paths_, Interval(0.0));
+  PieceValues start(*this, Interval(0.0), at_start, false);
+  if (surely_within(start))
     return contact(0.0, 0.0, false);
   struct Piece {
     double u0, u1;
@@ -303,12 +438,14 @@ SeparationOutcome Search<Separation>::run() {
     const Interval T = Interval(t_max_) * Interval(piece.u0, piece.u1);
     const Boxes x = rigid::positions_over(paths_, T);
     if (apart_by_more_than(x, paths_.first_side_count, delta_)) continue;
-    const Values v = values_over(T, x);
-    if (!possibly_within(v)) continue;
-    const int k = deciding_polynomial(v);
-    if (k >= 0) {
+    PieceValues v(*this, T, x, piece.depth >= 3);
+    // Within delta implies polynomial 0 <= 0 (the distance to the plane, or between the lines,
+    // is at most the distance to the triangle, or between the segments): one sign excludes.
+    if (certain_strict_sign(v[0]) > 0 || !possibly_within(v)) continue;
+    const std::uint32_t set = piece.depth >= 3 ? deciding_set(v) : 0;
+    if (set != 0) {
       SeparationOutcome out;
-      switch (decide_piece(k, T, &out)) {
+      switch (decide_piece(set, v, &out)) {
         case PieceVerdict::excluded: continue;
         case PieceVerdict::contact: return out;
         case PieceVerdict::undecided: break;
@@ -357,8 +494,8 @@ SeparationOutcome rigid_separation_filter(const DoubleRigidQuery& query, const C
     return r;
   }
   if (q.type == QueryType::vertex_face)
-    return Search<predicates::VertexFaceSeparation>(paths, delta, options, exact).run();
-  return Search<predicates::EdgeEdgeSeparation>(paths, delta, options, exact).run();
+    return Search<predicates::VertexFaceSeparation>(q, paths, delta, options, exact).run();
+  return Search<predicates::EdgeEdgeSeparation>(q, paths, delta, options, exact).run();
 }
 
 }  // namespace exactccd::filters

@@ -7,8 +7,9 @@
 
 #include "core/predicates/rigid_coplanarity.hpp"
 #include "core/predicates/rigid_paths.hpp"
-#include "core/predicates/separation.hpp"
+#include "core/predicates/rigid_separation.hpp"
 #include "exact/reference/rigid_ccd.hpp"
+#include "exact/arithmetic/dyadic.hpp"
 #include "exact/arithmetic/stack_dyadic.hpp"
 #include "filters/rigid_filter.hpp"
 
@@ -68,35 +69,16 @@ class RigidExactSignsAtDoubles final : public filters::RigidExactSigns {
   /// over the rationals: the positions' numerators and denominators at s, then the polynomial
   /// at those numbers. PROOF: proofs/min_separation.md#rigid-separation
   int region_sign_at(int k, double s) override {
-    using exact::Rational;
-    using Point = predicates::Vec3<predicates::FixedPoly<Rational, 0>>;
-    if (!paths_) paths_ = predicates::rigid_paths<Rational>(query_);
-    const Rational t(s);
-    const Rational w[2] = {predicates::evaluate(paths_->denominator[0], t),
-                           predicates::evaluate(paths_->denominator[1], t)};
-    Point y[4];
-    for (int i = 0; i < 4; ++i) {
-      const Rational& other = w[i < paths_->first_side_count ? 1 : 0];
-      const auto& X = paths_->numerator[i];
-      y[i] = {{{Rational(predicates::evaluate(X.x, t) * other)}},
-              {{Rational(predicates::evaluate(X.y, t) * other)}},
-              {{Rational(predicates::evaluate(X.z, t) * other)}}};
-    }
-    const Rational W = w[0] * w[1];
-    const Rational delta2 = Rational(delta_) * Rational(delta_) * W * W;
-    int sign = 0;
-    auto read = [&sign](const auto& g) { sign = sgn(g.c[0]); };
-    if (query_.type == QueryType::vertex_face)
-      predicates::vertex_face_separation(y[0], y[1], y[2], y[3], delta2).for_each_polynomial(read, k);
-    else
-      predicates::edge_edge_separation(y[0], y[1], y[2], y[3], delta2).for_each_polynomial(read, k);
-    return sign;
+    if (!paths_) paths_ = predicates::rigid_paths<exact::Dyadic>(query_);
+    return predicates::rigid_region_value(*paths_, query_.type, exact::Dyadic(delta_), k,
+                                          exact::Dyadic(s))
+        .sign();
   }
 
  private:
   const predicates::DoubleRigidQuery& query_;
   const double delta_;
-  std::optional<predicates::RigidPaths<exact::Rational>> paths_;
+  std::optional<predicates::RigidPaths<exact::Dyadic>> paths_;
   predicates::FixedPoly<exact::StackDyadic, 5> dyadic_;
   bool dyadic_ready_ = false;
   std::optional<exact::Polynomial> rational_;

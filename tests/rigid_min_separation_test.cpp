@@ -15,6 +15,7 @@
 #include <string>
 
 #include "corpus/rigid_queries.hpp"
+#include "exact/arithmetic/dyadic.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/rigid.hpp"
 #include "test_scale.hpp"
@@ -262,6 +263,27 @@ TEST(RigidMinSeparation, CoarseWidthEnclosesTheTightestPair) {
     EXPECT_LE(mpq_class(f.toi_hi) - mpq_class(f.toi_lo), mpq_class(0x1p-12)) << i;
   }
   EXPECT_GT(contacts, 0);
+}
+
+/// The exact dyadic type of the exact signs at doubles: ring expressions of doubles of any
+/// exponents, signed as over the rationals (a and b may be one object).
+TEST(RigidMinSeparation, DyadicRingOperationsAreExact) {
+  std::mt19937_64 rng(test::test_seed("RigidMinSeparation.Dyadic"));
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-1000, 1000);
+  auto draw = [&] { return std::ldexp(mantissa(rng), rng() % 3 ? exponent(rng) % 60 : exponent(rng)); };
+  for (int i = 0; i < 2000; ++i) {
+    const double a = draw(), b = draw(), c = draw(), d = draw();
+    const exact::Dyadic x = exact::Dyadic(a) * exact::Dyadic(b) - exact::Dyadic(c) * exact::Dyadic(d) +
+                            exact::Dyadic(c);
+    const mpq_class r = mpq_class(a) * mpq_class(b) - mpq_class(c) * mpq_class(d) + mpq_class(c);
+    ASSERT_EQ(x.sign(), sgn(r)) << a << " " << b << " " << c << " " << d;
+    const exact::Dyadic y(a);
+    EXPECT_EQ((y - y).sign(), 0);
+    EXPECT_EQ((y + y).sign(), a > 0 ? 1 : (a < 0 ? -1 : 0));
+    EXPECT_EQ((-(y * y)).sign(), a != 0 ? -1 : 0);
+  }
+  EXPECT_EQ((exact::Dyadic(0x1p-1074) - exact::Dyadic(0x1p1023) + exact::Dyadic(0x1p1023)).sign(), 1);
 }
 
 TEST(RigidMinSeparation, BadDeltaIsRefused) {
