@@ -179,7 +179,7 @@ const BracketSet& random_cubic_brackets() {
 
 /// Records the brackets the default pipeline hands to bisect_root on the sample queries:
 /// inside the cubic filter (an undecided root) and after it (toi_final false).
-class RecordingExact final : public exactccd::filters::ExactAtDoubles {
+class RecordingExact final : public exactccd::filters::ContactExactStage {
  public:
   RecordingExact(const IntegerQuery& q, std::vector<std::pair<double, double>>& calls)
       : q_(q), calls_(calls) {}

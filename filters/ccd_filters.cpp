@@ -183,11 +183,11 @@ FilterOutcome no_contact() {
   return none;
 }
 
-/// The coplanarity cubic from its exact coefficients (ExactAtDoubles, whose exact cubic the
+/// The coplanarity cubic from its exact coefficients (ContactExactStage, whose exact cubic the
 /// exact path reuses), scaled by a power of two and enclosed in intervals of one ulp (a point
 /// where exact): a positive multiple of the cubic, with its roots and signs.
 /// PROOF: proofs/filters.md#exact-cubic-retry
-predicates::FixedPoly<Interval, 3> exact_cubic(ExactAtDoubles& exact) {
+predicates::FixedPoly<Interval, 3> exact_cubic(ContactExactStage& exact) {
   double lo[4], hi[4];
   exact.cubic_coefficient_bounds(lo, hi);
   predicates::FixedPoly<Interval, 3> cubic;
@@ -201,7 +201,7 @@ predicates::FixedPoly<Interval, 3> exact_cubic(ExactAtDoubles& exact) {
 template <class Inclusion>
 FilterOutcome cubic_filter_then_exact_cubic(const predicates::FixedPoly<Interval, 3>& cubic,
                                             const CcdOptions& options, const Inclusion& inclusion,
-                                            ExactAtDoubles& exact) {
+                                            ContactExactStage& exact) {
   const FilterOutcome f =
       cubic_filter(cubic, options.t_max, options.toi_width, inclusion, exact, true);
   if (!f.roots_unresolved) return f;
@@ -213,7 +213,7 @@ FilterOutcome cubic_filter_then_exact_cubic(const predicates::FixedPoly<Interval
 }  // namespace
 
 FilterOutcome vertex_face_ccd_filter(const VertexFaceQuery& q, const CcdOptions& options,
-                                 ExactAtDoubles& exact) {
+                                 ContactExactStage& exact) {
   // Semi-static stage (round to nearest, no guard needed): root-free on [0, 1] implies
   // root-free on [0, t_max] for every t_max <= 1.
   if (coplanarity_cubic_root_free_semistatic(q.b_t0 - q.a_t0, q.b_t1 - q.a_t1, q.c_t0 - q.a_t0,
@@ -234,7 +234,7 @@ FilterOutcome vertex_face_ccd_filter(const VertexFaceQuery& q, const CcdOptions&
 }
 
 FilterOutcome edge_edge_ccd_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
-                               ExactAtDoubles& exact) {
+                               ContactExactStage& exact) {
   if (coplanarity_cubic_root_free_semistatic(q.ea1_t0 - q.ea0_t0, q.ea1_t1 - q.ea0_t1,
                                              q.eb0_t0 - q.ea0_t0, q.eb0_t1 - q.ea0_t1,
                                              q.eb1_t0 - q.ea0_t0, q.eb1_t1 - q.ea0_t1))

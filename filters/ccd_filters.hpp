@@ -14,8 +14,8 @@ bool edge_edge_ccd_culling(const EdgeEdgeQuery& q);
 /// The semi-static and interval cubic filters on finite input; options already validated.
 /// `exact` is consulted only where the interval tests cannot decide.
 FilterOutcome vertex_face_ccd_filter(const VertexFaceQuery& q, const CcdOptions& options,
-                                 ExactAtDoubles& exact);
+                                 ContactExactStage& exact);
 FilterOutcome edge_edge_ccd_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
-                               ExactAtDoubles& exact);
+                               ContactExactStage& exact);
 
 }  // namespace exactccd::filters

@@ -8,10 +8,13 @@
 #include <cstdint>
 #include <utility>
 
+#include "core/predicates/contact_exact_stage.hpp"
 #include "core/predicates/motion.hpp"
 #include "filters/certified_numbers.hpp"
 
 namespace exactccd::filters {
+
+using predicates::ContactExactStage;
 
 struct FilterOutcome {
   enum class Verdict : std::uint8_t { no_contact, contact, uncertain };
@@ -22,33 +25,11 @@ struct FilterOutcome {
   double toi_lo = 0.0, toi_hi = 0.0;
   /// The bracket meets the requested width (the tightest pair of doubles for width 0).
   bool toi_final = false;
-  /// Exact answers at double times (ExactAtDoubles) were consulted.
+  /// Exact answers at double times (ContactExactStage) were consulted.
   bool exact_used = false;
   /// Uncertain because subdivision could not isolate the cubic's roots (its interval
   /// coefficients too wide, or a multiple root): a tighter enclosure of the cubic may decide.
   bool roots_unresolved = false;
-};
-
-/// Exact answers at double times, consulted only where the interval tests cannot decide
-/// (the default path implements it with exact integer arithmetic, exact/stages/integer_query.hpp).
-/// Must not depend on the rounding mode.
-class ExactAtDoubles {
- public:
-  /// The exact sign of the coplanarity cubic at the double t in [0, t_max].
-  virtual int cubic_sign_at(double t) = 0;
-  /// Exact contact test at a double t where the cubic vanishes.
-  virtual bool contact_at(double t) = 0;
-  /// The tightest pair of doubles around the only, simple root of the cubic in [lo, hi]
-  /// (certain opposite non-zero signs at lo and hi); equal when the root is a double.
-  virtual std::pair<double, double> bisect_root(double lo, double hi) = 0;
-  /// Enclosures in doubles of the cubic's exact coefficients times one positive power of two
-  /// (lo[i] <= c_i 2^-s <= hi[i]): a positive multiple of the cubic, for the filter's retry
-  /// where its interval cubic is too wide. From the same exact cubic the other answers use, so
-  /// it is computed once per query. PROOF: proofs/filters.md#exact-cubic-retry
-  virtual void cubic_coefficient_bounds(double (&lo)[4], double (&hi)[4]) = 0;
-
- protected:
-  ~ExactAtDoubles() = default;
 };
 
 /// `Inclusion` provides, for a time interval T (an Interval inside [0, t_max]):
@@ -63,7 +44,7 @@ class ExactAtDoubles {
 template <class Inclusion>
 EXACTCCD_CERTIFIED
 FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
-                           double toi_width, const Inclusion& inclusion, ExactAtDoubles& exact,
+                           double toi_width, const Inclusion& inclusion, ContactExactStage& exact,
                            bool tighter_cubic_available = false);
 
 /// True when all four Bernstein coefficients of the cubic on [0, t_max] are certainly

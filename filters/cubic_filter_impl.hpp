@@ -257,7 +257,7 @@ struct EndSign {
 /// PROOF: proofs/filters.md#inclusion-over-an-interval
 template <class Inclusion>
 EXACTCCD_CERTIFIED bool contact_at_coplanar_double(const Inclusion& inclusion, double t,
-                                                   ExactAtDoubles& exact) {
+                                                   ContactExactStage& exact) {
   const Interval at(t);
   if (inclusion.excluded(at)) return false;
   if (inclusion.certainly_included(at)) return true;
@@ -269,7 +269,7 @@ EXACTCCD_CERTIFIED bool contact_at_coplanar_double(const Inclusion& inclusion, d
 template <class Inclusion>
 EXACTCCD_CERTIFIED
 FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
-                           double toi_width, const Inclusion& inclusion, ExactAtDoubles& exact,
+                           double toi_width, const Inclusion& inclusion, ContactExactStage& exact,
                            bool tighter_cubic_available) {
   using detail::kMaxSubdivisionDepth;
   FilterOutcome out;  // uncertain until decided

@@ -199,7 +199,7 @@ enum class Side : std::uint8_t { below, at, above, unknown };
 class RootSearch {
  public:
   RootSearch(const Quintic& g, const DoubleRigidQuery& query, const IntervalPaths& paths,
-             const CcdOptions& options, RigidExactSigns& exact)
+             const CcdOptions& options, RigidExactStage& exact)
       : g_(g), guide_(g), paths_(paths), type_(query.type), t_max_(options.t_max),
         toi_width_(options.toi_width), exact_(exact)
 #if EXACTCCD_X87_INTERVAL
@@ -285,7 +285,7 @@ class RootSearch {
   const IntervalPaths& paths_;
   const QueryType type_;
   const double t_max_, toi_width_;
-  RigidExactSigns& exact_;
+  RigidExactStage& exact_;
 #if EXACTCCD_X87_INTERVAL
   ExtendedSigns extended_;
 #endif
@@ -482,7 +482,7 @@ std::optional<CcdResult> RootSearch::run() {
 }  // namespace
 
 std::optional<CcdResult> rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
-                                          RigidExactSigns& exact) {
+                                          RigidExactStage& exact) {
   const RoundingGuard upward;
   const int k = rigid::normalising_exponent(query);
   const DoubleRigidQuery q = k == 0 ? query : rigid::scaled(query, k);

@@ -10,6 +10,7 @@
 #include <array>
 #include <optional>
 
+#include "core/predicates/rigid_exact_stage.hpp"
 #include "core/predicates/rigid_query.hpp"
 #include "exactccd/types.hpp"
 
@@ -18,21 +19,7 @@ namespace exactccd::filters {
 using predicates::DoubleRigidQuery;
 using predicates::DoubleSide;
 
-/// Exact signs at doubles of the query's polynomials, consulted only where interval signs are
-/// uncertain: the reduced coplanarity polynomial g (contact), or a region polynomial of the
-/// query's minimum separation (each, or any positive multiple of it). Must not depend on the
-/// rounding mode.
-class RigidExactSigns {
- public:
-  /// The exact sign (-1, 0, +1) of g at the double s in [0, t_max].
-  virtual int coplanarity_sign_at(double s) = 0;
-  /// The exact sign of region polynomial k (core/predicates/separation.hpp's numbering) of the
-  /// query's separation with delta = its min_separation, at the double s in [0, t_max].
-  virtual int region_sign_at(int k, double s) = 0;
-
- protected:
-  ~RigidExactSigns() = default;
-};
+using predicates::RigidExactStage;
 
 /// The verdict and TOI of the query when the filters decide it (Stage::culling, filter,
 /// filter_exact_toi or exact_at_double), equal to the exact path's for toi_width = 0 (the
@@ -40,6 +27,6 @@ class RigidExactSigns {
 /// exact path decides). Sets and restores its own rounding mode; allocates nothing itself
 /// (`exact` may).
 std::optional<CcdResult> rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
-                                          RigidExactSigns& exact);
+                                          RigidExactStage& exact);
 
 }  // namespace exactccd::filters

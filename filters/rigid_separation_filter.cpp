@@ -101,7 +101,7 @@ class Search {
 
  public:
   Search(const DoubleRigidQuery& query, const IntervalPaths& paths, double delta,
-         const CcdOptions& options, RigidExactSigns& exact)
+         const CcdOptions& options, RigidExactStage& exact)
       : query_(query), paths_(paths), delta_(delta), delta2_(Interval(delta) * Interval(delta)),
         t_max_(options.t_max), toi_width_(options.toi_width), exact_(exact) {}
 
@@ -334,7 +334,7 @@ class Search {
   const double delta_;
   const Interval delta2_;
   const double t_max_, toi_width_;
-  RigidExactSigns& exact_;
+  RigidExactStage& exact_;
   bool exact_used_ = false;
 #if EXACTCCD_X87_INTERVAL
   std::optional<predicates::RigidPaths<X87Interval>> extended_paths_;
@@ -476,7 +476,7 @@ bool scaled_exactly(double delta, int k, double* out) {
 }  // namespace
 
 SeparationOutcome rigid_separation_filter(const DoubleRigidQuery& query, const CcdOptions& options,
-                                          RigidExactSigns& exact) {
+                                          RigidExactStage& exact) {
   const RoundingGuard upward;
   int k = rigid::normalising_exponent(query);
   double delta = options.min_separation;

@@ -17,6 +17,6 @@ namespace exactccd::filters {
 /// region polynomials at doubles. Sets and restores its own rounding mode; no heap allocation
 /// but the exact stage's.
 SeparationOutcome rigid_separation_filter(const DoubleRigidQuery& query, const CcdOptions& options,
-                                          RigidExactSigns& exact);
+                                          RigidExactStage& exact);
 
 }  // namespace exactccd::filters

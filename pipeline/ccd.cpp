@@ -18,6 +18,7 @@
 #include "core/float_only/tolerance_ccd.hpp"
 #include "exact/stages/separation_exact_signs.hpp"
 #include "filters/separation_filter.hpp"
+#include "exact/stages/contact_exact_stage.hpp"
 #include "exact/stages/integer_query.hpp"
 #include "filters/ccd_filters.hpp"
 #include "exactccd/rational_query.hpp"
@@ -127,41 +128,12 @@ CcdResult exact_path_of(const EdgeEdgeQuery& q, const CcdOptions& options,
   return exact::edge_edge_ccd_exact(to_rational(q), options);
 }
 
-/// Exact answers at double times in integer arithmetic (exact/stages/integer_query.hpp), built
-/// lazily (queries the float stages decide never build it): fixed-size stack integers within
-/// the proven bounds, GMP beyond them.
-/// PROOF: proofs/filters.md#exact-at-double-times
-/// PROOF: proofs/filters.md#fixed-size-exact-at-doubles
-template <class Query>
-class LazyExactAtDoubles final : public filters::ExactAtDoubles {
- public:
-  explicit LazyExactAtDoubles(const Query& q) : query_(q) {}
-  int cubic_sign_at(double t) override { return integer().cubic_sign_at(t); }
-  bool contact_at(double t) override { return integer().contact_at(t); }
-  std::pair<double, double> bisect_root(double lo, double hi) override {
-    return integer().bisect_root(lo, hi, 0.0);
-  }
-  void cubic_coefficient_bounds(double (&lo)[4], double (&hi)[4]) override {
-    integer().scaled_coefficient_bounds(lo, hi);
-  }
-  const exact::IntegerQuery& integer() {
-    if (!integer_) integer_.emplace(query_);
-    return *integer_;
-  }
-  /// The integer query if a stage built it, else nullptr (the exact path then reuses it).
-  const exact::IntegerQuery* built() const { return integer_ ? &*integer_ : nullptr; }
-
- private:
-  const Query& query_;
-  std::optional<exact::IntegerQuery> integer_;
-};
-
 /// The default pipeline after culling: filters, exact path.
 template <class Query, class Filter, class Exact>
 CcdResult filters_then_exact(const Query& q, const CcdOptions& options, Filter filter,
                              Exact exact_path) {
   CcdResult r;
-  LazyExactAtDoubles<Query> exact_at_doubles(q);
+  exact::ContactExactStageAtDoubles<Query> exact_at_doubles(q);
   const filters::FilterOutcome f = filter(q, options, exact_at_doubles);
   switch (f.verdict) {
     case filters::FilterOutcome::Verdict::no_contact:

@@ -18,7 +18,7 @@
 #include "pipeline/ccd_options_check.hpp"
 #include "exact/reference/rigid_ccd.hpp"
 #include "core/predicates/interval.hpp"
-#include "pipeline/rigid_exact_signs.hpp"
+#include "exact/stages/rigid_exact_stage.hpp"
 #include "filters/rigid_filter.hpp"
 #include "filters/rigid_separation_filter.hpp"
 #include "pipeline/separation_outcome.hpp"
@@ -178,11 +178,11 @@ CcdResult rigid_min_separation_ccd(const predicates::DoubleRigidQuery& q,
                                    const CcdOptions& options) {
   const exact::Rational delta(options.min_separation);
   auto exact_path = [&](const exact::SeparationHint& hint) {
-    return exact::rigid_min_separation_exact(rational_query(q), delta, options, hint);
+    return exact::rigid_min_separation_exact(exact::rational_query(q), delta, options, hint);
   };
   if (options.mode == Mode::exact) return exact_path({});
-  RigidExactSignsAtDoubles exact(q, options.min_separation);
-  return separation_result(filters::rigid_separation_filter(q, options, exact), exact_path);
+  exact::RigidExactStageAtDoubles exact_stage(q, options.min_separation);
+  return separation_result(filters::rigid_separation_filter(q, options, exact_stage), exact_path);
 }
 
 template <class Query>
@@ -194,11 +194,11 @@ RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
     return with_time(float_only::rigid_ccd(q, options), q);
   if (options.min_separation > 0) return with_time(rigid_min_separation_ccd(q, options), q);
   if (options.mode == Mode::filtered) {
-    RigidExactSignsAtDoubles exact(q);
-    if (std::optional<CcdResult> r = filters::rigid_ccd_filter(q, options, exact))
+    exact::RigidExactStageAtDoubles exact_stage(q);
+    if (std::optional<CcdResult> r = filters::rigid_ccd_filter(q, options, exact_stage))
       return with_time(*r, q);
   }
-  return with_time(exact::rigid_ccd_exact(rational_query(q), options), q);
+  return with_time(exact::rigid_ccd_exact(exact::rational_query(q), options), q);
 }
 
 }  // namespace

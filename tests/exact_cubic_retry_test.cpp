@@ -158,7 +158,7 @@ struct NeverDecides {
   bool certainly_included(const predicates::Interval&) const { return false; }
 };
 
-struct IntegerOracle final : filters::ExactAtDoubles {
+struct IntegerOracle final : filters::ContactExactStage {
   explicit IntegerOracle(const IntegerQuery& q) : q_(q) {}
   int cubic_sign_at(double t) override { return q_.cubic_sign_at(t); }
   bool contact_at(double t) override { return q_.contact_at(t); }

@@ -180,7 +180,7 @@ TEST(CubicFilter, ContactBracketHoldsExactly) {
     CcdOptions opts;
     // Exact answers at double times that must never be needed: vertex heights are random, so
     // the cubic never vanishes at 0 or 1 and the interval tests decide alone or give up.
-    struct Forbidden final : filters::ExactAtDoubles {
+    struct Forbidden final : filters::ContactExactStage {
       int cubic_sign_at(double) override { throw std::logic_error("exact consulted"); }
       bool contact_at(double) override { throw std::logic_error("exact consulted"); }
       std::pair<double, double> bisect_root(double, double) override {

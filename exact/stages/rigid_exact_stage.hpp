@@ -1,6 +1,7 @@
-// The exact side of the rigid filter: a query's values over the rationals, and the exact signs
-// of its reduced coplanarity polynomial at doubles that the filter consults where its intervals
-// cannot tell (filters::RigidExactSigns). PROOF: proofs/rigid_ccd.md#toi-tightening
+// The exact stage of the rigid filters (predicates::RigidExactStage): a query's values over the
+// rationals, and the exact signs at doubles of its reduced coplanarity polynomial and of its
+// minimum separation's region polynomials, which the filters consult where their intervals
+// cannot tell. PROOF: proofs/rigid_ccd.md#toi-tightening
 #pragma once
 
 #include <optional>
@@ -11,9 +12,10 @@
 #include "exact/reference/rigid_ccd.hpp"
 #include "exact/arithmetic/dyadic.hpp"
 #include "exact/arithmetic/stack_dyadic.hpp"
-#include "filters/rigid_filter.hpp"
+#include "core/predicates/rigid_exact_stage.hpp"
+#include "core/predicates/rigid_query.hpp"
 
-namespace exactccd {
+namespace exactccd::exact {
 
 /// The same query over the rationals (the same values), for the exact path.
 inline exact::RationalRigidQuery rational_query(const predicates::DoubleRigidQuery& d) {
@@ -43,10 +45,10 @@ inline exact::RationalRigidQuery rational_query(const predicates::DoubleRigidQue
 /// (exact::StackDyadic: no allocation, no gcd), formed on the first call, and Horner's rule at
 /// the double, exactly; over the rationals when a number would need more than the stack
 /// holds (extreme magnitudes).
-class RigidExactSignsAtDoubles final : public filters::RigidExactSigns {
+class RigidExactStageAtDoubles final : public predicates::RigidExactStage {
  public:
   /// delta: the query's minimum separation (0 for contact).
-  explicit RigidExactSignsAtDoubles(const predicates::DoubleRigidQuery& q, double delta = 0.0)
+  explicit RigidExactStageAtDoubles(const predicates::DoubleRigidQuery& q, double delta = 0.0)
       : query_(q), delta_(delta) {}
 
   int coplanarity_sign_at(double s) override {
@@ -84,4 +86,4 @@ class RigidExactSignsAtDoubles final : public filters::RigidExactSigns {
   std::optional<exact::Polynomial> rational_;
 };
 
-}  // namespace exactccd
+}  // namespace exactccd::exact
