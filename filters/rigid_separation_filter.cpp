@@ -318,6 +318,59 @@ class Search {
   }
   enum class PieceVerdict : std::uint8_t { excluded, contact, undecided };
   PieceVerdict decide_piece(std::uint32_t set, PieceValues& v, SeparationOutcome* out);
+  bool advance(double* start, double* last_step) const;
+  static constexpr int kMaxAdvances = 32;
+  static constexpr double kSlowAdvance = 0x1p-8;  // of t_max: then the pieces take over
+  static constexpr double kFirstWindow = 0x1p-6;  // of t_max: the least first window
+  static constexpr double kNarrow = 0x1p-3;       // of t_max: pieces worth the Taylor form
+
+  /// A lower bound of the distance between the primitives at an instant whose positions' boxes
+  /// are x: the larger of the gap between the two sides' boxes and the distance to the
+  /// triangle's plane (vertex-face) or between the segments' lines (edge-edge), each at most
+  /// the distance between the primitives. 0 when nothing is certain.
+  double distance_lower_bound(const Boxes& x) const {
+    Interval gap2(0.0);
+    for (int k = 0; k < 3; ++k) {
+      double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+      for (int i = 0; i < 4; ++i) {
+        const int side = i < paths_.first_side_count ? 0 : 1;
+        if (!(x[i][k].inf() <= x[i][k].sup())) return 0.0;  // NaN
+        lo[side] = std::min(lo[side], x[i][k].inf());
+        hi[side] = std::max(hi[side], x[i][k].sup());
+      }
+      const double g = std::max((Interval(lo[1]) - Interval(hi[0])).inf(),
+                                (Interval(lo[0]) - Interval(hi[1])).inf());
+      if (g > 0) gap2 = gap2 + Interval(g) * Interval(g);
+    }
+    double bound = CGAL::sqrt(Interval(gap2.inf())).inf();
+    const Vec3<Interval> n = paths_.first_side_count == 1
+                                 ? predicates::cross(x[2] - x[1], x[3] - x[1])
+                                 : predicates::cross(x[1] - x[0], x[3] - x[2]);
+    const Interval along = paths_.first_side_count == 1 ? predicates::dot(n, x[0] - x[1])
+                                                        : predicates::dot(n, x[0] - x[2]);
+    const Interval n2 = predicates::dot(n, n);
+    if (n2.inf() > 0) {
+      const double a = std::max(along.inf(), (-along).inf());  // |along| from below
+      if (a > 0) bound = std::max(bound, (Interval(a) / CGAL::sqrt(n2)).inf());
+    }
+    return bound;
+  }
+  /// An upper bound over S of the fastest vertex of side 0 plus the fastest of side 1.
+  double speed_bound(const Interval& S) const {
+    const Positions<Jet> x = position_jets(paths_, S);
+    double fastest[2] = {0.0, 0.0};
+    for (int i = 0; i < 4; ++i) {
+      Interval v2(0.0);
+      for (int k = 0; k < 3; ++k) {
+        const double m = std::max(std::fabs(x[i][k].d.inf()), std::fabs(x[i][k].d.sup()));
+        v2 = v2 + Interval(m) * Interval(m);
+      }
+      const double speed = CGAL::sqrt(v2).sup();
+      double& f = fastest[i < paths_.first_side_count ? 0 : 1];
+      f = std::max(f, speed);
+    }
+    return (Interval(fastest[0]) + Interval(fastest[1])).sup();
+  }
   void tighten(int k, double* lo, double* hi);
 
   static SeparationOutcome contact(double lo, double hi, bool exact_used) {
@@ -422,44 +475,61 @@ void Search<Separation>::tighten(int k, double* lo, double* hi) {
 
 template <template <class, class> class Separation>
 SeparationOutcome Search<Separation>::run() {
-  const Boxes at_start = rigid::positions_over(paths_, Interval(0.0));
-  PieceValues start(*this, Interval(0.0), at_start, false);
-  if (surely_within(start))
+  const Boxes at_zero = rigid::positions_over(paths_, Interval(0.0));
+  PieceValues at_start(*this, Interval(0.0), at_zero, false);
+  if (surely_within(at_start))
     return contact(0.0, 0.0, false);
+  // Conservative advancement clears [0, start]; the pieces then search [start, t_max] window by
+  // window, each twice as long as the one before, from a few times the last advance: the
+  // contact is usually close to start, and a window its size needs no deep descent to it.
+  double start = 0.0, last_step = 0.0;
+  if (advance(&start, &last_step)) {
+    SeparationOutcome r;
+    r.verdict = SeparationVerdict::never_within;
+    return r;
+  }
   struct Piece {
     double u0, u1;
     int depth;
   };
-  Piece stack[kMaxDepth + 2];
-  int top = 0, pieces = 0;
-  stack[top++] = Piece{0.0, 1.0, 0};
-  while (top > 0) {
-    const Piece piece = stack[--top];
-    const Interval T = Interval(t_max_) * Interval(piece.u0, piece.u1);
-    const Boxes x = rigid::positions_over(paths_, T);
-    if (apart_by_more_than(x, paths_.first_side_count, delta_)) continue;
-    PieceValues v(*this, T, x, piece.depth >= 3);
-    // Within delta implies polynomial 0 <= 0 (the distance to the plane, or between the lines,
-    // is at most the distance to the triangle, or between the segments): one sign excludes.
-    if (certain_strict_sign(v[0]) > 0 || !possibly_within(v)) continue;
-    const std::uint32_t set = piece.depth >= 3 ? deciding_set(v) : 0;
-    if (set != 0) {
-      SeparationOutcome out;
-      switch (decide_piece(set, v, &out)) {
-        case PieceVerdict::excluded: continue;
-        case PieceVerdict::contact: return out;
-        case PieceVerdict::undecided: break;
+  int pieces = 0;
+  double width = std::max(8 * last_step, kFirstWindow * t_max_);
+  for (double from = start; from < t_max_; width *= 2) {
+    const double to = width < t_max_ - from ? (Interval(from) + Interval(width)).sup() : t_max_;
+    const Interval span = Interval(to) - Interval(from);
+    Piece stack[kMaxDepth + 2];
+    int top = 0;
+    stack[top++] = Piece{0.0, 1.0, 0};
+    while (top > 0) {
+      const Piece piece = stack[--top];
+      const Interval T = Interval(from) + span * Interval(piece.u0, piece.u1);
+      const Boxes x = rigid::positions_over(paths_, T);
+      if (apart_by_more_than(x, paths_.first_side_count, delta_)) continue;
+      const bool narrow = (T.sup() - T.inf()) <= kNarrow * t_max_;
+      PieceValues v(*this, T, x, narrow);
+      // Within delta implies polynomial 0 <= 0 (the distance to the plane, or between the
+      // lines, is at most the distance to the triangle, or between the segments).
+      if (certain_strict_sign(v[0]) > 0 || !possibly_within(v)) continue;
+      const std::uint32_t set = narrow ? deciding_set(v) : 0;
+      if (set != 0) {
+        SeparationOutcome out;
+        switch (decide_piece(set, v, &out)) {
+          case PieceVerdict::excluded: continue;
+          case PieceVerdict::contact: return out;
+          case PieceVerdict::undecided: break;
+        }
       }
+      if (piece.depth == kMaxDepth || ++pieces > kMaxPieces) {
+        SeparationOutcome r;  // uncertain: the exact path searches from the piece on
+        r.cleared_until = T.inf();
+        r.exact_used = exact_used_;
+        return r;
+      }
+      const double mid = (piece.u0 + piece.u1) / 2;  // dyadic: exact
+      stack[top++] = Piece{mid, piece.u1, piece.depth + 1};
+      stack[top++] = Piece{piece.u0, mid, piece.depth + 1};
     }
-    if (piece.depth == kMaxDepth || ++pieces > kMaxPieces) {
-      SeparationOutcome r;  // uncertain: the exact path searches from the piece on
-      r.cleared_until = T.inf();
-      r.exact_used = exact_used_;
-      return r;
-    }
-    const double mid = (piece.u0 + piece.u1) / 2;  // dyadic: exact
-    stack[top++] = Piece{mid, piece.u1, piece.depth + 1};
-    stack[top++] = Piece{piece.u0, mid, piece.depth + 1};
+    from = to;  // the window is cleared, its end included (closed pieces)
   }
   SeparationOutcome r;
   r.verdict = SeparationVerdict::never_within;
@@ -467,6 +537,32 @@ SeparationOutcome Search<Separation>::run() {
   return r;
 }
 
+/// Conservative advancement: at an instant s not within delta by a certified distance lower
+/// bound L > delta, no vertex moves faster than V over [s, t_max] (V bounds the sum of both
+/// sides' fastest vertex, and the distance between the primitives changes no faster), so
+/// nothing comes within delta before s + (L - delta) / V. Moves *start to the last instant
+/// verified so (never within on [0, *start]); true when that clears all of [0, t_max].
+template <template <class, class> class Separation>
+bool Search<Separation>::advance(double* start, double* last_step) const {
+  double s = 0.0;
+  for (int step = 0; step < kMaxAdvances; ++step) {
+    const double L = distance_lower_bound(rigid::positions_over(paths_, Interval(s)));
+    if (!(L > delta_)) return false;
+    *start = s;
+    if (s == t_max_) return true;
+    const double V = speed_bound(Interval(s, t_max_));
+    if (!(V < INFINITY)) return false;
+    if (V == 0) return true;  // nothing moves: the distance stays above delta
+    const double length = ((Interval(L) - Interval(delta_)) / Interval(V)).inf();
+    const double next = (Interval(s) + Interval(length)).inf();  // rounded down: inside the step
+    if (next > t_max_) return true;
+    // Slow progress: leave the rest to the pieces.
+    *last_step = (Interval(next) - Interval(s)).sup();
+    if (!(next > s) || *last_step < kSlowAdvance * t_max_) return false;
+    s = next;
+  }
+  return false;
+}
 /// delta scaled with the query by 2^k, when that loses no bit (else the query stays unscaled).
 bool scaled_exactly(double delta, int k, double* out) {
   *out = std::ldexp(delta, k);

@@ -162,9 +162,9 @@ TEST(RigidMinSeparation, TranslationsEqualTheLinearPipeline) {
   // Coordinates on a grid of 2^-12: every sum below is exact, so the linear query's ends are
   // the translates themselves.
   std::uniform_int_distribution<int> grid(-4096, 4096);
-  auto point = [&] { return Vector3d(grid(rng), grid(rng), grid(rng)) * 0x1p-12; };
+  auto point = [&]() -> Vector3d { return Vector3d(grid(rng), grid(rng), grid(rng)) * 0x1p-12; };
   const int n = static_cast<int>(test::at_least(test::scaled_count(60), 20));
-  int contacts = 0;
+  int contacts = 0, decided_by_search = 0;
   for (int i = 0; i < n; ++i) {
     const double delta = i % 2 ? 0.1 : 0.01;
     RigidVertexFaceQuery r;
@@ -174,7 +174,7 @@ TEST(RigidMinSeparation, TranslationsEqualTheLinearPipeline) {
     r.c = 0.5 * point();
     RigidMotion m;
     m.pivot = point();
-    m.translation = 2.0 * point();
+    m.translation = 2.0 * (r.a + r.b - 2.0 * r.p) + 0.25 * point();  // through the triangle, mostly
     r.vertex = SideMotion::of(m);
     std::array<Vector3d, 3> face_end;
     if (i % 3 == 0) {
@@ -193,12 +193,15 @@ TEST(RigidMinSeparation, TranslationsEqualTheLinearPipeline) {
     const CcdResult linear = vertex_face_ccd(l, with(Mode::filtered, delta));
     const CcdResult rigid = vertex_face_ccd(r, with(Mode::filtered, delta)).ccd;
     contacts += linear.collides;
+    decided_by_search += linear.collides && linear.toi_lo > 0;
     ASSERT_TRUE(test::same_answer(linear, rigid))
         << "query " << i << ": linear " << linear.collides << " [" << linear.toi_lo << ", "
         << linear.toi_hi << "], rigid " << rigid.collides << " [" << rigid.toi_lo << ", "
         << rigid.toi_hi << "]";
   }
-  EXPECT_GT(contacts, 0);
+  std::printf("%d queries, %d contacts, %d after s = 0\n", n, contacts, decided_by_search);
+  EXPECT_GT(decided_by_search, 0);
+  EXPECT_LT(contacts, n);
 }
 
 /// A vertex on the unit circle about the z axis, turning by a quarter turn towards the wall
@@ -263,6 +266,65 @@ TEST(RigidMinSeparation, CoarseWidthEnclosesTheTightestPair) {
     EXPECT_LE(mpq_class(f.toi_hi) - mpq_class(f.toi_lo), mpq_class(0x1p-12)) << i;
   }
   EXPECT_GT(contacts, 0);
+}
+
+/// Degenerate and extreme pairs: a triangle collapsed to a segment or a point, parallel and
+/// collinear edges, nothing moving, huge and tiny scales, delta far below and far above the
+/// primitives' size: the default path (conservative advancement, pieces, tightening) equals the
+/// exact procedure.
+TEST(RigidMinSeparation, DegenerateAndExtremePairsEqualExact) {
+  std::mt19937_64 rng(test::test_seed("RigidMinSeparation.Degenerate"));
+  std::uniform_int_distribution<int> grid(-8, 8);
+  auto point = [&]() -> Vector3d { return Vector3d(grid(rng), grid(rng), grid(rng)) * 0.125; };
+  auto turning = [&](double angle) {
+    return SideMotion::of(RigidMotion::turn(point(), Vector3d(grid(rng), grid(rng), 1), angle,
+                                            point()));
+  };
+  int contacts = 0, queries = 0;
+  for (int i = 0; i < static_cast<int>(test::at_least(test::scaled_count(40), 16)); ++i) {
+    const double scale = std::ldexp(1.0, i % 4 == 0 ? 600 : (i % 4 == 1 ? -600 : 0));
+    for (const double delta_factor : {0x1p-40, 0x1p-4, 4.0}) {
+      RigidVertexFaceQuery vf;
+      vf.p = point();
+      vf.a = point();
+      vf.b = i % 3 == 0 ? vf.a : point();                        // a segment or a point
+      vf.c = i % 3 == 0 ? vf.a : (i % 3 == 1 ? Vector3d(2 * vf.b - vf.a) : point());  // collinear
+      vf.vertex = i % 5 == 0 ? SideMotion::of(RigidMotion{}) : turning(0.5 + 0.1 * (i % 7));
+      vf.face = i % 2 == 0 ? SideMotion::of(RigidMotion{}) : turning(-1.0);
+      RigidEdgeEdgeQuery ee;
+      ee.ea0 = point();
+      ee.ea1 = point();
+      const Vector3d shift = point();
+      ee.eb0 = i % 3 == 2 ? Vector3d(ee.ea0 + 0.25 * shift) : point();  // parallel
+      ee.eb1 = i % 3 == 2 ? Vector3d(ee.ea1 + 0.25 * shift) : point();
+      ee.edge_a = vf.vertex;
+      ee.edge_b = vf.face;
+      auto scaled = [scale](SideMotion m) {
+        m.rigid.pivot *= scale;
+        m.rigid.translation *= scale;
+        return m;
+      };
+      vf.p *= scale, vf.a *= scale, vf.b *= scale, vf.c *= scale;
+      vf.vertex = scaled(vf.vertex), vf.face = scaled(vf.face);
+      ee.ea0 *= scale, ee.ea1 *= scale, ee.eb0 *= scale, ee.eb1 *= scale;
+      ee.edge_a = scaled(ee.edge_a), ee.edge_b = scaled(ee.edge_b);
+      const double delta = delta_factor * scale;
+      for (int kind = 0; kind < 2; ++kind) {
+        const CcdResult e = kind == 0 ? vertex_face_ccd(vf, with(Mode::exact, delta)).ccd
+                                      : edge_edge_ccd(ee, with(Mode::exact, delta)).ccd;
+        const CcdResult f = kind == 0 ? vertex_face_ccd(vf, with(Mode::filtered, delta)).ccd
+                                      : edge_edge_ccd(ee, with(Mode::filtered, delta)).ccd;
+        ++queries;
+        contacts += e.collides;
+        ASSERT_TRUE(test::same_answer(e, f))
+            << (kind == 0 ? "vertex-face " : "edge-edge ") << i << " delta " << delta
+            << ": exact " << e.collides << " [" << e.toi_lo << ", " << e.toi_hi << "], filtered "
+            << f.collides << " [" << f.toi_lo << ", " << f.toi_hi << "]";
+      }
+    }
+  }
+  EXPECT_GT(contacts, queries / 5);
+  EXPECT_LT(contacts, queries);
 }
 
 /// The exact dyadic type of the exact signs at doubles: ring expressions of doubles of any
