@@ -70,6 +70,24 @@ void wall(double x_wall, Positions& x, Triangles& t) {
 /// lo <= q <= hi exactly.
 bool encloses(double lo, const mpq_class& q, double hi) { return mpq_class(lo) <= q && q <= mpq_class(hi); }
 
+/// The earliest contact of the cube turning past the wall at x = x_wall, from the library's
+/// Scene with minimum separation delta (0: contact).
+exactccd::EarliestContact library_cube_and_wall(double x_wall, double delta) {
+  Scene scene;
+  Positions x;
+  Triangles t_cube, t_wall;
+  cube(x, t_cube);
+  const MeshId body = scene.add_rigid_body(x, t_cube);
+  RigidMotion m;
+  m.cayley = Eigen::Vector3d(0, 0, -0.5);
+  scene.set_rigid_motion(body, m);
+  wall(x_wall, x, t_wall);
+  scene.add_static_mesh(x, t_wall);
+  exactccd::SceneOptions o;
+  o.min_separation = delta;
+  return scene.earliest_contact(o);
+}
+
 TEST_F(CliRigid, CubeTurnsIntoTheWallAtTwoThirds) {
   const RunResult r = run_bounded({"rigid", "--json", (kData / "cube_turns_into_wall.json").string()});
   ASSERT_EQ(r.status, 1) << r.err;
@@ -97,17 +115,7 @@ TEST_F(CliRigid, CubeTurnsIntoTheWallAtTwoThirds) {
   EXPECT_EQ(c["second"]["vertices"], json::array({0, 1, 2}));
 
   // The library's Scene on the same bodies gives the same contact.
-  Scene scene;
-  Positions x;
-  Triangles t_cube, t_wall;
-  cube(x, t_cube);
-  const MeshId body = scene.add_rigid_body(x, t_cube);
-  RigidMotion m;
-  m.cayley = Eigen::Vector3d(0, 0, -0.5);
-  scene.set_rigid_motion(body, m);
-  wall(7, x, t_wall);
-  scene.add_static_mesh(x, t_wall);
-  const exactccd::EarliestContact e = scene.earliest_contact();
+  const exactccd::EarliestContact e = library_cube_and_wall(7, 0.0);
   ASSERT_TRUE(e.collides);
   EXPECT_EQ(e.contact.toi_lo, lo);
   EXPECT_EQ(e.contact.toi_hi, hi);
@@ -268,24 +276,6 @@ TEST_F(CliRigid, FloatOnlyModeRunsTheUncertifiedTest) {
 
 // ---------------------------------------------------------------------------------------------
 // Minimum separation: --min-separation D, or "min_separation" in the file
-
-/// The earliest contact of the cube turning past the wall at x = x_wall, from the library's
-/// Scene with minimum separation delta.
-exactccd::EarliestContact library_cube_and_wall(double x_wall, double delta) {
-  Scene scene;
-  Positions x;
-  Triangles t_cube, t_wall;
-  cube(x, t_cube);
-  const MeshId body = scene.add_rigid_body(x, t_cube);
-  RigidMotion m;
-  m.cayley = Eigen::Vector3d(0, 0, -0.5);
-  scene.set_rigid_motion(body, m);
-  wall(x_wall, x, t_wall);
-  scene.add_static_mesh(x, t_wall);
-  exactccd::SceneOptions o;
-  o.min_separation = delta;
-  return scene.earliest_contact(o);
-}
 
 TEST_F(CliRigid, MinSeparationFindsTheCloseApproach) {
   // The turn clear of the wall passes it 0.0039 short (5 sqrt(2) = 7.0711 against 7.075):
