@@ -87,10 +87,10 @@ def value(x):
     return z3.RealVal(f"{x.numerator}/{x.denominator}") if isinstance(x, F) else x
 
 
-def shares_a_point(kind, points, motions, lo=F(0), hi=F(1), hi_strict=False):
-    """z3's answer: some s in [lo, hi] (or [lo, hi)) at which the primitives share a point."""
-    solver = z3.Solver()
-    solver.set("timeout", TIMEOUT_MS)
+def points_on_both(solver, kind, points, motions, lo=F(0), hi=F(1), hi_strict=False):
+    """A point of each primitive at a parameter s in [lo, hi] (or [lo, hi)), cleared of
+    denominators: (on_first, on_second, w0, w1) with the point of side i at on_i / w_i, the
+    parameters s, u, v declared and bounded in the solver."""
     s, u, v = z3.Reals("s u v")
     solver.add(s >= value(lo), s < value(hi) if hi_strict else s <= value(hi))
     first, second = (points[:1], points[1:]) if kind == "vf" else (points[:2], points[2:])
@@ -99,14 +99,23 @@ def shares_a_point(kind, points, motions, lo=F(0), hi=F(1), hi_strict=False):
     w0, w1 = motions[0].denominator(s), motions[1].denominator(s)
     if kind == "vf":
         solver.add(u >= 0, v >= 0, u + v <= 1)
-        on_face = [n1[0][k] + u * (n1[1][k] - n1[0][k]) + v * (n1[2][k] - n1[0][k])
-                   for k in range(3)]
-        solver.add(*[n0[0][k] * w1 == on_face[k] * w0 for k in range(3)])
+        on_first = n0[0]
+        on_second = [n1[0][k] + u * (n1[1][k] - n1[0][k]) + v * (n1[2][k] - n1[0][k])
+                     for k in range(3)]
     else:
         solver.add(u >= 0, u <= 1, v >= 0, v <= 1)
-        on_a = [n0[0][k] + u * (n0[1][k] - n0[0][k]) for k in range(3)]
-        on_b = [n1[0][k] + v * (n1[1][k] - n1[0][k]) for k in range(3)]
-        solver.add(*[on_a[k] * w1 == on_b[k] * w0 for k in range(3)])
+        on_first = [n0[0][k] + u * (n0[1][k] - n0[0][k]) for k in range(3)]
+        on_second = [n1[0][k] + v * (n1[1][k] - n1[0][k]) for k in range(3)]
+    return on_first, on_second, w0, w1
+
+
+def shares_a_point(kind, points, motions, lo=F(0), hi=F(1), hi_strict=False):
+    """z3's answer: some s in [lo, hi] (or [lo, hi)) at which the primitives share a point."""
+    solver = z3.Solver()
+    solver.set("timeout", TIMEOUT_MS)
+    on_first, on_second, w0, w1 = points_on_both(solver, kind, points, motions, lo, hi,
+                                                 hi_strict)
+    solver.add(*[on_first[k] * w1 == on_second[k] * w0 for k in range(3)])
     return solver.check()
 
 

@@ -44,7 +44,7 @@ import pytest
 
 import exactccd
 
-from test_rigid import Linear, Rigid, random_query, side_numerators, value
+from test_rigid import Linear, Rigid, points_on_both, random_query, value
 from z3_support import TIMEOUT_MS, Z3Tally, needs_z3, seed_from_environment, z3
 
 DELTAS = (F(1, 64), F(1, 8))
@@ -75,21 +75,8 @@ def within_delta(kind, points, motions, delta, lo=F(0), hi=F(1), hi_strict=False
     hi_strict) at which the closed primitives are within Euclidean distance delta > 0."""
     solver = z3.Solver()
     solver.set("timeout", CALL_TIMEOUT_MS)
-    s, u, v = z3.Reals("s u v")
-    solver.add(s >= value(lo), s < value(hi) if hi_strict else s <= value(hi))
-    first, second = (points[:1], points[1:]) if kind == "vf" else (points[:2], points[2:])
-    n0 = side_numerators(motions[0], [[value(x) for x in p] for p in first], s)
-    n1 = side_numerators(motions[1], [[value(x) for x in p] for p in second], s)
-    w0, w1 = motions[0].denominator(s), motions[1].denominator(s)
-    if kind == "vf":
-        solver.add(u >= 0, v >= 0, u + v <= 1)
-        on_first = n0[0]
-        on_second = [n1[0][k] + u * (n1[1][k] - n1[0][k]) + v * (n1[2][k] - n1[0][k])
-                     for k in range(3)]
-    else:
-        solver.add(u >= 0, u <= 1, v >= 0, v <= 1)
-        on_first = [n0[0][k] + u * (n0[1][k] - n0[0][k]) for k in range(3)]
-        on_second = [n1[0][k] + v * (n1[1][k] - n1[0][k]) for k in range(3)]
+    on_first, on_second, w0, w1 = points_on_both(solver, kind, points, motions, lo, hi,
+                                                 hi_strict)
     difference = [on_first[k] * w1 - on_second[k] * w0 for k in range(3)]
     squared = sum(d * d for d in difference)
     solver.add(squared <= value(delta * delta) * (w0 * w1) * (w0 * w1))
