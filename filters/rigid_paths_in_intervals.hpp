@@ -89,9 +89,10 @@ inline Boxes positions_over(const IntervalPaths& paths, const Interval& T) {
   return paths.positions_at(T);
 }
 
-/// On some axis the hulls of the two primitives' boxes are disjoint. A NaN bound (overflow)
-/// never separates.
-inline bool boxes_apart(const Boxes& x, int first) {
+/// Lower bounds of the gap between the hulls of the two primitives' boxes on each axis
+/// (negative where they overlap), the differences rounded down; false for a NaN bound
+/// (overflow), which bounds nothing.
+inline bool axis_gaps(const Boxes& x, int first, double (&gap)[3]) {
   for (int k = 0; k < 3; ++k) {
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (int i = 0; i < 4; ++i) {
@@ -101,9 +102,17 @@ inline bool boxes_apart(const Boxes& x, int first) {
       lo[side] = std::min(lo[side], l);
       hi[side] = std::max(hi[side], h);
     }
-    if (hi[0] < lo[1] || hi[1] < lo[0]) return true;
+    gap[k] = std::max((Interval(lo[1]) - Interval(hi[0])).inf(),
+                      (Interval(lo[0]) - Interval(hi[1])).inf());
   }
-  return false;
+  return true;
+}
+
+/// On some axis the hulls of the two primitives' boxes are more than delta apart (delta = 0:
+/// disjoint; a difference of doubles rounded down is positive exactly when it is).
+inline bool boxes_apart(const Boxes& x, int first, double delta = 0.0) {
+  double gap[3];
+  return axis_gaps(x, first, gap) && (gap[0] > delta || gap[1] > delta || gap[2] > delta);
 }
 
 }  // namespace exactccd::filters::rigid

@@ -1,6 +1,7 @@
 // PROOF: proofs/min_separation.md#rigid-separation-filter
 #include "filters/rigid_separation_filter.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -71,24 +72,6 @@ Positions<Jet> position_jets(const IntervalPaths& paths, const Interval& T) {
   return x;
 }
 
-/// Some axis separates the two primitives' boxes by more than delta.
-bool apart_by_more_than(const Boxes& x, int first, double delta) {
-  for (int k = 0; k < 3; ++k) {
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-    for (int i = 0; i < 4; ++i) {
-      const int side = i < first ? 0 : 1;
-      const double l = x[i][k].inf(), h = x[i][k].sup();
-      if (!(l <= h)) return false;  // NaN (overflow) never separates
-      lo[side] = std::min(lo[side], l);
-      hi[side] = std::max(hi[side], h);
-    }
-    if ((Interval(lo[1]) - Interval(hi[0])).inf() > delta ||
-        (Interval(lo[0]) - Interval(hi[1])).inf() > delta)
-      return true;
-  }
-  return false;
-}
-
 /// The search for one separation kind (predicates::VertexFaceSeparation or EdgeEdgeSeparation).
 template <template <class, class> class Separation>
 class Search {
@@ -103,7 +86,8 @@ class Search {
   Search(const DoubleRigidQuery& query, const IntervalPaths& paths, double delta,
          const CcdOptions& options, RigidExactStage& exact)
       : query_(query), paths_(paths), delta_(delta), delta2_(Interval(delta) * Interval(delta)),
-        t_max_(options.t_max), toi_width_(options.toi_width), exact_(exact) {}
+        t_max_(options.t_max), toi_width_(options.toi_width), exact_(exact),
+        extended_in_range_(in_extended_range(query, delta)) {}
 
   SeparationOutcome run();
 
@@ -299,9 +283,9 @@ class Search {
     const CertifiedSign s = certified_sign(value_at(k, t));
     if (s != CertifiedSign::uncertain) return static_cast<int>(s);
 #if EXACTCCD_X87_INTERVAL
-    {
-      // The query's numbers are doubles, normalised; the polynomial's degree is at most 30 in
-      // them: far inside the extended exponent range.
+    if (extended_in_range_) {
+      // Positions, delta and Cayley vectors at most 2^66 in magnitude, the value of degree at
+      // most 30 in them: far inside the extended exponent range (2^16383).
       const predicates::X87EnvironmentGuard upward(predicates::Rounding::upward);
       if (!extended_paths_) extended_paths_ = predicates::rigid_paths<X87Interval>(query_);
       const int x = predicates::certain_sign_or_zero(predicates::rigid_region_value(
@@ -329,19 +313,11 @@ class Search {
   /// triangle's plane (vertex-face) or between the segments' lines (edge-edge), each at most
   /// the distance between the primitives. 0 when nothing is certain.
   double distance_lower_bound(const Boxes& x) const {
+    double gap[3];
+    if (!rigid::axis_gaps(x, paths_.first_side_count, gap)) return 0.0;
     Interval gap2(0.0);
-    for (int k = 0; k < 3; ++k) {
-      double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-      for (int i = 0; i < 4; ++i) {
-        const int side = i < paths_.first_side_count ? 0 : 1;
-        if (!(x[i][k].inf() <= x[i][k].sup())) return 0.0;  // NaN
-        lo[side] = std::min(lo[side], x[i][k].inf());
-        hi[side] = std::max(hi[side], x[i][k].sup());
-      }
-      const double g = std::max((Interval(lo[1]) - Interval(hi[0])).inf(),
-                                (Interval(lo[0]) - Interval(hi[1])).inf());
+    for (const double g : gap)
       if (g > 0) gap2 = gap2 + Interval(g) * Interval(g);
-    }
     double bound = CGAL::sqrt(Interval(gap2.inf())).inf();
     const Vec3<Interval> n = paths_.first_side_count == 1
                                  ? predicates::cross(x[2] - x[1], x[3] - x[1])
@@ -382,12 +358,25 @@ class Search {
     return r;
   }
 
+  /// Every number of the query at most 2^66 in magnitude (after its normalisation, unless that
+  /// was not exact): the x87 tier cannot overflow.
+  static bool in_extended_range(const DoubleRigidQuery& q, double delta) {
+    double largest = delta;
+    auto grow = [&largest](const Vec3<double>& x) {
+      largest = std::max({largest, std::fabs(x.x), std::fabs(x.y), std::fabs(x.z)});
+    };
+    rigid::for_each_position(q, grow);
+    for (const auto& side : q.side) grow(side.motion.cayley);
+    return largest <= 0x1p66;
+  }
+
   const DoubleRigidQuery& query_;
   const IntervalPaths& paths_;
   const double delta_;
   const Interval delta2_;
   const double t_max_, toi_width_;
   RigidExactStage& exact_;
+  const bool extended_in_range_;
   bool exact_used_ = false;
 #if EXACTCCD_X87_INTERVAL
   std::optional<predicates::RigidPaths<X87Interval>> extended_paths_;
@@ -495,16 +484,18 @@ SeparationOutcome Search<Separation>::run() {
   int pieces = 0;
   double width = std::max(8 * last_step, kFirstWindow * t_max_);
   for (double from = start; from < t_max_; width *= 2) {
-    const double to = width < t_max_ - from ? (Interval(from) + Interval(width)).sup() : t_max_;
+    const double to = std::min((Interval(from) + Interval(width)).sup(), t_max_);
     const Interval span = Interval(to) - Interval(from);
     Piece stack[kMaxDepth + 2];
     int top = 0;
     stack[top++] = Piece{0.0, 1.0, 0};
     while (top > 0) {
       const Piece piece = stack[--top];
-      const Interval T = Interval(from) + span * Interval(piece.u0, piece.u1);
+      // Rounded outwards, then cut to [0, t_max]: nothing beyond t_max may be reported.
+      const Interval wide = Interval(from) + span * Interval(piece.u0, piece.u1);
+      const Interval T(std::max(wide.inf(), 0.0), std::min(wide.sup(), t_max_));
       const Boxes x = rigid::positions_over(paths_, T);
-      if (apart_by_more_than(x, paths_.first_side_count, delta_)) continue;
+      if (rigid::boxes_apart(x, paths_.first_side_count, delta_)) continue;
       const bool narrow = (T.sup() - T.inf()) <= kNarrow * t_max_;
       PieceValues v(*this, T, x, narrow);
       // Within delta implies polynomial 0 <= 0 (the distance to the plane, or between the
@@ -582,7 +573,7 @@ SeparationOutcome rigid_separation_filter(const DoubleRigidQuery& query, const C
   }
   const DoubleRigidQuery q = k == 0 ? query : rigid::scaled(query, k);
   const IntervalPaths paths = rigid::interval_paths(q);
-  if (apart_by_more_than(rigid::positions_over(paths, Interval(0.0, options.t_max)),
+  if (rigid::boxes_apart(rigid::positions_over(paths, Interval(0.0, options.t_max)),
                          paths.first_side_count, delta)) {
     SeparationOutcome r;
     r.verdict = SeparationVerdict::never_within;

@@ -176,9 +176,9 @@ RigidCcdResult with_time(const CcdResult& ccd, const predicates::DoubleRigidQuer
 /// the exact procedure from what it cleared. PROOF: proofs/min_separation.md#rigid-separation
 CcdResult rigid_min_separation_ccd(const predicates::DoubleRigidQuery& q,
                                    const CcdOptions& options) {
-  const exact::Rational delta(options.min_separation);
-  auto exact_path = [&](const exact::SeparationHint& hint) {
-    return exact::rigid_min_separation_exact(exact::rational_query(q), delta, options, hint);
+  auto exact_path = [&](const exact::SeparationHint& hint) {  // allocates only when called
+    return exact::rigid_min_separation_exact(exact::rational_query(q),
+                                             exact::Rational(options.min_separation), options, hint);
   };
   if (options.mode == Mode::exact) return exact_path({});
   exact::RigidExactStageAtDoubles exact_stage(q, options.min_separation);
