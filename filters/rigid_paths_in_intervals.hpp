@@ -102,8 +102,9 @@ inline bool axis_gaps(const Boxes& x, int first, double (&gap)[3]) {
       lo[side] = std::min(lo[side], l);
       hi[side] = std::max(hi[side], h);
     }
-    gap[k] = std::max((Interval(lo[1]) - Interval(hi[0])).inf(),
-                      (Interval(lo[0]) - Interval(hi[1])).inf());
+    // Rounded down: the negated upward difference (the callers round upwards). Infinite bounds
+    // give -infinity or NaN, which bound nothing (every comparison with NaN is false).
+    gap[k] = std::max(-(hi[0] - lo[1]), -(hi[1] - lo[0]));
   }
   return true;
 }

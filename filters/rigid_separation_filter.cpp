@@ -317,7 +317,7 @@ class Search {
     if (!rigid::axis_gaps(x, paths_.first_side_count, gap)) return 0.0;
     Interval gap2(0.0);
     for (const double g : gap)
-      if (g > 0) gap2 = gap2 + Interval(g) * Interval(g);
+      if (g > 0 && g < INFINITY) gap2 = gap2 + Interval(g) * Interval(g);
     double bound = CGAL::sqrt(Interval(gap2.inf())).inf();
     const Vec3<Interval> n = paths_.first_side_count == 1
                                  ? predicates::cross(x[2] - x[1], x[3] - x[1])
@@ -327,7 +327,7 @@ class Search {
     const Interval n2 = predicates::dot(n, n);
     if (n2.inf() > 0) {
       const double a = std::max(along.inf(), (-along).inf());  // |along| from below
-      if (a > 0) bound = std::max(bound, (Interval(a) / CGAL::sqrt(n2)).inf());
+      if (a > 0 && a < INFINITY) bound = std::max(bound, (Interval(a) / CGAL::sqrt(n2)).inf());
     }
     return bound;
   }
@@ -339,6 +339,7 @@ class Search {
       Interval v2(0.0);
       for (int k = 0; k < 3; ++k) {
         const double m = std::max(std::fabs(x[i][k].d.inf()), std::fabs(x[i][k].d.sup()));
+        if (!(m < INFINITY)) return INFINITY;  // overflow or NaN: no bound
         v2 = v2 + Interval(m) * Interval(m);
       }
       const double speed = CGAL::sqrt(v2).sup();
