@@ -11,26 +11,11 @@
 #include "core/predicates/contact_exact_stage.hpp"
 #include "core/predicates/motion.hpp"
 #include "filters/certified_numbers.hpp"
+#include "filters/filter_outcome.hpp"
 
 namespace exactccd::filters {
 
 using predicates::ContactExactStage;
-
-struct FilterOutcome {
-  enum class Verdict : std::uint8_t { no_contact, contact, uncertain };
-  Verdict verdict = Verdict::uncertain;
-  /// For a contact: the exact first contact time t* is the only root of the coplanarity
-  /// cubic in [toi_lo, toi_hi], and the cubic is certainly non-zero, of opposite signs, at
-  /// both ends (or toi_lo == toi_hi == t*, a certified root).
-  double toi_lo = 0.0, toi_hi = 0.0;
-  /// The bracket meets the requested width (the tightest pair of doubles for width 0).
-  bool toi_final = false;
-  /// Exact answers at double times (ContactExactStage) were consulted.
-  bool exact_used = false;
-  /// Uncertain because subdivision could not isolate the cubic's roots (its interval
-  /// coefficients too wide, or a multiple root): a tighter enclosure of the cubic may decide.
-  bool roots_unresolved = false;
-};
 
 /// `Inclusion` provides, for a time interval T (an Interval inside [0, t_max]):
 ///   bool excluded(const Interval& T)            -- certainly no contact at any t in T;

@@ -208,7 +208,7 @@ class RootSearch {
   {
   }
 
-  std::optional<CcdResult> run();
+  FilterOutcome run();
 
  private:
   struct Node {
@@ -270,13 +270,14 @@ class RootSearch {
   bool narrow_by_intervals(Bracket& b) const;
   void narrow_finely(Bracket& b, bool to_tightest);
   RootVerdict decide_root(Bracket& b);
-  CcdResult contact(const Bracket& b) const {
-    CcdResult r;
-    r.collides = true;
+  FilterOutcome contact(const Bracket& b) const {
+    FilterOutcome r;
+    r.verdict = FilterOutcome::Verdict::contact;
     r.toi_lo = b.lo;
     r.toi_hi = b.hi;
-    r.decided_by = verdict_exact_ ? Stage::exact_at_double
-                                  : (toi_exact_ ? Stage::filter_exact_toi : Stage::filter);
+    r.toi_final = true;
+    r.exact_used = verdict_exact_;
+    r.toi_exact = toi_exact_;
     return r;
   }
 
@@ -410,11 +411,11 @@ bool certainly_monotone(const Bernstein<Interval, 5>& b) {
   return true;
 }
 
-std::optional<CcdResult> RootSearch::run() {
+FilterOutcome RootSearch::run() {
   // g may vanish identically (coplanar throughout): every root then, for the exact path.
   bool nonzero = false;
   for (const Interval& c : g_.c) nonzero = nonzero || certain_strict_sign(c) != 0;
-  if (!nonzero) return std::nullopt;
+  if (!nonzero) return FilterOutcome{};
 
   // The signs of g at 0 and t_max, resolved when a node first needs them (2: not yet).
   int sign_start = 2, sign_end = 2;
@@ -431,7 +432,7 @@ std::optional<CcdResult> RootSearch::run() {
         sign_start = resolved_sign_at(0.0);
         if (sign_start == 0) {  // coplanar at s = 0: a contact there is the first one
           const Inclusion at_start = inclusion_over(Interval(0.0));
-          if (at_start == Inclusion::unknown) return std::nullopt;
+          if (at_start == Inclusion::unknown) return FilterOutcome{};
           if (at_start == Inclusion::included) return contact(Bracket{0.0, 0.0, 1});
         }
       }
@@ -445,7 +446,7 @@ std::optional<CcdResult> RootSearch::run() {
     if (monotone && node.u0 == 0.0 && s_lo == 0) continue;  // its only root: s = 0, no contact
     if (monotone && node.u1 == 1.0 && s_hi == 0) {          // its only root: s = t_max
       const Inclusion at_end = inclusion_over(Interval(t_max_));
-      if (at_end == Inclusion::unknown) return std::nullopt;
+      if (at_end == Inclusion::unknown) return FilterOutcome{};
       if (at_end == Inclusion::included) return contact(Bracket{t_max_, t_max_, 1});
       continue;
     }
@@ -460,12 +461,12 @@ std::optional<CcdResult> RootSearch::run() {
         switch (decide_root(b)) {
           case RootVerdict::contact: return contact(b);
           case RootVerdict::no_contact: continue;
-          case RootVerdict::undecided: return std::nullopt;
+          case RootVerdict::undecided: return FilterOutcome{};
         }
       }
     }
     if (discarded(T)) continue;  // disjoint boxes, or no contact at any s of the node
-    if (node.depth == kMaxDepth) return std::nullopt;
+    if (node.depth == kMaxDepth) return FilterOutcome{};
     Node left, right;
     de_casteljau_halves(node.b, left.b, right.b);
     const double mid = (node.u0 + node.u1) / 2;  // dyadic: exact
@@ -474,22 +475,24 @@ std::optional<CcdResult> RootSearch::run() {
     stack[top++] = right;
     stack[top++] = left;
   }
-  CcdResult none;
-  none.decided_by = verdict_exact_ ? Stage::exact_at_double : Stage::filter;
+  FilterOutcome none;
+  none.verdict = FilterOutcome::Verdict::no_contact;
+  none.exact_used = verdict_exact_;
   return none;
 }
 
 }  // namespace
 
-std::optional<CcdResult> rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
-                                          RigidExactStage& exact) {
+FilterOutcome rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
+                               RigidExactStage& exact) {
   const RoundingGuard upward;
   const int k = rigid::normalising_exponent(query);
   const DoubleRigidQuery q = k == 0 ? query : rigid::scaled(query, k);
   const IntervalPaths paths = rigid::interval_paths(q);
   if (boxes_apart(positions_over(paths, Interval(0.0, options.t_max)), paths.first_side_count)) {
-    CcdResult r;
-    r.decided_by = Stage::culling;
+    FilterOutcome r;
+    r.verdict = FilterOutcome::Verdict::no_contact;
+    r.culled = true;
     return r;
   }
   const Quintic g = coplanarity_over<Interval>(q);

@@ -8,11 +8,11 @@
 #pragma once
 
 #include <array>
-#include <optional>
 
 #include "core/predicates/rigid_exact_stage.hpp"
 #include "core/predicates/rigid_query.hpp"
 #include "exactccd/types.hpp"
+#include "filters/filter_outcome.hpp"
 
 namespace exactccd::filters {
 
@@ -21,12 +21,12 @@ using predicates::DoubleSide;
 
 using predicates::RigidExactStage;
 
-/// The verdict and TOI of the query when the filters decide it (Stage::culling, filter,
-/// filter_exact_toi or exact_at_double), equal to the exact path's for toi_width = 0 (the
-/// tightest pair of doubles around the first contact); nothing when they cannot (then the
-/// exact path decides). Sets and restores its own rounding mode; allocates nothing itself
-/// (`exact` may).
-std::optional<CcdResult> rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
-                                          RigidExactStage& exact);
+/// The verdict and TOI of the query when the filters decide it (culled, by the intervals, the
+/// TOI narrowed with exact signs, or the verdict by exact signs), the TOI equal to the exact
+/// path's for toi_width = 0 (the tightest pair of doubles around the first contact); uncertain
+/// when they cannot (then the exact path decides). Sets and restores its own rounding mode;
+/// allocates nothing itself (`exact` may).
+FilterOutcome rigid_ccd_filter(const DoubleRigidQuery& query, const CcdOptions& options,
+                               RigidExactStage& exact);
 
 }  // namespace exactccd::filters

@@ -89,7 +89,7 @@ class Search {
         t_max_(options.t_max), toi_width_(options.toi_width), exact_(exact),
         extended_in_range_(in_extended_range(query, delta)) {}
 
-  SeparationOutcome run();
+  FilterOutcome run();
 
  private:
   /// Region polynomial values (all, or k alone into out[k]) on positions of any number type.
@@ -301,7 +301,7 @@ class Search {
            (toi_width_ > 0 && (Interval(hi) - Interval(lo)).sup() <= toi_width_);
   }
   enum class PieceVerdict : std::uint8_t { excluded, contact, undecided };
-  PieceVerdict decide_piece(std::uint32_t set, PieceValues& v, SeparationOutcome* out);
+  PieceVerdict decide_piece(std::uint32_t set, PieceValues& v, FilterOutcome* out);
   bool advance(double* start, double* last_step) const;
   static constexpr int kMaxAdvances = 32;
   static constexpr double kSlowAdvance = 0x1p-8;  // of t_max: then the pieces take over
@@ -350,11 +350,12 @@ class Search {
   }
   void tighten(int k, double* lo, double* hi);
 
-  static SeparationOutcome contact(double lo, double hi, bool exact_used) {
-    SeparationOutcome r;
-    r.verdict = SeparationVerdict::contact;
+  static FilterOutcome contact(double lo, double hi, bool exact_used) {
+    FilterOutcome r;
+    r.verdict = FilterOutcome::Verdict::contact;
     r.toi_lo = lo;
     r.toi_hi = hi;
+    r.toi_final = true;
     r.exact_used = exact_used;
     return r;
   }
@@ -388,7 +389,7 @@ class Search {
 /// sign) makes `within` false up to k's only root and true after it.
 template <template <class, class> class Separation>
 typename Search<Separation>::PieceVerdict Search<Separation>::decide_piece(
-    std::uint32_t set, PieceValues& v, SeparationOutcome* out) {
+    std::uint32_t set, PieceValues& v, FilterOutcome* out) {
   const double lo = v.piece().inf(), hi = v.piece().sup();
   double first_lo = INFINITY, first_hi = INFINITY;  // the earliest root's bracket so far
   for (int k = 0; k < kCount; ++k) {
@@ -464,7 +465,7 @@ void Search<Separation>::tighten(int k, double* lo, double* hi) {
 }
 
 template <template <class, class> class Separation>
-SeparationOutcome Search<Separation>::run() {
+FilterOutcome Search<Separation>::run() {
   const Boxes at_zero = rigid::positions_over(paths_, Interval(0.0));
   PieceValues at_start(*this, Interval(0.0), at_zero, false);
   if (surely_within(at_start))
@@ -474,8 +475,8 @@ SeparationOutcome Search<Separation>::run() {
   // contact is usually close to start, and a window its size needs no deep descent to it.
   double start = 0.0, last_step = 0.0;
   if (advance(&start, &last_step)) {
-    SeparationOutcome r;
-    r.verdict = SeparationVerdict::never_within;
+    FilterOutcome r;
+    r.verdict = FilterOutcome::Verdict::no_contact;
     return r;
   }
   struct Piece {
@@ -504,7 +505,7 @@ SeparationOutcome Search<Separation>::run() {
       if (certain_strict_sign(v[0]) > 0 || !possibly_within(v)) continue;
       const std::uint32_t set = narrow ? deciding_set(v) : 0;
       if (set != 0) {
-        SeparationOutcome out;
+        FilterOutcome out;
         switch (decide_piece(set, v, &out)) {
           case PieceVerdict::excluded: continue;
           case PieceVerdict::contact: return out;
@@ -512,7 +513,7 @@ SeparationOutcome Search<Separation>::run() {
         }
       }
       if (piece.depth == kMaxDepth || ++pieces > kMaxPieces) {
-        SeparationOutcome r;  // uncertain: the exact path searches from the piece on
+        FilterOutcome r;  // uncertain: the exact path searches from the piece on
         r.cleared_until = T.inf();
         r.exact_used = exact_used_;
         return r;
@@ -523,8 +524,8 @@ SeparationOutcome Search<Separation>::run() {
     }
     from = to;  // the window is cleared, its end included (closed pieces)
   }
-  SeparationOutcome r;
-  r.verdict = SeparationVerdict::never_within;
+  FilterOutcome r;
+  r.verdict = FilterOutcome::Verdict::no_contact;
   r.exact_used = exact_used_;
   return r;
 }
@@ -563,7 +564,7 @@ bool scaled_exactly(double delta, int k, double* out) {
 
 }  // namespace
 
-SeparationOutcome rigid_separation_filter(const DoubleRigidQuery& query, const CcdOptions& options,
+FilterOutcome rigid_separation_filter(const DoubleRigidQuery& query, const CcdOptions& options,
                                           RigidExactStage& exact) {
   const RoundingGuard upward;
   int k = rigid::normalising_exponent(query);
@@ -576,8 +577,8 @@ SeparationOutcome rigid_separation_filter(const DoubleRigidQuery& query, const C
   const IntervalPaths paths = rigid::interval_paths(q);
   if (rigid::boxes_apart(rigid::positions_over(paths, Interval(0.0, options.t_max)),
                          paths.first_side_count, delta)) {
-    SeparationOutcome r;
-    r.verdict = SeparationVerdict::never_within;
+    FilterOutcome r;
+    r.verdict = FilterOutcome::Verdict::no_contact;
     r.culled = true;
     return r;
   }

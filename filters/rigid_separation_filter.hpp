@@ -16,7 +16,7 @@ namespace exactccd::filters {
 /// or `uncertain` with what it cleared for the exact path. `exact` gives exact signs of the
 /// region polynomials at doubles. Sets and restores its own rounding mode; no heap allocation
 /// but the exact stage's.
-SeparationOutcome rigid_separation_filter(const DoubleRigidQuery& query, const CcdOptions& options,
+FilterOutcome rigid_separation_filter(const DoubleRigidQuery& query, const CcdOptions& options,
                                           RigidExactStage& exact);
 
 }  // namespace exactccd::filters

@@ -95,7 +95,7 @@ struct FactoredEnclosures {
 /// builds its separation. Not inlined: its frame (the polynomial table) is large, and most
 /// queries never get here.
 template <class Motion, class Make>
-[[gnu::noinline]] SeparationOutcome search_for_first_within(
+[[gnu::noinline]] FilterOutcome search_for_first_within(
     const Vertices& t0, const Vertices& t1, const CcdOptions& options, Make make,
     const predicates::SeparationExactStage& exact) {
   using separation::MovingVertex;
@@ -107,7 +107,7 @@ template <class Motion, class Make>
       make(moving_point<Interval>(*t0[0], *t1[0]), moving_point<Interval>(*t0[1], *t1[1]),
            moving_point<Interval>(*t0[2], *t1[2]), moving_point<Interval>(*t0[3], *t1[3]), delta2);
   const FactoredEnclosures<Motion, Make> factored{m, make, delta2};
-  SeparationOutcome out =
+  FilterOutcome out =
       separation::FirstWithinSearch<Motion, std::decay_t<decltype(s)>, decltype(factored)>(
           m, s, factored, exact, options)
           .run();
@@ -118,14 +118,14 @@ template <class Motion, class Make>
 
 /// The whole-step test, then the search.
 template <class Motion, class WholeStep, class Make>
-SeparationOutcome separation_filter(const Vertices& t0, const Vertices& t1,
+FilterOutcome separation_filter(const Vertices& t0, const Vertices& t1,
                                     const CcdOptions& options, WholeStep apart_over_whole_step,
                                     Make make, const predicates::SeparationExactStage& exact) {
   // Most pairs that pass culling are decided here, from the input doubles alone, rounding to
   // nearest as the library's entry has set.
   if (apart_over_whole_step(t0, t1, options.min_separation)) {
-    SeparationOutcome out;
-    out.verdict = SeparationVerdict::never_within;
+    FilterOutcome out;
+    out.verdict = FilterOutcome::Verdict::no_contact;
     out.cleared_until = options.t_max;
     return out;
   }
@@ -144,7 +144,7 @@ bool edge_edge_separation_culling(const EdgeEdgeQuery& q, double delta) {
                            {&q.ea0_t1, &q.ea1_t1}, {&q.eb0_t1, &q.eb1_t1}, delta);
 }
 
-SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
+FilterOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                 const CcdOptions& options,
                                                 const predicates::SeparationExactStage& exact) {
   return separation_filter<separation::VertexFaceMotion>(
@@ -154,7 +154,7 @@ SeparationOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
       exact);
 }
 
-SeparationOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
+FilterOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
                                               const predicates::SeparationExactStage& exact) {
   return separation_filter<separation::EdgeEdgeMotion>(
       {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0}, {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},

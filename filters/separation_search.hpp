@@ -137,8 +137,8 @@ class FirstWithinSearch {
       : m_(m), separation_(s), factored_(factored), exact_(exact), options_(options),
         delta2_(Interval(options.min_separation) * options.min_separation) {}
 
-  SeparationOutcome run() {
-    SeparationOutcome out;
+  FilterOutcome run() {
+    FilterOutcome out;
     Step s = advance_then_search();
     if (s == Step::give_up && sharpen()) {
       // The enclosures computed from the coordinates could not tell: the rest of the step
@@ -151,11 +151,12 @@ class FirstWithinSearch {
     out.cleared_until = cleared_;
     out.exact_used = exact_used_;
     if (s == Step::excluded) {
-      out.verdict = SeparationVerdict::never_within;
+      out.verdict = FilterOutcome::Verdict::no_contact;
     } else if (s == Step::found) {
-      out.verdict = SeparationVerdict::contact;
+      out.verdict = FilterOutcome::Verdict::contact;
       out.toi_lo = toi_lo_;
       out.toi_hi = toi_hi_;
+      out.toi_final = true;
     } else if (bracket_ && cleared_ == bracket_lo_) {
       out.bracketed = true;
       out.cleared_until = bracket_lo_;

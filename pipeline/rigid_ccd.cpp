@@ -13,15 +13,13 @@
 #include <string>
 #include <tuple>
 
-#include "core/float_only/rigid_float_only_ccd.hpp"
 #include "core/predicates/fp_environment.hpp"
-#include "pipeline/ccd_options_check.hpp"
-#include "exact/reference/rigid_ccd.hpp"
 #include "core/predicates/interval.hpp"
-#include "exact/stages/rigid_exact_stage.hpp"
-#include "filters/rigid_filter.hpp"
-#include "filters/rigid_separation_filter.hpp"
-#include "pipeline/separation_outcome.hpp"
+#include "core/predicates/rigid_query.hpp"
+#include "exact/arithmetic/rational.hpp"
+#include "pipeline/ccd_options_check.hpp"
+#include "pipeline/dispatch.hpp"
+#include "pipeline/rigid_problems.hpp"
 
 namespace exactccd {
 
@@ -172,33 +170,15 @@ RigidCcdResult with_time(const CcdResult& ccd, const predicates::DoubleRigidQuer
   return r;
 }
 
-/// Minimum separation delta = options.min_separation > 0: the rigid separation filter, then
-/// the exact procedure from what it cleared. PROOF: proofs/min_separation.md#rigid-separation
-CcdResult rigid_min_separation_ccd(const predicates::DoubleRigidQuery& q,
-                                   const CcdOptions& options) {
-  auto exact_path = [&](const exact::SeparationHint& hint) {  // allocates only when called
-    return exact::rigid_min_separation_exact(exact::rational_query(q),
-                                             exact::Rational(options.min_separation), options, hint);
-  };
-  if (options.mode == Mode::exact) return exact_path({});
-  exact::RigidExactStageAtDoubles exact_stage(q, options.min_separation);
-  return separation_result(filters::rigid_separation_filter(q, options, exact_stage), exact_path);
-}
-
+/// Validation and the FP state, then the one pipeline's instance the options name.
 template <class Query>
 RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
   const predicates::DoubleRigidQuery q = checked_query(query);
-  if (options.mode == Mode::float_only)  // uncertified, for comparison only
-    return with_time(float_only::rigid_ccd(q, options), q);
-  if (options.min_separation > 0) return with_time(rigid_min_separation_ccd(q, options), q);
-  if (options.mode == Mode::filtered) {
-    exact::RigidExactStageAtDoubles exact_stage(q);
-    if (std::optional<CcdResult> r = filters::rigid_ccd_filter(q, options, exact_stage))
-      return with_time(*r, q);
-  }
-  return with_time(exact::rigid_ccd_exact(exact::rational_query(q), options), q);
+  if (options.min_separation > 0)
+    return with_time(pipeline::certified_ccd<pipeline::RigidSeparation>(q, options), q);
+  return with_time(pipeline::certified_ccd<pipeline::RigidContact>(q, options), q);
 }
 
 }  // namespace
