@@ -7,27 +7,13 @@
 #include <tuple>
 
 #include "core/predicates/double_bits.hpp"
-#include "filters/cubic_bernstein.hpp"
+#include "filters/polynomial_bernstein.hpp"
 
 namespace exactccd::filters {
 
 namespace detail {
 
 constexpr int kMaxSubdivisionDepth = 10;
-
-EXACTCCD_CERTIFIED int strict_sign_of_all(const Bernstein3<Interval>& b) {
-  const int s = certain_strict_sign(b[0]);
-  if (s == 0) return 0;
-  for (int i = 1; i < 4; ++i)
-    if (!certainly_has_sign(b[i], s)) return 0;
-  return s;
-}
-
-/// The derivative's Bernstein coefficients (3 (b[i+1] - b[i])) all of one certain strict sign.
-EXACTCCD_CERTIFIED bool certainly_monotone(const Bernstein3<Interval>& b) {
-  const int d = certain_strict_sign(b[1] - b[0]);
-  return d != 0 && certainly_has_sign(b[2] - b[1], d) && certainly_has_sign(b[3] - b[2], d);
-}
 
 /// An enclosure of t_max * [s0, s1] (0 <= s0 <= s1): [down(t_max s0), up(t_max s1)]. Through
 /// the interval type, whose operations the compiler cannot move across the rounding-mode
@@ -240,7 +226,7 @@ FilterOutcome refine_bracket(const predicates::FixedPoly<Interval, 3>& cubic, do
 
 EXACTCCD_CERTIFIED bool coplanarity_cubic_root_free_interval(
     const predicates::FixedPoly<Interval, 3>& cubic, double t_max) {
-  return detail::strict_sign_of_all(cubic_bernstein(cubic, Interval(t_max))) != 0;
+  return strict_sign_of_all(bernstein_of(cubic, Interval(t_max))) != 0;
 }
 
 namespace detail {
@@ -296,7 +282,7 @@ FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, doub
   };
 
   struct Node {
-    Bernstein3<Interval> b;
+    Bernstein<Interval, 3> b;
     double s0, s1;
     int depth;
   };
@@ -304,17 +290,17 @@ FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, doub
   // first confirmed contact is the earliest one. At most one pending right child per level.
   Node stack[kMaxSubdivisionDepth + 2];
   int top = 0;
-  stack[top++] = Node{cubic_bernstein(cubic, Interval(t_max)), 0.0, 1.0, 0};
+  stack[top++] = Node{bernstein_of(cubic, Interval(t_max)), 0.0, 1.0, 0};
   while (top > 0) {
     const Node node = stack[--top];
-    if (detail::strict_sign_of_all(node.b) != 0) continue;  // no coplanar instant here
+    if (strict_sign_of_all(node.b) != 0) continue;  // no coplanar instant here
     const Interval T = detail::time_enclosure(t_max, node.s0, node.s1);
     // A node with a single root certified by its interval signs alone is tested for exclusion
     // in the leading projection only: the root's own narrow bracket is tested in all of them
     // below (a subset of T: whatever is excluded on T is excluded there).
     int sign_start = certain_strict_sign(node.b[0]), sign_end = certain_strict_sign(node.b[3]);
     const bool single_root = sign_start != 0 && sign_end == -sign_start &&
-                             detail::certainly_monotone(node.b);
+                             certainly_monotone(node.b);
     if (single_root ? inclusion.excluded_in_leading_projection(T) : inclusion.excluded(T))
       continue;
     if (tighter_cubic_available && node.depth >= 2 && sign_start == 0 && sign_end == 0 &&
@@ -339,14 +325,14 @@ FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, doub
     const bool root_at_start = node.s0 == 0.0 && start.sign == 0;
     const bool root_at_end = node.s1 == 1.0 && end.sign == 0;
     if (root_at_start || root_at_end) {
-      if (detail::certainly_monotone(node.b)) {
+      if (certainly_monotone(node.b)) {
         // The node's only root is its end point, whose contact is decided exactly.
         if (root_at_start) continue;  // no contact at t = 0 (checked above)
         if (detail::contact_at_coplanar_double(inclusion, t_max, exact))
           return contact_at_double(t_max);
         continue;
       }
-    } else if (sign_start != 0 && sign_end == -sign_start && detail::certainly_monotone(node.b)) {
+    } else if (sign_start != 0 && sign_end == -sign_start && certainly_monotone(node.b)) {
       // The node's only root r is its only coplanar instant; earlier nodes were all excluded.
       // Re-certify the bracket on the rounded-out time interval T in the power basis (T's
       // ends are exactly 0 and t_max at the ends of [0, t_max], whose signs are known).

@@ -10,6 +10,7 @@
 #include <cstddef>
 
 #include "core/predicates/motion.hpp"
+#include "filters/certified_numbers.hpp"
 
 namespace exactccd::filters {
 
@@ -42,6 +43,17 @@ EXACTCCD_CERTIFIED Bernstein<NT, N> bernstein_of(const predicates::FixedPoly<NT,
   return b;
 }
 
+/// The cubic's coefficients by the same formula written out: fewer operations (the coplanarity
+/// cubic of every linear query passes here). PROOF: proofs/filters.md#bernstein-no-root
+template <class NT>
+EXACTCCD_CERTIFIED Bernstein<NT, 3> bernstein_of(const predicates::FixedPoly<NT, 3>& f,
+                                                 const NT& t_max) {
+  const NT a1 = f.c[1] * t_max;
+  const NT a2 = f.c[2] * t_max * t_max;
+  const NT a3 = f.c[3] * t_max * t_max * t_max;
+  return {f.c[0], f.c[0] + a1 / 3, f.c[0] + (a1 * 2 + a2) / 3, f.c[0] + a1 + a2 + a3};
+}
+
 /// Bernstein coefficients of the two halves of the parameter interval (degree N = M - 1).
 template <class NT, std::size_t M>
 EXACTCCD_CERTIFIED void de_casteljau_halves(const std::array<NT, M>& b, std::array<NT, M>& left,
@@ -55,6 +67,25 @@ EXACTCCD_CERTIFIED void de_casteljau_halves(const std::array<NT, M>& b, std::arr
     left[r] = work[0];
     right[N - r] = work[N - r];
   }
+}
+
+/// The sign every coefficient certainly has (so the polynomial has on the whole interval), or 0.
+template <std::size_t M>
+EXACTCCD_CERTIFIED int strict_sign_of_all(const std::array<Interval, M>& b) {
+  const int s = certain_strict_sign(b[0]);
+  for (std::size_t i = 1; i < M && s != 0; ++i)
+    if (!certainly_has_sign(b[i], s)) return 0;
+  return s;
+}
+
+/// The derivative's Bernstein coefficients N (b[i+1] - b[i]) all of one certain strict sign.
+template <std::size_t M>
+EXACTCCD_CERTIFIED bool certainly_monotone(const std::array<Interval, M>& b) {
+  const int d = certain_strict_sign(b[1] - b[0]);
+  if (d == 0) return false;
+  for (std::size_t i = 1; i + 1 < M; ++i)
+    if (!certainly_has_sign(b[i + 1] - b[i], d)) return false;
+  return true;
 }
 
 }  // namespace exactccd::filters

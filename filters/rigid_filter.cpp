@@ -394,23 +394,6 @@ RootSearch::RootVerdict RootSearch::decide_root(Bracket& b) {
   return RootVerdict::contact;
 }
 
-/// The strict sign every coefficient certainly has, or 0.
-int sign_of_all(const Bernstein<Interval, 5>& b) {
-  const int s = certain_strict_sign(b[0]);
-  for (int i = 1; i <= 5 && s != 0; ++i)
-    if (!certainly_has_sign(b[i], s)) return 0;
-  return s;
-}
-
-/// The derivative's Bernstein coefficients 5 (b[i+1] - b[i]) all of one certain strict sign.
-bool certainly_monotone(const Bernstein<Interval, 5>& b) {
-  const int d = certain_strict_sign(b[1] - b[0]);
-  if (d == 0) return false;
-  for (int i = 1; i < 5; ++i)
-    if (!certainly_has_sign(b[i + 1] - b[i], d)) return false;
-  return true;
-}
-
 FilterOutcome RootSearch::run() {
   // g may vanish identically (coplanar throughout): every root then, for the exact path.
   bool nonzero = false;
@@ -424,7 +407,7 @@ FilterOutcome RootSearch::run() {
   stack[top++] = Node{bernstein_of(g_, Interval(t_max_)), 0.0, 1.0, 0};
   while (top > 0) {
     const Node node = stack[--top];
-    if (sign_of_all(node.b) != 0) continue;  // no coplanar instant in the node
+    if (strict_sign_of_all(node.b) != 0) continue;  // no coplanar instant in the node
     const Interval T = Interval(t_max_) * Interval(node.u0, node.u1);
     int s_lo = certain_strict_sign(node.b[0]), s_hi = certain_strict_sign(node.b[5]);
     if (node.u0 == 0.0) {
