@@ -6,6 +6,7 @@
 #include <array>
 #include <type_traits>
 
+#include "core/predicates/query_points.hpp"
 #include "core/predicates/separation.hpp"
 #include "filters/certified_numbers.hpp"
 #include "filters/separation_directions.hpp"
@@ -148,7 +149,7 @@ FilterOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
                                                 const CcdOptions& options,
                                                 const predicates::SeparationExactStage& exact) {
   return separation_filter<separation::VertexFaceMotion>(
-      {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0}, {&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1}, options,
+      predicates::points_at(q, false), predicates::points_at(q, true), options,
       separation::vertex_face_apart_over_whole_step,
       [](const auto&... x) { return predicates::vertex_face_separation(x...); },
       exact);
@@ -157,8 +158,7 @@ FilterOutcome vertex_face_separation_filter(const VertexFaceQuery& q,
 FilterOutcome edge_edge_separation_filter(const EdgeEdgeQuery& q, const CcdOptions& options,
                                               const predicates::SeparationExactStage& exact) {
   return separation_filter<separation::EdgeEdgeMotion>(
-      {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0}, {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1},
-      options, separation::edge_edge_apart_over_whole_step,
+      predicates::points_at(q, false), predicates::points_at(q, true), options, separation::edge_edge_apart_over_whole_step,
       [](const auto&... x) { return predicates::edge_edge_separation(x...); },
       exact);
 }

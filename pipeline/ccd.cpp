@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "core/predicates/fp_environment.hpp"
+#include "core/predicates/query_points.hpp"
 #include "exact/reference/exact_ccd.hpp"
 #include "exact/reference/min_separation.hpp"
 #include "exactccd/rational_query.hpp"
@@ -105,21 +106,12 @@ CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
 
 namespace {
 
-template <class Query>
-bool all_finite(const Query& q) {
-  using Pair = pipeline::LinearPair<Query>;
-  for (const auto& points : {Pair::at_t0(q), Pair::at_t1(q)})
-    for (const Eigen::Vector3d* x : points)
-      if (!x->allFinite()) return false;
-  return true;
-}
-
 /// Validation and the FP state, then the one pipeline's instance the options name.
 template <class Query>
 CcdResult linear_ccd(const Query& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
-  if (!all_finite(query)) to_rational(query);  // throws, naming the coordinate
+  if (!predicates::all_finite(query)) to_rational(query);  // throws, naming the coordinate
   if (options.min_separation > 0)
     return pipeline::certified_ccd<pipeline::LinearSeparation<Query>>(query, options);
   return pipeline::certified_ccd<pipeline::LinearContact<Query>>(query, options);

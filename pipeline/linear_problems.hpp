@@ -8,6 +8,7 @@
 
 #include "core/float_only/float_only_ccd.hpp"
 #include "core/float_only/tolerance_ccd.hpp"
+#include "core/predicates/query_points.hpp"
 #include "exact/reference/exact_ccd.hpp"
 #include "exact/reference/min_separation.hpp"
 #include "exact/stages/algebraic_at_doubles.hpp"
@@ -37,12 +38,6 @@ struct LinearPair<VertexFaceQuery> {
   static constexpr auto separation_rational = &exact::vertex_face_min_separation_exact;
   static constexpr auto tolerance = &methods::tolerance_vertex_face_ccd;
   static constexpr predicates::SeparationPair separation_pair = predicates::SeparationPair::vertex_face;
-  static std::array<const Eigen::Vector3d*, 4> at_t0(const VertexFaceQuery& q) {
-    return {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0};
-  }
-  static std::array<const Eigen::Vector3d*, 4> at_t1(const VertexFaceQuery& q) {
-    return {&q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1};
-  }
   static CcdResult float_contact(const VertexFaceQuery& q, const CcdOptions& o) {
     return float_only::vertex_face_ccd(q, o);
   }
@@ -59,12 +54,6 @@ struct LinearPair<EdgeEdgeQuery> {
   static constexpr auto separation_rational = &exact::edge_edge_min_separation_exact;
   static constexpr auto tolerance = &methods::tolerance_edge_edge_ccd;
   static constexpr predicates::SeparationPair separation_pair = predicates::SeparationPair::edge_edge;
-  static std::array<const Eigen::Vector3d*, 4> at_t0(const EdgeEdgeQuery& q) {
-    return {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0};
-  }
-  static std::array<const Eigen::Vector3d*, 4> at_t1(const EdgeEdgeQuery& q) {
-    return {&q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
-  }
   static CcdResult float_contact(const EdgeEdgeQuery& q, const CcdOptions& o) {
     return float_only::edge_edge_ccd(q, o);
   }
@@ -128,7 +117,8 @@ struct LinearSeparation {
   static Q scaled(const Q& q, int) { return q; }
   /// No work until the filter asks (its integer query formed only then).
   static ExactStage exact_stage(const Q& q, const CcdOptions& o) {
-    return ExactStage(Pair::at_t0(q), Pair::at_t1(q), o.min_separation, Pair::separation_pair);
+    return ExactStage(predicates::points_at(q, false), predicates::points_at(q, true),
+                      o.min_separation, Pair::separation_pair);
   }
   static FilterOutcome filter(const Q& q, const CcdOptions& o, const ExactStage& stage) {
     return Pair::separation_filter(q, o, stage);

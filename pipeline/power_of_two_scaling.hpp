@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "core/predicates/double_bits.hpp"
+#include "core/predicates/query_points.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::detail {
@@ -20,19 +21,6 @@ namespace exactccd::detail {
 /// A largest |coordinate| in [2^-kComfortableExponent, 2^(kComfortableExponent + 1)) is left as
 /// it is: the filters' products of up to three coordinates stay far inside the double range.
 constexpr int kComfortableExponent = 64;
-
-/// The eight points in the benchmark's row order.
-inline void points_of(const VertexFaceQuery& q, const Eigen::Vector3d* (&p)[8]) {
-  const Eigen::Vector3d* all[8] = {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0,
-                                   &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1};
-  std::copy(all, all + 8, p);
-}
-
-inline void points_of(const EdgeEdgeQuery& q, const Eigen::Vector3d* (&p)[8]) {
-  const Eigen::Vector3d* all[8] = {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0,
-                                   &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
-  std::copy(all, all + 8, p);
-}
 
 constexpr std::uint64_t kMagnitudeBits = ~(std::uint64_t{1} << 63);
 
@@ -60,8 +48,7 @@ inline std::uint64_t largest_magnitude(const Eigen::Vector3d& x, std::uint64_t l
 /// simply left as it is.
 template <class Query>
 int normalising_exponent(const Query& q) {
-  const Eigen::Vector3d* p[8];
-  points_of(q, p);
+  const predicates::QueryPoints p = predicates::points_of(q);
   const Eigen::Vector3d& first = *p[0];
   std::uint64_t largest = std::max(std::max(magnitude_bits(first.x()), magnitude_bits(first.y())),
                                    magnitude_bits(first.z()));

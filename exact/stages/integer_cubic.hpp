@@ -16,6 +16,7 @@
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/inclusion.hpp"
+#include "core/predicates/query_points.hpp"
 #include "exact/arithmetic/fixed_int.hpp"
 #include "exact/arithmetic/integer_arithmetic.hpp"
 #include "exactccd/types.hpp"
@@ -63,7 +64,7 @@ struct IntegerCoordinates {
 };
 
 inline IntegerCoordinates integer_coordinates(QueryType type,
-                                              const Eigen::Vector3d* const (&p)[8]) {
+                                              const predicates::QueryPoints& p) {
   IntegerCoordinates q;
   q.type = type;
   int lowest = INT_MAX, highest = INT_MIN;
@@ -83,15 +84,11 @@ inline IntegerCoordinates integer_coordinates(QueryType type,
 }
 
 inline IntegerCoordinates integer_coordinates(const VertexFaceQuery& q) {
-  const Eigen::Vector3d* const p[8] = {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0,
-                                       &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1};
-  return integer_coordinates(QueryType::vertex_face, p);
+  return integer_coordinates(QueryType::vertex_face, predicates::points_of(q));
 }
 
 inline IntegerCoordinates integer_coordinates(const EdgeEdgeQuery& q) {
-  const Eigen::Vector3d* const p[8] = {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0,
-                                       &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
-  return integer_coordinates(QueryType::edge_edge, p);
+  return integer_coordinates(QueryType::edge_edge, predicates::points_of(q));
 }
 
 /// A double t in [0, 1] as T 2^-k with T odd and T <= 2^k (t = 0: T = k = 0).
