@@ -1610,7 +1610,7 @@ inline Disagreement partial_interval_coarse_check(const DoubleQuery& q, std::mt1
     return out;
   };
   for (const CcdResult* r : {&dc, &ec}) {
-    const char* who = r == &dc ? "default" : "exact mode";
+    const char* who = r == &dc ? "filtered mode" : "exact mode";
     if (r->collides != ep.collides) return fail(std::string(who) + ": verdict differs", coarse, *r);
     if (!r->collides && !is_no_contact_toi(*r))
       return fail(std::string(who) + ": toi not +infinity without contact", coarse, *r);

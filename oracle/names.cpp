@@ -9,6 +9,7 @@ namespace exactccd::oracle {
 std::optional<Mode> parse_mode_name(const std::string& name) {
   for (const Mode m : {Mode::float_only, Mode::filtered, Mode::exact})
     if (name == to_string(m)) return m;
+  if (name == "default") return Mode::filtered;  // the name of Mode::filtered before
   return std::nullopt;
 }
 
@@ -16,6 +17,14 @@ const std::vector<std::string>& mode_names() {
   static const std::vector<std::string> names = {
       to_string(Mode::float_only), to_string(Mode::filtered), to_string(Mode::exact)};
   return names;
+}
+
+const std::string& mode_names_text() {
+  static const std::string text = std::string("\"") + to_string(Mode::float_only) + "\", \"" +
+                                  to_string(Mode::filtered) + "\" or \"" +
+                                  to_string(Mode::exact) + "\" (\"default\": " +
+                                  to_string(Mode::filtered) + ")";
+  return text;
 }
 
 const std::vector<Stage>& all_stages() {

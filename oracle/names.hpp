@@ -9,9 +9,14 @@
 
 namespace exactccd::oracle {
 
-/// The names of --mode: "float_only", "default", "exact" (to_string(Mode)).
+/// The Mode named `name`: "float_only", "filtered" or "exact" (to_string(Mode)), or "default",
+/// the old name of "filtered", still accepted as an alias (old scripts, old A/B commands);
+/// nullopt otherwise. The one parser of mode names: command, scene files and Python.
 std::optional<Mode> parse_mode_name(const std::string& name);
+/// The canonical names, to_string(Mode): "float_only", "filtered", "exact" (the alias not listed).
 const std::vector<std::string>& mode_names();
+/// The accepted names for a message: "float_only", "filtered" or "exact" ("default": filtered).
+const std::string& mode_names_text();
 
 /// Every Stage in enum order. Found through to_string(Stage), which names each stage and
 /// answers "unknown" past the last, so that a stage added to the library is listed too.

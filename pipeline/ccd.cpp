@@ -32,7 +32,7 @@ const char* to_string(Stage stage) noexcept {
 
 const char* to_string(Mode mode) noexcept {
   switch (mode) {
-    case Mode::filtered: return "default";
+    case Mode::filtered: return "filtered";
     case Mode::float_only: return "float_only";
     case Mode::exact: return "exact";
   }

@@ -55,7 +55,8 @@ def main():
     parser.add_argument("--data", help="folder of the query set (default: a temporary folder)")
     parser.add_argument("--threads", type=int, nargs="+", default=[1, 2])
     parser.add_argument("--repeat", type=int, default=3)
-    parser.add_argument("--mode", default="default", choices=exactccd.MODE_NAMES)
+    parser.add_argument("--mode", default="filtered", choices=exactccd.MODE_NAMES + ["default"],
+                        help='"default": the old name of "filtered"')
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory() as temporary:

@@ -26,7 +26,8 @@ def main():
     parser.add_argument("--cluster", help="scheduler address (default: a LocalCluster)")
     parser.add_argument("--workers", type=int, default=2, help="LocalCluster worker processes")
     parser.add_argument("--shard", type=int, default=100_000, help="queries per task")
-    parser.add_argument("--mode", default="default")
+    parser.add_argument("--mode", default="filtered",
+                        help='filtered, exact or float_only ("default": filtered)')
     args = parser.parse_args()
 
     if args.cluster:

@@ -11,7 +11,7 @@ std::vector<Method> methods_of(const std::vector<double>& tolerances,
   for (const double eps : tolerances)
     methods.push_back({Kind::tolerance, eps, "tolerance", "eps=" + short_number(eps), false});
   for (const double width : widths)
-    methods.push_back({Kind::filtered, width, "default", "width=" + short_number(width), true});
+    methods.push_back({Kind::filtered, width, "filtered", "width=" + short_number(width), true});
   methods.push_back({Kind::exact, 0.0, "exact", "", true});
   for (Method& m : methods) m.min_separation = min_separation;
   return methods;

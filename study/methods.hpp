@@ -1,5 +1,5 @@
 // The methods and settings the study measures: the uncertified float_only mode and tolerance
-// method (core/float_only/tolerance_ccd.hpp), the default path at each TOI width, the exact path;
+// method (core/float_only/tolerance_ccd.hpp), the filtered path at each TOI width, the exact path;
 // each deciding contact, or with a minimum separation D > 0 "within distance D".
 #pragma once
 
@@ -16,18 +16,18 @@ enum class Kind { float_only, tolerance, filtered, exact };
 struct Method {
   Kind kind = Kind::filtered;
   double parameter = 0.0;  // tolerance: eps; filtered: the TOI width
-  std::string name;        // float_only, tolerance, default, exact
+  std::string name;        // float_only, tolerance, filtered, exact
   std::string setting;     // eps=1e-9, width=0, or empty
   bool certified = false;
   /// D >= 0: every method decides "within distance D" (float_only: the common practice with
-  /// eps = D; tolerance: distance <= D + eps at a cubic root; default, exact: min_separation D).
+  /// eps = D; tolerance: distance <= D + eps at a cubic root; filtered, exact: min_separation D).
   double min_separation = 0.0;
 
   std::string label() const { return setting.empty() ? name : name + " " + setting; }
 };
 
 /// The methods and settings measured, in report order: float_only; the tolerance method at
-/// each eps; the default path at each TOI width; exact; all with minimum separation D.
+/// each eps; the filtered path at each TOI width; exact; all with minimum separation D.
 std::vector<Method> methods_of(const std::vector<double>& tolerances,
                                const std::vector<double>& widths, double min_separation = 0.0);
 

@@ -231,7 +231,7 @@ void study_markdown(std::ostream& out, const std::vector<DatasetResults>& result
     out << "minimum separation: " << shortest_text(min_separation)
         << " (a query collides when its primitives come within this Euclidean distance; "
            "float_only: the common practice with eps = D; tolerance: distance <= D + eps at a "
-           "cubic root; default and exact: min_separation = D; verdicts and exact TOIs: the "
+           "cubic root; filtered and exact: min_separation = D; verdicts and exact TOIs: the "
            "exact path at D)\n\n";
   for (const DatasetResults& r : results) {
     const Dataset& d = *r.dataset;

@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   std::string study_type;
   CLI::App app(
       "Numerical-stability study: each method or setting (float_only; the tolerance method, "
-      "distance <= eps at a cubic root, at each eps; the default path at each TOI width; exact) "
+      "distance <= eps at a cubic root, at each eps; the filtered path at each TOI width; exact) "
       "against the exact truth on each data set: false positives, false negatives, late "
       "(non-conservative) TOIs, TOI error, mean time per query (single thread). A folder with "
       "a manifest.json (exactccd generate) is also broken down per family and per coordinate "
@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
       "verdicts and exact TOIs of every data set come from the exact path at D (truth columns "
       "and sidecars are not read). TOI error: the reported toi "
       "(toi_lo of an enclosure) minus t*, as the signed distance to the exact tightest pair "
-      "[lo, hi]; late: toi > lo.\n\nExit status: 0 the certified methods (default, exact) show "
+      "[lo, hi]; late: toi > lo.\n\nExit status: 0 the certified methods (filtered, exact) show "
       "no false positive, false negative or late TOI; 1 one of them does; 2 bad command line, "
       "input or output (an existing --out-md file without --force); 3 internal error.");
   study->add_flag("--json", study_options.json,
@@ -41,7 +41,7 @@ int main(int argc, char** argv) {
   study->add_option("--out-md", study_options.out_md, "Also write the Markdown tables to FILE");
   add_force_flag(study, study_options.force);
   // One comma-separated argument each, so that a PATH after them stays a PATH.
-  study->add_option("--widths", study_options.widths, "The default path's TOI widths")
+  study->add_option("--widths", study_options.widths, "The filtered path's TOI widths")
       ->delimiter(',')
       ->allow_extra_args(false)
       ->check(numeric_text(false))
@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
       ->description(
           "Minimum separation D >= 0: every method decides whether the primitives come within "
           "Euclidean distance D (float_only: the common practice with eps = D; tolerance: "
-          "distance <= D + eps at a cubic root; default and exact: min_separation = D); "
+          "distance <= D + eps at a cubic root; filtered and exact: min_separation = D); "
           "verdicts and exact TOIs from the exact path at D (0: contact, the truth column)");
   study->add_option("PATH", study_options.paths,
                     "CSV files, folders of them, or generated suites; one data set each");

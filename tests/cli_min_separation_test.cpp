@@ -59,7 +59,7 @@ TEST_F(CliTest, GradeJudgesTimesAgainstTheFirstTimeWithinDelta) {
 TEST_F(CliTest, BenchRunsEachSeparationAgainstTheExactPath) {
   const fs::path file = write_file("vertex-face/q.csv", kHalfThirdNever);
   const RunResult r = run({"bench", "--json", "--repetitions", "1", "--modes",
-                           "float_only,default", "--min-separation", "0,0.125", file.string()});
+                           "float_only,filtered", "--min-separation", "0,0.125", file.string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j.size(), 4u);
@@ -67,7 +67,7 @@ TEST_F(CliTest, BenchRunsEachSeparationAgainstTheExactPath) {
     const double delta = row["min_separation"].get<double>();
     EXPECT_TRUE(delta == 0.0 || delta == 0.125);
     EXPECT_EQ(row["truth"].get<std::string>(), delta > 0 ? "exact path" : "truth column");
-    if (delta > 0 && row["mode"] == "default") {
+    if (delta > 0 && row["mode"] == "filtered") {
       EXPECT_EQ(row["false_positives"].get<int>(), 0);
       EXPECT_EQ(row["false_negatives"].get<int>(), 0);
       EXPECT_EQ(row["late_tois"].get<int>(), 0);
@@ -75,7 +75,7 @@ TEST_F(CliTest, BenchRunsEachSeparationAgainstTheExactPath) {
     }
   }
   // Relative: 0.125 of the data set's size (the box diagonal: x, y in [0, 1], z in [-2, 1]).
-  const RunResult relative = run({"bench", "--json", "--repetitions", "1", "--modes", "default",
+  const RunResult relative = run({"bench", "--json", "--repetitions", "1", "--modes", "filtered",
                                   "--min-separation", "0.125", "--relative-separation",
                                   file.string()});
   ASSERT_EQ(relative.status, 0) << relative.err;

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -274,6 +275,30 @@ TEST_F(CliRigid, FloatOnlyModeRunsTheUncertifiedTest) {
   EXPECT_NE(text.out.find("mode float_only"), std::string::npos) << text.out;
 }
 
+TEST_F(CliRigid, ModeFilteredAndItsOldNameDefault) {
+  // "filtered" (the certified default) and "default", its name before, still accepted: the
+  // same contact, printed "filtered" (cube_turns_in_steps.json itself still says "default").
+  std::ifstream in(kData / "cube_turns_into_wall.json");
+  json scene = json::parse(in);
+  scene["bodies"][0]["obj"] = (kData / "cube.obj").string();
+  std::map<std::string, json> contact;
+  for (const std::string mode : {"filtered", "default"}) {
+    SCOPED_TRACE(mode);
+    scene["mode"] = mode;
+    const RunResult r = run_scene(scene);
+    ASSERT_EQ(r.status, 1) << r.err;
+    const json j = parse_json(r);
+    EXPECT_EQ(j["mode"], "filtered");
+    EXPECT_EQ(j["first_contact_step"], 1);
+    contact[mode] = j["steps"][0]["contact"];
+    const RunResult text = run_scene(scene, false);
+    EXPECT_NE(text.out.find("mode filtered"), std::string::npos) << text.out;
+  }
+  EXPECT_EQ(contact["filtered"], contact["default"]);
+  scene.erase("mode");
+  EXPECT_EQ(parse_json(run_scene(scene))["mode"], "filtered");
+}
+
 // ---------------------------------------------------------------------------------------------
 // Minimum separation: --min-separation D, or "min_separation" in the file
 
@@ -337,7 +362,7 @@ TEST_F(CliRigid, BenchRigidWithMinSeparation) {
   // bit (exit status 0), float_only is graded against the first certified mode; a delta turns
   // near misses into contacts.
   const RunResult r = run_bounded({"bench", "--rigid", "--rigid-count", "6", "--seed", "3",
-                                   "--repetitions", "1", "--modes", "default,exact,float_only",
+                                   "--repetitions", "1", "--modes", "filtered,exact,float_only",
                                    "--min-separation", "0,0.001", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = parse_json(r);
@@ -351,11 +376,11 @@ TEST_F(CliRigid, BenchRigidWithMinSeparation) {
   EXPECT_EQ(modes[4]["mode"], "exact");
   EXPECT_EQ(modes[3]["contacts"], modes[4]["contacts"]);
   EXPECT_GE(modes[3]["contacts"].get<int>(), modes[0]["contacts"].get<int>());
-  EXPECT_EQ(modes[5]["graded_against"], "default");
+  EXPECT_EQ(modes[5]["graded_against"], "filtered");
   EXPECT_TRUE(modes[5].at("false_negatives").is_number());
   // Relative: factors of the set's size.
   const RunResult rel = run_bounded({"bench", "--rigid", "--rigid-count", "6", "--repetitions",
-                                     "1", "--modes", "default", "--min-separation", "0.01",
+                                     "1", "--modes", "filtered", "--min-separation", "0.01",
                                      "--relative-separation", "--json"});
   ASSERT_EQ(rel.status, 0) << rel.err;
   const json jr = parse_json(rel);
@@ -365,10 +390,10 @@ TEST_F(CliRigid, BenchRigidWithMinSeparation) {
   EXPECT_DOUBLE_EQ(jr["modes"][0]["min_separation"].get<double>(), 0.01 * size);
   // The text table gains a delta column and names the delta of each grading.
   const RunResult text = run_bounded({"bench", "--rigid", "--rigid-count", "6", "--repetitions",
-                                      "1", "--modes", "default,float_only", "--min-separation",
+                                      "1", "--modes", "filtered,float_only", "--min-separation",
                                       "0.001"});
   EXPECT_EQ(text.status, 0) << text.err;
-  EXPECT_NE(text.out.find("float_only against default at delta 0.001"), std::string::npos)
+  EXPECT_NE(text.out.find("float_only against filtered at delta 0.001"), std::string::npos)
       << text.out;
   for (const char* delta : {"-1", "nan"}) {
     SCOPED_TRACE(delta);
@@ -457,7 +482,9 @@ TEST_F(CliRigid, MalformedScenesAreRejectedWithTheKey) {
   s = good_scene(); s["bodies"][0]["name"] = 7;
   expect_rejected(s, {"bodies[0].name", "a string"});
   s = good_scene(); s["mode"] = "fast";
-  expect_rejected(s, {"mode", "'fast'"});
+  expect_rejected(s, {"mode", "'fast'", "\"filtered\"", "\"float_only\"", "\"exact\""});
+  s = good_scene(); s["mode"] = 1;
+  expect_rejected(s, {"mode", "\"filtered\""});
   for (double bad : {0.0, -1.0, 1.5}) {
     s = good_scene(); s["t_max"] = bad;
     expect_rejected(s, {"t_max", "(0, 1]"});

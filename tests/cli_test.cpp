@@ -373,7 +373,7 @@ std::map<std::string, std::size_t> stage_counts(const nlohmann::json& j) {
 TEST_F(CliTest, CheckEachModeOnOneSampleFile) {
   const std::vector<bool> truth = read_truth_column(kSampleFile);
   const std::size_t collide = std::count(truth.begin(), truth.end(), true);
-  for (const std::string mode : {"float_only", "default", "exact"}) {
+  for (const std::string mode : {"float_only", "filtered", "exact"}) {
     SCOPED_TRACE(mode);
     const RunResult r = run({"check", "--json", "--mode", mode, kSampleFile.string()});
     const nlohmann::json j = parse_json(r);
@@ -465,7 +465,7 @@ TEST_F(CliTest, CheckOnlyExactModeDecidesNonDoubleCoordinates) {
   std::string text = "\n";
   for (const std::string& row : rows) text += row + "\n";
   const fs::path file = write_file("vertex-face/third.csv", text);
-  for (const char* mode : {"default", "float_only"}) {
+  for (const char* mode : {"filtered", "float_only"}) {
     SCOPED_TRACE(mode);
     expect_bad_input(run({"check", "--mode", mode, file.string()}), {file.string() + ":6:"});
   }
@@ -479,7 +479,52 @@ TEST_F(CliTest, CheckOnlyExactModeDecidesNonDoubleCoordinates) {
 }
 
 TEST_F(CliTest, CheckRejectsUnknownMode) {
-  expect_bad_input(run({"check", "--mode", "fast", kSampleFile.string()}), {"--mode"});
+  // The message lists the valid names, the alias too.
+  expect_bad_input(run({"check", "--mode", "fast", kSampleFile.string()}),
+                   {"--mode", "'fast'", "\"float_only\"", "\"filtered\"", "\"exact\"",
+                    "\"default\""});
+  expect_bad_input(run({"check", "--mode", "Filtered", kSampleFile.string()}), {"--mode"});
+}
+
+// Mode::filtered is printed "filtered"; "default", its name before, is still accepted as an
+// alias (old scripts, A/B runs against an older binary): the same decisions, printed as
+// "filtered". The help names both.
+TEST_F(CliTest, CheckAcceptsDefaultAsTheOldNameOfFiltered) {
+  std::map<std::string, std::string> answers;
+  for (const std::string mode : {"filtered", "default"}) {
+    SCOPED_TRACE(mode);
+    const fs::path out = dir_ / ("answers-" + mode + ".csv");
+    const RunResult r =
+        run({"check", "--json", "--mode", mode, "--out", out.string(), kSampleFile.string()});
+    EXPECT_EQ(r.status, 0) << r.err;
+    const nlohmann::json j = parse_json(r);
+    EXPECT_EQ(j.value("mode", ""), "filtered");
+    EXPECT_EQ(j.value("false_positives", 1u), 0u);
+    EXPECT_EQ(j.value("false_negatives", 1u), 0u);
+    answers[mode] = read_text(out);
+    EXPECT_FALSE(answers[mode].empty());
+
+    const RunResult table = run({"check", "--mode", mode, kSampleFile.string()});
+    EXPECT_EQ(table.status, 0) << table.err;
+    EXPECT_EQ(table.out.rfind("mode: filtered", 0), 0u) << table.out;
+  }
+  EXPECT_EQ(answers["filtered"], answers["default"]);  // identical verdicts and TOIs
+  // Without --mode: filtered.
+  EXPECT_EQ(parse_json(run({"check", "--json", kSampleFile.string()})).value("mode", ""),
+            "filtered");
+  const RunResult help = run({"check", "--help"});
+  EXPECT_EQ(help.status, 0) << help.err;
+  EXPECT_NE(help.out.find("filtered"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("'default' is accepted as the old name of"), std::string::npos)
+      << help.out;
+  // bench --modes takes the alias too, and prints the canonical name.
+  const RunResult bench = run({"bench", "--json", "--repetitions", "1", "--modes",
+                               "default,exact", kSampleFile.string()});
+  EXPECT_EQ(bench.status, 0) << bench.err;
+  const nlohmann::json b = parse_json(bench);
+  ASSERT_TRUE(b.is_array() && b.size() == 2u) << bench.out;
+  EXPECT_EQ(b[0].value("mode", ""), "filtered");
+  EXPECT_EQ(b[1].value("mode", ""), "exact");
 }
 
 // ---- bench ---------------------------------------------------------------------------------
@@ -509,7 +554,7 @@ TEST_F(CliTest, BenchJsonOnOneFileHasOneObjectPerMode) {
   const nlohmann::json j = parse_json(r);
   ASSERT_TRUE(j.is_array()) << r.out;
   ASSERT_EQ(j.size(), 3u) << r.out;
-  const std::vector<std::string> modes = {"float_only", "default", "exact"};
+  const std::vector<std::string> modes = {"float_only", "filtered", "exact"};
   for (std::size_t k = 0; k < 3; ++k) {
     SCOPED_TRACE(modes[k]);
     expect_bench_object(j[k]);
@@ -525,15 +570,15 @@ TEST_F(CliTest, BenchJsonOnOneFileHasOneObjectPerMode) {
   EXPECT_EQ(j[2].at("stage_share").value("exact", 0.0), 1.0);
 }
 
-TEST_F(CliTest, BenchSimulationIsDecidedExactlyByTheDefaultMode) {
-  const RunResult r = run({"bench", "--json", "--repetitions", "1", "--modes", "default",
+TEST_F(CliTest, BenchSimulationIsDecidedExactlyByTheFilteredMode) {
+  const RunResult r = run({"bench", "--json", "--repetitions", "1", "--modes", "filtered",
                            "--simulation", "--resolution", "4", "--steps", "8"});
   EXPECT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = parse_json(r);
   ASSERT_TRUE(j.is_array() && j.size() == 1u) << r.out;
   expect_bench_object(j[0]);
   EXPECT_EQ(j[0].value("dataset", ""), "simulation");
-  EXPECT_EQ(j[0].value("mode", ""), "default");
+  EXPECT_EQ(j[0].value("mode", ""), "filtered");
   EXPECT_GT(j[0].value("queries", 0u), 0u);
   EXPECT_EQ(j[0].value("false_positives", 1u), 0u);
   EXPECT_EQ(j[0].value("false_negatives", 1u), 0u);
@@ -547,7 +592,10 @@ TEST_F(CliTest, BenchWithoutPathRunsTheSampleQueries) {
 }
 
 TEST_F(CliTest, BenchRejectsBadCommandLine) {
-  expect_bad_input(run({"bench", "--modes", "fast", kSampleFile.string()}), {"--modes"});
+  expect_bad_input(run({"bench", "--modes", "fast", kSampleFile.string()}),
+                   {"--modes", "'fast'", "\"float_only\"", "\"filtered\"", "\"exact\""});
+  expect_bad_input(run({"bench", "--modes", "filtered,fast", kSampleFile.string()}),
+                   {"--modes", "'fast'"});
   expect_bad_input(run({"bench", "--repetitions", "0", kSampleFile.string()}), {"--repetitions"});
   expect_bad_input(run({"bench", "--resolution", "8", kSampleFile.string()}),
                    {"--resolution", "--simulation"});
@@ -566,10 +614,10 @@ TEST_F(CliTest, BenchRigidTimesBothModesWithoutDisagreement) {
   EXPECT_EQ(j.value("edge_edge", 0u), 30u);
   EXPECT_EQ(j.value("seed", 0u), 3u);
   EXPECT_EQ(j.value("disagreements", 1u), 0u);
-  EXPECT_TRUE(j.at("mean_ratio_default_over_exact").is_number());
+  EXPECT_TRUE(j.at("mean_ratio_filtered_over_exact").is_number());
   const nlohmann::json& modes = j.at("modes");
   ASSERT_EQ(modes.size(), 2u) << r.out;
-  EXPECT_EQ(modes[0].value("mode", ""), "default");
+  EXPECT_EQ(modes[0].value("mode", ""), "filtered");
   EXPECT_EQ(modes[1].value("mode", ""), "exact");
   for (const nlohmann::json& m : modes) {
     EXPECT_GT(m.value("mean_ns", 0.0), 0.0);
@@ -578,7 +626,7 @@ TEST_F(CliTest, BenchRigidTimesBothModesWithoutDisagreement) {
     for (const auto& share : m.at("stage_share").items()) shares += share.value().get<double>();
     EXPECT_NEAR(shares, 1.0, 1e-12);
   }
-  // Both modes find the same contacts (some, not all), and the default mode decides most of
+  // Both modes find the same contacts (some, not all), and the filtered mode decides most of
   // them in floating point.
   EXPECT_EQ(modes[0].value("contacts", 0u), modes[1].value("contacts", 1u));
   EXPECT_GT(modes[0].value("contacts", 0u), 0u);
@@ -587,8 +635,9 @@ TEST_F(CliTest, BenchRigidTimesBothModesWithoutDisagreement) {
   EXPECT_GT(modes[0].at("stage_share").value("filter", 0.0), 0.5);
 
   const RunResult text = run({"bench", "--rigid", "--rigid-count", "12", "--repetitions", "1",
-                              "--modes", "default"});
+                              "--modes", "filtered,exact"});
   EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("filtered / exact: mean"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("12 queries (6 vertex-face, 6 edge-edge"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("disagreements between modes (verdict, toi_lo, toi_hi): 0"),
             std::string::npos)
@@ -597,7 +646,8 @@ TEST_F(CliTest, BenchRigidTimesBothModesWithoutDisagreement) {
 
 TEST_F(CliTest, BenchRigidGradesFloatOnlyAgainstTheCertifiedMode) {
   // float_only (uncertified) runs on rigid pairs too; it is graded against the first certified
-  // mode and never counted as a disagreement (exit status 0).
+  // mode and never counted as a disagreement (exit status 0). "default": the old name of
+  // filtered, printed "filtered".
   const RunResult r = run({"bench", "--rigid", "--rigid-count", "30", "--seed", "3",
                            "--repetitions", "1", "--modes", "default,float_only", "--json"});
   EXPECT_EQ(r.status, 0) << r.err;
@@ -607,7 +657,8 @@ TEST_F(CliTest, BenchRigidGradesFloatOnlyAgainstTheCertifiedMode) {
   const nlohmann::json& modes = j.at("modes");
   ASSERT_EQ(modes.size(), 2u) << r.out;
   EXPECT_EQ(modes[1].value("mode", ""), "float_only");
-  EXPECT_EQ(modes[1].value("graded_against", ""), "default");
+  EXPECT_EQ(modes[0].value("mode", ""), "filtered");
+  EXPECT_EQ(modes[1].value("graded_against", ""), "filtered");
   EXPECT_TRUE(modes[1].at("false_positives").is_number());
   EXPECT_TRUE(modes[1].at("false_negatives").is_number());
   EXPECT_TRUE(modes[1].at("late_tois").is_number());

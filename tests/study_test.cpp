@@ -228,8 +228,8 @@ const nlohmann::json& method_row(const nlohmann::json& methods, const std::strin
   return none;
 }
 
-const std::vector<std::string> kCertified = {"default width=0", "default width=1e-6",
-                                             "default width=1e-3", "exact"};
+const std::vector<std::string> kCertified = {"filtered width=0", "filtered width=1e-6",
+                                             "filtered width=1e-3", "exact"};
 
 TEST_F(StudyCommand, SampleFileCertifiedMethodsShowNoErrors) {
   const fs::path file =
@@ -260,8 +260,9 @@ TEST_F(StudyCommand, SampleFileCertifiedMethodsShowNoErrors) {
   }
   // An enclosure of width w starts within w of t* (the API's contract).
   for (const double w : {0.0, 1e-6, 1e-3}) {
-    const std::string label = w == 0.0 ? "default width=0" : w == 1e-6 ? "default width=1e-6"
-                                                                        : "default width=1e-3";
+    const std::string label = w == 0.0    ? "filtered width=0"
+                              : w == 1e-6 ? "filtered width=1e-6"
+                                          : "filtered width=1e-3";
     EXPECT_LE(method_row(d["methods"], label)["max_abs_toi_error"].get<double>(), w) << label;
   }
   for (const std::string label : {"float_only", "tolerance eps=1e-12", "tolerance eps=1e-9",
@@ -355,7 +356,7 @@ TEST_F(StudyCommand, SuiteIsBrokenDownPerFamilyAndScaleWithSidecarTois) {
       EXPECT_EQ(m["collisions"], 1) << m["label"];
       EXPECT_EQ(m["late_tois"], 0) << m["label"];
       // A positive width allows an earlier toi_lo.
-      if (m["method"] != "default" || m["parameter"] == 0.0)
+      if (m["method"] != "filtered" || m["parameter"] == 0.0)
         EXPECT_EQ(m["max_abs_toi_error"], 0.0) << m["label"];
     }
   }
@@ -438,8 +439,8 @@ TEST_F(StudyCommand, MinSeparationCommonPracticeMissesAPassingVertexExactDoesNot
     EXPECT_EQ(m["late_tois"], 0) << label;
     EXPECT_EQ(m["toi_errors_measured"], 2) << label;
   }
-  // The default path's TOIs are the exact path's tightest pairs.
-  EXPECT_EQ(method_row(d["methods"], "default width=0")["max_abs_toi_error"], 0.0);
+  // The filtered path's TOIs are the exact path's tightest pairs.
+  EXPECT_EQ(method_row(d["methods"], "filtered width=0")["max_abs_toi_error"], 0.0);
   // The common practice, at eps = D and at D + eps: query 0 missed, query 1 late by D/2.
   for (const std::string label : {"float_only", "tolerance eps=1e-12", "tolerance eps=1e-9",
                                   "tolerance eps=1e-6"}) {

@@ -1,4 +1,4 @@
-// `exactccd bench`: time per query and errors of each mode (float_only, default, exact) on
+// `exactccd bench`: time per query and errors of each mode (float_only, filtered, exact) on
 // benchmark CSV data sets and on the simulation-like set (corpus/simulation_queries.hpp).
 #pragma once
 
@@ -27,7 +27,7 @@ struct BenchOptions {
   std::string default_path;
 };
 
-/// Runs the subcommand. Exit status 1 when a certified mode (default, exact) disagrees with
+/// Runs the subcommand. Exit status 1 when a certified mode (filtered, exact) disagrees with
 /// the truth (a wrong truth column, or a bug), else 0; float_only's errors are only reported.
 /// Throws InputError / UsageError for bad input.
 int run_bench(const BenchOptions& options);

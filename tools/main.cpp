@@ -38,7 +38,7 @@ constexpr const char* kExitStatusHelp =
     "Exit status:\n"
     "  0  all ran and everything agrees (check: every decision equals the truth column;\n"
     "     grade: every answer is correct and every toi conservative; bench: the certified\n"
-    "     modes (default, exact) agree with the truth; simulate: always)\n"
+    "     modes (filtered, exact) agree with the truth; simulate: always)\n"
     "  1  some disagreement (check: a decision differs from the truth column; grade: a\n"
     "     false positive, a false negative or a toi later than the exact one; bench: a\n"
     "     certified mode disagrees with the truth)\n"
@@ -52,9 +52,24 @@ constexpr const char* kExitStatusHelp =
     "  1 one of them does; 2 and 3 as above.\n";
 
 constexpr const char* kModeHelp =
-    "The path that decides: default (culling, certified interval filters, exact fallback: "
+    "The path that decides: filtered (culling, certified interval filters, exact fallback: "
     "always exact), float_only (uncertified double-precision cubic test, for comparison), "
-    "exact (the exact rational procedure only)";
+    "exact (the exact rational procedure only). 'default' is accepted as the old name of "
+    "filtered";
+
+// --mode and --modes: a name parse_mode_name accepts (the canonical names, or the alias
+// "default" of filtered); else an error listing them.
+CLI::Validator mode_name_check() {
+  std::string names;
+  for (const std::string& name : mode_names()) names += (names.empty() ? "" : ",") + name;
+  return CLI::Validator(
+      [](std::string& text) {
+        return parse_mode_name(text) ? std::string()
+                                     : "unknown mode " + exactccd::quote_for_message(text) +
+                                           ": expected " + mode_names_text();
+      },
+      "{" + names + "}");
+}
 
 // The study program: beside this one when installed together, else where the build put it
 // (EXACTCCD_STUDY_PROGRAM, empty when this build has no study).
@@ -118,12 +133,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bool check_json = false;
   check->add_flag("--json", check_json, "The same as --format json");
-  std::string check_mode = "default";
+  std::string check_mode = exactccd::to_string(exactccd::Mode::filtered);
   check->add_option("--mode", check_mode,
                     std::string(kModeHelp) +
                         ". Coordinates must be doubles, except with --mode exact, which decides "
                         "any rational query exactly")
-      ->check(CLI::IsMember(mode_names()))
+      ->check(mode_name_check())
       ->capture_default_str();
   check->add_option("--out", check_options.out_path,
                     "Write one line per query: file,index,collides,toi_lo,toi_hi (index 0-based "
@@ -198,10 +213,11 @@ int main(int argc, char** argv) {
   // a PATH.
   std::vector<std::string> bench_modes = mode_names();
   CLI::Option* bench_modes_option =
-      bench->add_option("--modes", bench_modes, "Comma-separated modes: float_only,default,exact")
+      bench->add_option("--modes", bench_modes,
+                        "Comma-separated modes: float_only,filtered,exact ('default': filtered)")
       ->delimiter(',')
       ->allow_extra_args(false)
-      ->check(CLI::IsMember(mode_names()))
+      ->check(mode_name_check())
       ->capture_default_str();
   bench
       ->add_option("--repetitions", bench_options.repetitions,
@@ -234,7 +250,7 @@ int main(int argc, char** argv) {
   RigidBenchOptions rigid_bench_options;
   bool bench_rigid = false;
   bench->add_flag("--rigid", bench_rigid,
-                  "Time the rigid-body modes (default, exact; float_only on request, graded "
+                  "Time the rigid-body modes (filtered, exact; float_only on request, graded "
                   "against the first certified mode) on seeded random rigid pairs near contact "
                   "instead (--rigid-count, --seed, --modes, --repetitions, --min-separation, "
                   "--relative-separation, --json; each delta a run of every mode); exit status 1 "
@@ -249,7 +265,7 @@ int main(int argc, char** argv) {
   app.add_subcommand(
       "study",
       "Numerical-stability study: each method or setting (float_only; the tolerance method, "
-      "distance <= eps at a cubic root, at each eps; the default path at each TOI width; exact) "
+      "distance <= eps at a cubic root, at each eps; the filtered path at each TOI width; exact) "
       "against the exact truth on each data set (runs the program exactccd_study of the "
       "benchmarks; see exactccd study --help).");
 
@@ -379,7 +395,7 @@ int main(int argc, char** argv) {
       rigid_bench_options.json = bench_options.json;
       rigid_bench_options.min_separations = bench_options.min_separations;
       rigid_bench_options.relative_separation = bench_options.relative_separation;
-      if (bench_modes_option->count() > 0) {  // else default, exact
+      if (bench_modes_option->count() > 0) {  // else filtered, exact
         rigid_bench_options.modes.clear();
         for (const std::string& name : bench_modes)
           rigid_bench_options.modes.push_back(*parse_mode_name(name));

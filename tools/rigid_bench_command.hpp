@@ -1,4 +1,4 @@
-// `exactccd bench --rigid`: time per query of the rigid-body modes (default, exact, and on
+// `exactccd bench --rigid`: time per query of the rigid-body modes (filtered, exact, and on
 // request float_only) on seeded random rigid pairs near contact (corpus/rigid_queries.hpp), with
 // the certified modes' answers checked against each other bit for bit and float_only's graded
 // against the first certified mode (false positives, false negatives, late TOIs); each minimum
@@ -30,7 +30,7 @@ struct RigidBenchOptions {
   bool relative_separation = false;
 };
 
-/// Runs the benchmark. Exit status 1 when two certified modes (default, exact) give different
+/// Runs the benchmark. Exit status 1 when two certified modes (filtered, exact) give different
 /// answers to a query (verdict, toi_lo or toi_hi) at some delta, else 0; float_only's errors
 /// are reported, not counted. Throws UsageError for an empty query set, mode list or list of
 /// deltas, or a delta that is negative or not finite.

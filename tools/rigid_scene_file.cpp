@@ -12,12 +12,14 @@
 #include <initializer_list>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
 #include "exactccd/query_file.hpp"
 #include "obj_reader.hpp"
+#include "oracle/names.hpp"
 
 namespace exactccd::cli {
 
@@ -269,16 +271,13 @@ class Reader {
       if (!(s.min_separation >= 0.0)) fail("min_separation", "must be >= 0");
     }
     if (const auto it = v.find("mode"); it != v.end()) {
-      expect(it->is_string(), *it, "mode", "\"default\", \"exact\" or \"float_only\"");
+      expect(it->is_string(), *it, "mode", oracle::mode_names_text());
       const std::string mode = it->get<std::string>();
-      if (mode == "default")
-        s.mode = Mode::filtered;
-      else if (mode == "exact")
-        s.mode = Mode::exact;
-      else if (mode == "float_only")
-        s.mode = Mode::float_only;  // the uncertified double test, for comparison
+      // float_only: the uncertified double test, for comparison; "default": filtered's old name
+      if (const std::optional<Mode> m = oracle::parse_mode_name(mode))
+        s.mode = *m;
       else
-        fail("mode", "expected \"default\", \"exact\" or \"float_only\", found " +
+        fail("mode", "expected " + oracle::mode_names_text() + ", found " +
                          quote_for_message(mode));
     }
     const Json& bodies = require(v, "the scene", "bodies");

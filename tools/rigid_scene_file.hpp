@@ -47,7 +47,7 @@ struct RigidSceneFile {
 /// wrong type, a non-finite number, an index out of range or a triangle repeating a vertex, a
 /// row count that does not match, a turn of 180 degrees or more or about a zero axis, an
 /// option outside its domain (t_max in (0, 1], toi_width >= 0, min_separation >= 0, mode
-/// default, exact or float_only); OBJ errors as read_obj.
+/// filtered, exact or float_only, or default, the old name of filtered); OBJ errors as read_obj.
 RigidSceneFile read_rigid_scene_file(const std::string& path);
 
 }  // namespace exactccd::cli

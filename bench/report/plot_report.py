@@ -17,15 +17,22 @@ import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)
 KIND_COLOURS = {
     "float_only": ["#d62728"],
     "tolerance": ["#ffbb78", "#ff7f0e", "#a65200"],
-    "default": ["#9ecae1", "#3182bd", "#08306b"],
+    "filtered": ["#9ecae1", "#3182bd", "#08306b"],
     "exact": ["#000000"],
 }
-KIND_MARKERS = {"float_only": "v", "tolerance": "^", "default": "o", "exact": "s"}
+KIND_MARKERS = {"float_only": "v", "tolerance": "^", "filtered": "o", "exact": "s"}
+
+
+def canonical(name):
+    """A method or mode name as exactccd prints it now: JSON written before the rename says
+    "default" for "filtered"."""
+    return "filtered" if name == "default" else name
 
 
 def style(method, index_in_kind):
-    shades = KIND_COLOURS.get(method["method"], ["#7f7f7f"])
-    return shades[min(index_in_kind, len(shades) - 1)], KIND_MARKERS.get(method["method"], "D")
+    kind = canonical(method["method"])
+    shades = KIND_COLOURS.get(kind, ["#7f7f7f"])
+    return shades[min(index_in_kind, len(shades) - 1)], KIND_MARKERS.get(kind, "D")
 
 
 def styled(methods):
@@ -201,7 +208,7 @@ def load_min_separation(specs):
 def separation_method(row):
     if row["mode"] == "float_only":
         return "float cubic" if row["min_separation"] == 0 else "common practice"
-    return row["mode"]
+    return canonical(row["mode"])
 
 
 def separation_label(row):
@@ -239,7 +246,7 @@ def min_separation_plot(sets, path):
     colour per delta."""
     fig, axes = plt.subplots(1, len(sets), figsize=(4.6 * len(sets), 4.2), dpi=100,
                              squeeze=False)
-    markers = {"float cubic": "v", "common practice": "^", "default": "o", "exact": "s"}
+    markers = {"float cubic": "v", "common practice": "^", "filtered": "o", "exact": "s"}
     for ax, (name, rows) in zip(axes[0], sets):
         labels = []
         for r in rows:
@@ -277,7 +284,7 @@ def min_separation_section(sets, command):
              "the closed primitives is at most delta at some t in [0, 1]; truth and exact TOIs "
              "come from the exact path at each delta (`proofs/min_separation.md`). Methods: "
              "`common practice` (the float cubic's roots, the distance at each root compared "
-             "with delta, uncertified: `float_only` with delta > 0), `default` (exactccd's "
+             "with delta, uncertified: `float_only` with delta > 0), `filtered` (exactccd's "
              "certified path at delta, TOIs tightened to adjacent doubles), `exact` (the exact "
              "procedure alone). delta as `F x size` is F times the set's size (the diagonal of "
              "the box of all its coordinates); a bare number is an absolute delta. Late TOIs: "
@@ -370,7 +377,7 @@ def main():
         "- Methods: `float_only` (the classic cubic test in doubles: coplanarity roots, "
         "inclusion signs in doubles); `tolerance eps=E` (the same roots, then contact iff the "
         "distance between the primitives at the root, computed in doubles, is <= E, an "
-        "ABSOLUTE distance: scale-dependent); `default width=W` (exactccd's certified path, "
+        "ABSOLUTE distance: scale-dependent); `filtered width=W` (exactccd's certified path, "
         "TOI enclosure of width <= W, toi = its lower end); `exact` (the exact path alone).",
         "- FP / FN: false positives / false negatives against the exact verdict. Late TOIs: "
         "reported toi > t* (a missed first contact: the simulator advances past it). TOI error: "

@@ -22,6 +22,7 @@ inline void add_threads_and_mode_options(CLI::App& app, int& threads, Mode& mode
                  "(uncertified doubles, for comparison: the self-check may fail)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, Mode>{{"filtered", Mode::filtered},
+                                      {"default", Mode::filtered},  // its old name
                                       {"exact", Mode::exact},
                                       {"float_only", Mode::float_only}},
           CLI::ignore_case))

@@ -2,9 +2,9 @@
 
 Every vertex moves on a straight line, x(t) = (1 - t) x_t0 + t x_t1. A query collides iff the
 closed primitives (closed triangle, closed segments) share a point at some t in [0, t_max]; in
-the default mode the answer is exact for every finite input, and [toi_lo, toi_hi] encloses the
-exact earliest contact time. With min_separation=delta > 0 a query collides iff the primitives
-come within Euclidean distance delta, and the TOI is the earliest such time.
+the default mode, "filtered", the answer is exact for every finite input, and [toi_lo, toi_hi]
+encloses the exact earliest contact time. With min_separation=delta > 0 a query collides iff
+the primitives come within Euclidean distance delta, and the TOI is the earliest such time.
 
     import exactccd
     r = exactccd.vertex_face_ccd(p0, a0, b0, c0, p1, a1, b1, c1)   # numpy 3-vectors
@@ -77,15 +77,16 @@ _EDGE_EDGE_ROWS = ("ea0_t0", "ea1_t0", "eb0_t0", "eb1_t0", "ea0_t1", "ea1_t1", "
 
 
 def vertex_face_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
-                    mode: str = "default", min_separation: float = 0.0) -> CcdResult:
+                    mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
     """Vertex p against the closed triangle (a, b, c), over [0, t_max].
 
     vertex_face_ccd(p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1) with 3-vectors, or
     vertex_face_ccd(points) with one (8, 3) array in that row order.
     t_max in (0, 1]; toi_width >= 0 (0: the tightest pair of doubles around the exact time);
-    mode "default" (certified), "exact" (the rational path only) or "float_only" (uncertified,
-    for comparison). min_separation: delta >= 0, finite; collides iff the vertex comes within
-    Euclidean distance delta of the triangle, the TOI the earliest such time (0: contact).
+    mode "filtered" (certified; "default", its old name, is accepted too), "exact" (the rational
+    path only) or "float_only" (uncertified, for comparison). min_separation: delta >= 0,
+    finite; collides iff the vertex comes within Euclidean distance delta of the triangle, the
+    TOI the earliest such time (0: contact).
     Raises ValueError for non-finite coordinates or options outside their domain.
     """
     return _exactccd._vertex_face_ccd(_points(points, _VERTEX_FACE_ROWS), t_max, toi_width, mode,
@@ -93,7 +94,7 @@ def vertex_face_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
 
 
 def edge_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
-                  mode: str = "default", min_separation: float = 0.0) -> CcdResult:
+                  mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
     """Closed segment [ea0, ea1] against the closed segment [eb0, eb1], over [0, t_max].
 
     edge_edge_ccd(ea0_t0, ea1_t0, eb0_t0, eb1_t0, ea0_t1, ea1_t1, eb0_t1, eb1_t1) or
@@ -116,7 +117,7 @@ class BatchResult(NamedTuple):
 
 
 def vertex_face_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
-                          mode: str = "default", threads: Optional[int] = None,
+                          mode: str = "filtered", threads: Optional[int] = None,
                           min_separation: float = 0.0) -> BatchResult:
     """Decides N vertex-face queries: an (N, 8, 3) array, rows p, a, b, c at t0 then at t1.
 
@@ -129,7 +130,7 @@ def vertex_face_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0
 
 
 def edge_edge_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
-                        mode: str = "default", threads: Optional[int] = None,
+                        mode: str = "filtered", threads: Optional[int] = None,
                         min_separation: float = 0.0) -> BatchResult:
     """Decides N edge-edge queries: an (N, 8, 3) array, rows ea0, ea1, eb0, eb1 at t0 then at
     t1. As vertex_face_ccd_batch."""

@@ -179,7 +179,7 @@ def _check_report(mode, t_max, names, shard_names, tallies, json, out):
     return CheckReport(mode, t_max, files, total, table, json_text)
 
 
-def check(paths, *, mode: str = "default", t_max: float = 1.0, type: Optional[str] = None,
+def check(paths, *, mode: str = "filtered", t_max: float = 1.0, type: Optional[str] = None,
           cluster=None, shard: Optional[int] = None,
           progress: Union[bool, Callable[[int, int], None]] = True, json: bool = False,
           out=sys.stdout) -> CheckReport:
@@ -187,16 +187,16 @@ def check(paths, *, mode: str = "default", t_max: float = 1.0, type: Optional[st
     (files, or folders searched for vertex-face/*.csv and edge-edge/*.csv) and compares with
     their truth column.
 
-    mode: "default", "exact" or "float_only"; t_max in (0, 1]; type: "vertex-face" or
-    "edge-edge" for every file (None: from the folder names). cluster: None (a LocalCluster of
-    processes, one thread each), a scheduler address "tcp://host:8786", a Cluster or a Client.
+    mode: "filtered", "exact" or "float_only" ("default": the old name of filtered); t_max in
+    (0, 1]; type: "vertex-face" or "edge-edge" for every file (None: from the folder names).
+    cluster: None (a LocalCluster of processes, one thread each), a scheduler address
+    "tcp://host:8786", a Cluster or a Client.
     shard: queries per task (None: one task per file). progress: True (a line on stderr when it
     is a terminal), False, or a callback progress(done, total) called as shards finish.
     Prints the command's table (or JSON) to `out` (None: nothing); returns a CheckReport.
     Raises InputError / ValueError as the command exits with status 2.
     """
-    if mode not in _exactccd.MODE_NAMES:
-        raise ValueError(f"mode must be one of {_exactccd.MODE_NAMES}, not {mode!r}")
+    mode = _exactccd._mode_name(mode)  # canonical; ValueError listing the names
     if not 0.0 < t_max <= 1.0:
         raise ValueError(f"t_max must lie in (0, 1], got {t_max}")
     files = [f for p in _as_list(paths) for f in _exactccd.find_query_files(p)]
@@ -213,7 +213,7 @@ def check(paths, *, mode: str = "default", t_max: float = 1.0, type: Optional[st
     return _check_report(mode, t_max, files, shard_names, tallies, json, out)
 
 
-def check_arrays(arrays: Sequence[Tuple[str, str, object, object]], *, mode: str = "default",
+def check_arrays(arrays: Sequence[Tuple[str, str, object, object]], *, mode: str = "filtered",
                  t_max: float = 1.0, cluster=None, shard: Optional[int] = None,
                  progress: Union[bool, Callable[[int, int], None]] = True, json: bool = False,
                  out=sys.stdout) -> CheckReport:
@@ -221,8 +221,7 @@ def check_arrays(arrays: Sequence[Tuple[str, str, object, object]], *, mode: str
     (N, 8, 3) float64 in the benchmark's row order and truth (N,) bool; each is one row of the
     table, sharded into tasks of `shard` queries (None: one task per array)."""
     import numpy as np
-    if mode not in _exactccd.MODE_NAMES:
-        raise ValueError(f"mode must be one of {_exactccd.MODE_NAMES}, not {mode!r}")
+    mode = _exactccd._mode_name(mode)  # canonical; ValueError listing the names
     if shard is not None and shard < 1:
         raise ValueError(f"shard must be >= 1 queries (or None: one task per array), not {shard}")
     calls, names, shard_names = [], [], []

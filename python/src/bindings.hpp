@@ -22,7 +22,8 @@ using QueryPoints = std::array<Eigen::Vector3d, 8>;
 /// A C-contiguous float64 array (converted when it is not one).
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/// The Mode named `name` ("default", "float_only", "exact": to_string(Mode)); ValueError otherwise.
+/// The Mode named `name` ("filtered", "float_only", "exact": to_string(Mode); or "default", the
+/// old name of "filtered": oracle::parse_mode_name); ValueError listing the names otherwise.
 Mode parse_mode(const std::string& name);
 /// "vertex-face" / "vf" or "edge-edge" / "ee"; ValueError otherwise.
 QueryType parse_query_type(const std::string& name);

@@ -76,8 +76,15 @@ void bind_ccd(py::module_& m) {
       py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"),
       py::arg("min_separation"));
   m.attr("STAGE_NAMES") = py::cast(stage_names());
+  // The canonical names; the functions accept "default" too, the old name of "filtered".
   m.attr("MODE_NAMES") = py::cast(std::vector<std::string>{
       to_string(Mode::filtered), to_string(Mode::float_only), to_string(Mode::exact)});
+  m.def(
+      "_mode_name",
+      [](const std::string& name) { return std::string(to_string(parse_mode(name))); },
+      py::arg("name"),
+      "The canonical name of mode `name` (\"default\" -> \"filtered\"); ValueError for an "
+      "unknown name.");
 }
 
 }  // namespace exactccd::python

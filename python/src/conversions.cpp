@@ -1,17 +1,17 @@
 #include <cstring>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "bindings.hpp"
+#include "oracle/names.hpp"
 
 namespace exactccd::python {
 
 Mode parse_mode(const std::string& name) {
-  for (const Mode m : {Mode::filtered, Mode::float_only, Mode::exact})
-    if (name == to_string(m)) return m;
-  throw py::value_error("mode must be \"default\", \"float_only\" or \"exact\", not \"" + name +
-                        "\"");
+  if (const std::optional<Mode> mode = oracle::parse_mode_name(name)) return *mode;
+  throw py::value_error("mode must be " + oracle::mode_names_text() + ", not \"" + name + "\"");
 }
 
 QueryType parse_query_type(const std::string& name) {

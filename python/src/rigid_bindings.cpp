@@ -94,12 +94,13 @@ void bind_rigid(py::module_& m) {
         return vertex_face_ccd(q, options);
       },
       py::arg("points"), py::arg("vertex_motion"), py::arg("face_motion"), py::kw_only(),
-      py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "default",
+      py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "filtered",
       py::arg("min_separation") = 0.0,
       "Vertex p against the closed triangle (a, b, c): points = (4, 3) positions at s = 0; each "
-      "motion a RigidMotion or an array of end positions (straight lines). mode: \"default\" "
-      "(certified), \"exact\", or \"float_only\" (the uncertified double test, for "
-      "comparison: toi_lo == toi_hi, stage \"float_only\"). min_separation: delta >= 0, finite; "
+      "motion a RigidMotion or an array of end positions (straight lines). mode: \"filtered\" "
+      "(certified; \"default\" is its old name), \"exact\", or \"float_only\" (the uncertified "
+      "double test, for comparison: toi_lo == toi_hi, stage \"float_only\"). min_separation: "
+      "delta >= 0, finite; "
       "collides iff the vertex comes within Euclidean distance delta of the triangle, the TOI "
       "the earliest such s (0: contact).");
   m.def(
@@ -118,7 +119,7 @@ void bind_rigid(py::module_& m) {
         return edge_edge_ccd(q, options);
       },
       py::arg("points"), py::arg("motion_a"), py::arg("motion_b"), py::kw_only(),
-      py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "default",
+      py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "filtered",
       py::arg("min_separation") = 0.0,
       "Closed segment [ea0, ea1] against [eb0, eb1]: points = (4, 3) positions at s = 0; each "
       "motion a RigidMotion or an array of end positions (straight lines). mode and "

@@ -353,7 +353,7 @@ void bind_scene(py::module_& m) {
             return g.run([&](Scene& s) { return s.find_contacts(o); });
           },
           py::kw_only(), py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0,
-          py::arg("mode") = "default", py::arg("broad_phase") = "swept_bvh",
+          py::arg("mode") = "filtered", py::arg("broad_phase") = "swept_bvh",
           py::arg("self_collision") = true, py::arg("max_threads") = 0,
           py::arg("record_candidates") = false, py::arg("min_separation") = 0.0,
           "Every colliding pair of the step (SceneResult); with min_separation delta > 0, every "
@@ -369,7 +369,7 @@ void bind_scene(py::module_& m) {
             return g.run([&](Scene& s) { return s.earliest_contact(o); });
           },
           py::kw_only(), py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0,
-          py::arg("mode") = "default", py::arg("broad_phase") = "swept_bvh",
+          py::arg("mode") = "filtered", py::arg("broad_phase") = "swept_bvh",
           py::arg("self_collision") = true, py::arg("max_threads") = 0,
           py::arg("record_candidates") = false, py::arg("min_separation") = 0.0,
           "Only the earliest contact (within min_separation) of the step (EarliestContact; "

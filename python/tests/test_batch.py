@@ -39,7 +39,7 @@ def random_queries(rng, n):
 
 @pytest.mark.parametrize("kind", ["vertex-face", "edge-edge"])
 @pytest.mark.parametrize("threads", [1, 2, None])
-@pytest.mark.parametrize("mode", ["default", "float_only"])
+@pytest.mark.parametrize("mode", ["filtered", "float_only"])
 def test_batch_equals_loop_on_random_queries(kind, threads, mode):
     queries = random_queries(np.random.default_rng(11), 400)
     assert_same(BATCH[kind](queries, threads=threads, mode=mode), loop(kind, queries, mode=mode))

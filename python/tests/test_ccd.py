@@ -2,6 +2,7 @@
 the C++ command's own per-query answers (exactccd check --out), and its stage tallies."""
 
 import collections
+import inspect
 import json
 
 import numpy as np
@@ -10,7 +11,7 @@ import pytest
 import exactccd
 from conftest import run
 
-MODES = ["default", "exact", "float_only"]
+MODES = ["filtered", "exact", "float_only"]
 
 
 def decide_file(data, mode, t_max=1.0):
@@ -23,7 +24,7 @@ def sample_data(sample_files):
     return {f: exactccd.read_query_file(f) for f in sample_files}
 
 
-@pytest.mark.parametrize("mode", ["default", "exact"])
+@pytest.mark.parametrize("mode", ["filtered", "exact"])
 def test_certified_modes_equal_truth_column(sample_data, mode):
     for path, data in sample_data.items():
         results = decide_file(data, mode)
@@ -127,7 +128,7 @@ def test_bad_input_raises():
     with pytest.raises(ValueError, match="toi_width"):
         exactccd.vertex_face_ccd(good, toi_width=-1.0)
     with pytest.raises(ValueError, match="mode"):
-        exactccd.vertex_face_ccd(good, mode="filtered")
+        exactccd.vertex_face_ccd(good, mode="fast")
     with pytest.raises(ValueError):
         exactccd.vertex_face_ccd([["a", "b", "c"]] + good[1:])
 
@@ -153,3 +154,34 @@ def test_bad_batch_input_names_the_first_bad_query():
         exactccd.vertex_face_ccd_batch(np.zeros((4, 8, 3)), t_max=-1.0)
     with pytest.raises(ValueError, match="mode"):
         exactccd.edge_edge_ccd_batch(np.zeros((4, 8, 3)), mode="quick")
+
+
+def test_mode_names_and_the_old_name_default(sample_data):
+    # The canonical names are the command's; "filtered" is the default argument everywhere.
+    assert exactccd.MODE_NAMES == ["filtered", "float_only", "exact"]
+    for function in (exactccd.vertex_face_ccd, exactccd.edge_edge_ccd,
+                     exactccd.vertex_face_ccd_batch, exactccd.edge_edge_ccd_batch):
+        assert inspect.signature(function).parameters["mode"].default == "filtered", function
+    # "default", the old name of "filtered", is still accepted: the same answers and stages.
+    for path, data in sample_data.items():
+        named = decide_file(data, "filtered")
+        aliased = decide_file(data, "default")
+        unnamed = [exactccd.vertex_face_ccd(q) if data.type == "vertex-face"
+                   else exactccd.edge_edge_ccd(q) for q in data.queries]
+        for a, b, c in zip(named, aliased, unnamed):
+            assert (a.collides, a.toi_lo, a.toi_hi, a.stage) == \
+                (b.collides, b.toi_lo, b.toi_hi, b.stage) == \
+                (c.collides, c.toi_lo, c.toi_hi, c.stage), path
+        batch = (exactccd.vertex_face_ccd_batch if data.type == "vertex-face"
+                 else exactccd.edge_edge_ccd_batch)
+        x, y = batch(data.queries, mode="filtered"), batch(data.queries, mode="default")
+        for field in ("collides", "toi_lo", "toi_hi", "stage"):
+            assert np.array_equal(getattr(x, field), getattr(y, field)), (path, field)
+    # An unknown name: a ValueError listing the valid ones.
+    good = np.zeros((8, 3))
+    for bad in ("fast", "Filtered", ""):
+        with pytest.raises(ValueError) as error:
+            exactccd.vertex_face_ccd(good, mode=bad)
+        message = str(error.value)
+        for name in ("float_only", "filtered", "exact", "default"):
+            assert f'"{name}"' in message, message

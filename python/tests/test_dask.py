@@ -41,7 +41,7 @@ def without_seconds(report):
     return report
 
 
-@pytest.mark.parametrize("mode", ["default", "exact"])
+@pytest.mark.parametrize("mode", ["filtered", "exact"])
 @pytest.mark.parametrize("shard", [None, 100])
 def test_check_equals_command(client, cli, sample_queries, mode, shard):
     table = run([cli, "check", sample_queries, "--mode", mode])
@@ -83,7 +83,10 @@ def test_check_arrays_equal_files(client, sample_files):
         arrays.append((path, data.type, data.queries, data.truth))
     by_arrays = exactccd_dask.check_arrays(arrays, cluster=client, shard=50, progress=False,
                                            out=None)
-    by_files = exactccd_dask.check(sample_files, cluster=client, progress=False, out=None)
+    # "default", the old name of "filtered", is accepted and reported as "filtered".
+    by_files = exactccd_dask.check(sample_files, mode="default", cluster=client, progress=False,
+                                   out=None)
+    assert by_arrays.mode == by_files.mode == "filtered"
     assert without_timing(by_arrays.table) == without_timing(by_files.table)
 
 
@@ -126,5 +129,5 @@ def test_errors_reach_the_caller(client, tmp_path):
         exactccd_dask.check([str(untyped)], cluster=client, progress=False, out=None)
     with pytest.raises(ValueError, match="t_max"):
         exactccd_dask.check([str(bad)], t_max=2.0, cluster=client, progress=False, out=None)
-    with pytest.raises(ValueError, match="mode"):
+    with pytest.raises(ValueError, match='mode must be "float_only", "filtered" or "exact"'):
         exactccd_dask.check([str(bad)], mode="fast", cluster=client, progress=False, out=None)

@@ -7,7 +7,7 @@ no reduction with exactccd. For each query z3 decides over the reals, with exact
 with every body point written from the matrix form of the motion,
 w(s) x(s) = w(s) (c + s d) + ((1 - s^2 q.q) I + 2 s^2 q q^T + 2 s [q]x) (x0 - c),
 w(s) = 1 + s^2 q.q, and the equation multiplied out by the two sides' (positive) denominators.
-exactccd's `collides` (default and exact modes) must equal z3's answer on [0, 1]; for a contact
+exactccd's `collides` (filtered and exact modes) must equal z3's answer on [0, 1]; for a contact
 there must be no such s < toi_lo (unsat) and one with s <= toi_hi (sat).
 
 Queries: seeded random rigid pairs near contact on a grid of small dyadic numbers (so that z3's
@@ -119,7 +119,7 @@ def shares_a_point(kind, points, motions, lo=F(0), hi=F(1), hi_strict=False):
     return solver.check()
 
 
-def decide(kind, points, motions, mode="default"):
+def decide(kind, points, motions, mode="filtered"):
     array = np.array([[float(x) for x in p] for p in points])
     ccd = exactccd.rigid_vertex_face_ccd if kind == "vf" else exactccd.rigid_edge_edge_ccd
     return ccd(array, motions[0].to_exactccd(), motions[1].to_exactccd(), mode=mode)
@@ -167,7 +167,7 @@ def random_query(rng, kind, styles=("rest", "linear")):
 
 
 def check_query(tally, kind, points, motions, where):
-    """exactccd (exact and default modes) against z3 on one query."""
+    """exactccd (exact and filtered modes) against z3 on one query."""
     exact = decide(kind, points, motions, mode="exact")
     tally.record(exact, decide(kind, points, motions), where)
     tally.ask_about(
@@ -226,6 +226,25 @@ def test_rigid_float_only_from_python():
                                           mode="float_only")
     assert not miss.collides and miss.toi_lo == miss.toi_hi == math.inf
     assert miss.stage == "float_only"
+
+
+def test_rigid_mode_filtered_and_its_old_name_default():
+    # "filtered" is the default argument; "default", its old name, gives the same answer.
+    quarter = exactccd.RigidMotion(cayley=(0, 0, 1))
+    wall = [[2, 4, -1], [4, 4, -1], [3, 4, 1]]
+    results = [exactccd.rigid_vertex_face_ccd([[5, 0, 0]] + wall, quarter, exactccd.RigidMotion(),
+                                              **options)
+               for options in ({}, {"mode": "filtered"}, {"mode": "default"})]
+    assert results[0].collides
+    assert len({(r.collides, r.toi_lo, r.toi_hi, r.stage) for r in results}) == 1
+    edge = [[5, 0, -1], [5, 0, 1], [2, 4, 0], [4, 4, 0]]
+    ee = [exactccd.rigid_edge_edge_ccd(edge, quarter, exactccd.RigidMotion(), mode=mode)
+          for mode in ("filtered", "default")]
+    assert (ee[0].collides, ee[0].toi_lo, ee[0].toi_hi) == (ee[1].collides, ee[1].toi_lo,
+                                                            ee[1].toi_hi)
+    with pytest.raises(ValueError, match='"filtered"'):
+        exactccd.rigid_vertex_face_ccd([[5, 0, 0]] + wall, quarter, exactccd.RigidMotion(),
+                                       mode="fast")
 
 
 def test_rigid_api_from_python():

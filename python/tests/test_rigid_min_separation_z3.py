@@ -16,7 +16,7 @@ sides' squared (positive) denominators w0 = w(vertex side), w1 = w(face side):
                      <= delta^2 w0^2 w1^2
 
 (polynomial in s, u, v). exactccd's answer with min_separation=delta (mode "exact", and the
-default mode, which must give the same collides, toi_lo and toi_hi) must agree: for a contact
+"filtered" mode, which must give the same collides, toi_lo and toi_hi) must agree: for a contact
 no such s in [0, toi_lo) (unsat) and one in [toi_lo, toi_hi] (sat), toi_hi <= t_max and the
 pair the tightest (toi_hi is toi_lo or the next double); without contact none in [0, t_max]
 (unsat).
@@ -121,11 +121,11 @@ def describe(points, motions):
 
 
 def check_query(tally, kind, points, motions, delta, t_max, where):
-    """exactccd (exact and default modes) against z3 on one query: for a contact none in
+    """exactccd (exact and filtered modes) against z3 on one query: for a contact none in
     [0, toi_lo) and one in [toi_lo, toi_hi], the pair the tightest; else none in [0, t_max]."""
     before = len(tally.disagreements)
     exact = decide(kind, points, motions, delta, t_max, "exact")
-    tally.record(exact, decide(kind, points, motions, delta, t_max, "default"), where)
+    tally.record(exact, decide(kind, points, motions, delta, t_max, "filtered"), where)
     where = f"{where} ({exact})"
     ask = lambda lo, hi, hi_strict=False: within_delta(kind, points, motions, delta, lo=F(lo),
                                                        hi=F(hi), hi_strict=hi_strict)

@@ -157,7 +157,7 @@ def test_bad_scene_input(two_meshes):
         scene.set_motion(mesh, start, end[:-1])
     with pytest.raises(IndexError):
         scene.set_motion(mesh + 5, start, end)
-    with pytest.raises(ValueError, match="mode"):
+    with pytest.raises(ValueError, match='mode must be "float_only", "filtered" or "exact"'):
         scene.find_contacts(mode="fast")
     with pytest.raises(ValueError, match="t_max"):
         scene.find_contacts(t_max=0.0)
@@ -167,6 +167,17 @@ def test_bad_scene_input(two_meshes):
         scene.vertex_face_query(exactccd.ScenePair("vf", 0, 10 ** 6, 0, 0))
     with pytest.raises(ValueError):
         scene.vertex_face_query(exactccd.ScenePair("ee", 0, 0, 0, 1))
+
+
+def test_mode_filtered_and_its_old_name_default(two_meshes):
+    # "filtered" is the default argument; "default", its old name, gives the same contacts.
+    scene = build(two_meshes)
+    runs = [[(c.pair, c.toi_lo, c.toi_hi) for c in scene.find_contacts(**options).contacts]
+            for options in ({}, {"mode": "filtered"}, {"mode": "default"})]
+    assert runs[0] and runs[0] == runs[1] == runs[2]
+    first = [scene.earliest_contact(mode=mode) for mode in ("filtered", "default")]
+    assert first[0].collides and first[1].collides
+    assert first[0].contact.toi_lo == first[1].contact.toi_lo
 
 
 def test_one_scene_from_several_python_threads(two_meshes):

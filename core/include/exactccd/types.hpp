@@ -95,7 +95,8 @@ enum class Mode : std::uint8_t {
 
 /// The mode's name, as the command's --mode option spells it. Never throws.
 /// \param mode a mode.
-/// \return "default", "float_only" or "exact" (a static string).
+/// \return "filtered", "float_only" or "exact" (a static string). Mode::filtered was named
+///         "default" before; the command and the Python module still accept that name.
 EXACTCCD_API const char* to_string(Mode mode) noexcept;
 
 /// The stage that decided a query (for statistics and tests).
