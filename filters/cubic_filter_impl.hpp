@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "core/predicates/double_bits.hpp"
+#include "filters/earliest_root_search.hpp"
 #include "filters/polynomial_bernstein.hpp"
 
 namespace exactccd::filters {
@@ -15,14 +16,8 @@ namespace detail {
 
 constexpr int kMaxSubdivisionDepth = 10;
 
-/// An enclosure of t_max * [s0, s1] (0 <= s0 <= s1): [down(t_max s0), up(t_max s1)]. Through
-/// the interval type, whose operations the compiler cannot move across the rounding-mode
-/// switch (a raw double product could be).
-EXACTCCD_CERTIFIED Interval time_enclosure(double t_max, double s0, double s1) {
-  return Interval(t_max) * Interval(s0, s1);
-}
-
-/// hi - lo <= width, with the difference rounded up (through the interval type, as above).
+/// hi - lo <= width, with the difference rounded up (through the interval type, whose
+/// operations the compiler cannot move across the rounding-mode switch).
 EXACTCCD_CERTIFIED bool certainly_within_width(double lo, double hi, double width) {
   return (Interval(hi) - Interval(lo)).sup() <= width;
 }
@@ -231,13 +226,6 @@ EXACTCCD_CERTIFIED bool coplanarity_cubic_root_free_interval(
 
 namespace detail {
 
-/// The cubic's sign at an end of [0, t_max] (0 or t_max, both doubles), decided when a node
-/// first needs it: by the interval enclosure when that is certain, else exactly.
-struct EndSign {
-  bool known = false;
-  int sign = 0;
-};
-
 /// Contact at a double t where the cubic is exactly zero (a coplanar instant): the interval
 /// inclusion tests at the point t when they decide, else the exact test.
 /// PROOF: proofs/filters.md#inclusion-over-an-interval
@@ -252,147 +240,83 @@ EXACTCCD_CERTIFIED bool contact_at_coplanar_double(const Inclusion& inclusion, d
 
 }  // namespace detail
 
+/// The coplanarity cubic's policy of the earliest-root search: inclusion over time intervals,
+/// exact answers at doubles where the intervals cannot tell, the bracket refined by certified
+/// bisection. PROOF: proofs/filters.md#cubic-filter
+template <class Inclusion>
+struct CubicRootPolicy {
+  const predicates::FixedPoly<Interval, 3>& cubic;
+  double toi_width;
+  const Inclusion& inclusion;
+  ContactExactStage& exact;
+  bool tighter_cubic_available;
+
+  /// A node with a single root certified by its interval signs alone is tested in the leading
+  /// projection only: the root's own narrow bracket is tested in all of them (a subset of T).
+  bool excluded_first(const Interval& T, bool single_root) const {
+    return single_root ? inclusion.excluded_in_leading_projection(T) : inclusion.excluded(T);
+  }
+  bool excluded_last(const Interval& T, bool single_root) const {
+    return single_root && inclusion.excluded(T);  // tested in one projection first
+  }
+  /// No coefficient of certain sign below the top levels: hopeless at any depth, so the
+  /// caller's tighter cubic next.
+  bool hopeless(const Bernstein<Interval, 3>& b, int depth, int sign_start, int sign_end) const {
+    return tighter_cubic_available && depth >= 2 && sign_start == 0 && sign_end == 0 &&
+           certain_strict_sign(b[1]) == 0 && certain_strict_sign(b[2]) == 0;
+  }
+  int end_sign(const Interval& enclosure, double t, FilterOutcome& out) {
+    const int s = certain_strict_sign(enclosure);
+    if (s != 0) return s;
+    out.exact_used = true;
+    return exact.cubic_sign_at(t);
+  }
+  RootDecision at_double(double t, FilterOutcome& out) {
+    if (!detail::contact_at_coplanar_double(inclusion, t, exact)) return RootDecision::no_contact;
+    out.verdict = FilterOutcome::Verdict::contact;
+    out.toi_lo = out.toi_hi = t;
+    out.toi_final = true;
+    return RootDecision::contact;
+  }
+  RootDecision single_root(double lo, double hi, int s_hi, const Interval& T, FilterOutcome& out) {
+    const bool used = out.exact_used;
+    // With toi_width > 0 the answer is the bisection of T's bracket when inclusion holds on
+    // T. With width 0 it is the tightest pair, which narrowing finds anyway: the test on T is
+    // skipped, as inclusion on T implies it on any R inside T (isotone enclosures).
+    if (toi_width > 0 && inclusion.certainly_included(T)) {
+      out = detail::refine_bracket(cubic, lo, hi, s_hi, toi_width);
+      out.exact_used = used;
+      return RootDecision::contact;
+    }
+    // Narrow the bracket around r, decide inclusion there (inclusion first: it is usually
+    // decided in the leading projection; both cannot hold, r being a coplanar instant of R),
+    // else decide exactly.
+    const FilterOutcome narrow = detail::refine_bracket(cubic, lo, hi, s_hi, 0.0);
+    const Interval R(narrow.toi_lo, narrow.toi_hi);
+    const bool included = inclusion.certainly_included(R);
+    if (!included && inclusion.excluded(R)) return RootDecision::no_contact;
+    if (included) {
+      out = toi_width > 0
+                ? detail::refine_bracket(cubic, narrow.toi_lo, narrow.toi_hi, s_hi, toi_width)
+                : narrow;  // the tightest pair, or a bracket the exact path tightens
+      out.exact_used = used;
+      return RootDecision::contact;
+    }
+    out.exact_used = true;
+    double r_lo = narrow.toi_lo, r_hi = narrow.toi_hi;
+    if (r_lo != r_hi) std::tie(r_lo, r_hi) = exact.bisect_root(r_lo, r_hi);
+    if (r_lo != r_hi) return RootDecision::undecided;  // r is not a double
+    return at_double(r_lo, out);  // the node's only coplanar instant
+  }
+};
+
 template <class Inclusion>
 EXACTCCD_CERTIFIED
 FilterOutcome cubic_filter(const predicates::FixedPoly<Interval, 3>& cubic, double t_max,
                            double toi_width, const Inclusion& inclusion, ContactExactStage& exact,
                            bool tighter_cubic_available) {
-  using detail::kMaxSubdivisionDepth;
-  FilterOutcome out;  // uncertain until decided
-  auto contact_at_double = [&](double t) {
-    out.verdict = FilterOutcome::Verdict::contact;
-    out.toi_lo = out.toi_hi = t;
-    out.toi_final = true;
-    return out;
-  };
-
-  // The signs at the ends of [0, t_max], resolved when the first node touching that end
-  // survives culling by signs and by exclusion (a node excluded there rules the end out as
-  // a contact, and no later node touches it). An exact zero at 0 is decided as a contact
-  // there (the first one); a root at an end is excluded from the nodes' single-root test
-  // below, so it is decided here exactly.
-  detail::EndSign start, end;
-  auto resolve = [&](detail::EndSign& e, const Interval& enclosure, double t) {
-    e.known = true;
-    e.sign = certain_strict_sign(enclosure);
-    if (e.sign == 0) {
-      out.exact_used = true;
-      e.sign = exact.cubic_sign_at(t);
-    }
-  };
-
-  struct Node {
-    Bernstein<Interval, 3> b;
-    double s0, s1;
-    int depth;
-  };
-  // Depth-first, left child first: nodes leave the stack in increasing time order, so the
-  // first confirmed contact is the earliest one. At most one pending right child per level.
-  Node stack[kMaxSubdivisionDepth + 2];
-  int top = 0;
-  stack[top++] = Node{bernstein_of(cubic, Interval(t_max)), 0.0, 1.0, 0};
-  while (top > 0) {
-    const Node node = stack[--top];
-    if (strict_sign_of_all(node.b) != 0) continue;  // no coplanar instant here
-    const Interval T = detail::time_enclosure(t_max, node.s0, node.s1);
-    // A node with a single root certified by its interval signs alone is tested for exclusion
-    // in the leading projection only: the root's own narrow bracket is tested in all of them
-    // below (a subset of T: whatever is excluded on T is excluded there).
-    int sign_start = certain_strict_sign(node.b[0]), sign_end = certain_strict_sign(node.b[3]);
-    const bool single_root = sign_start != 0 && sign_end == -sign_start &&
-                             certainly_monotone(node.b);
-    if (single_root ? inclusion.excluded_in_leading_projection(T) : inclusion.excluded(T))
-      continue;
-    if (tighter_cubic_available && node.depth >= 2 && sign_start == 0 && sign_end == 0 &&
-        certain_strict_sign(node.b[1]) == 0 && certain_strict_sign(node.b[2]) == 0) {
-      out.roots_unresolved = true;  // hopeless at any depth: the caller's tighter cubic next
-      return out;
-    }
-    // The node's end signs: certain interval signs, or at t = 0 and t = t_max exact ones (b[0]
-    // and b[3] of the nodes touching the ends enclose f(0) and f(t_max)).
-    if (node.s0 == 0.0) {
-      if (!start.known) {
-        resolve(start, node.b[0], 0.0);
-        if (start.sign == 0 && detail::contact_at_coplanar_double(inclusion, 0.0, exact))
-          return contact_at_double(0.0);
-      }
-      sign_start = start.sign;
-    }
-    if (node.s1 == 1.0) {
-      if (!end.known) resolve(end, node.b[3], t_max);
-      sign_end = end.sign;
-    }
-    const bool root_at_start = node.s0 == 0.0 && start.sign == 0;
-    const bool root_at_end = node.s1 == 1.0 && end.sign == 0;
-    if (root_at_start || root_at_end) {
-      if (certainly_monotone(node.b)) {
-        // The node's only root is its end point, whose contact is decided exactly.
-        if (root_at_start) continue;  // no contact at t = 0 (checked above)
-        if (detail::contact_at_coplanar_double(inclusion, t_max, exact))
-          return contact_at_double(t_max);
-        continue;
-      }
-    } else if (sign_start != 0 && sign_end == -sign_start && certainly_monotone(node.b)) {
-      // The node's only root r is its only coplanar instant; earlier nodes were all excluded.
-      // Re-certify the bracket on the rounded-out time interval T in the power basis (T's
-      // ends are exactly 0 and t_max at the ends of [0, t_max], whose signs are known).
-      const double lo = T.inf(), hi = T.sup();
-      const int s_lo = node.s0 == 0.0
-                           ? start.sign
-                           : certain_strict_sign(predicates::evaluate(cubic, Interval(lo)));
-      const int s_hi = node.s1 == 1.0
-                           ? end.sign
-                           : certain_strict_sign(predicates::evaluate(cubic, Interval(hi)));
-      const int d = certain_strict_sign(predicates::evaluate(predicates::derivative(cubic), T));
-      if (s_lo != 0 && s_hi == -s_lo && d != 0) {
-        // With toi_width > 0 the answer is the bisection of T's bracket when inclusion holds on
-        // T. With width 0 it is the tightest pair, which narrowing finds anyway: the test on T
-        // is skipped, as inclusion on T implies it on any R inside T (isotone enclosures).
-        if (toi_width > 0 && inclusion.certainly_included(T)) {
-          const bool used = out.exact_used;
-          out = detail::refine_bracket(cubic, lo, hi, s_hi, toi_width);
-          out.exact_used = used;
-          return out;
-        }
-        // Narrow the bracket around r, decide inclusion there (inclusion first: it is usually
-        // decided in the leading projection; both cannot hold, r being a coplanar instant of
-        // R), else decide exactly.
-        const FilterOutcome narrow = detail::refine_bracket(cubic, lo, hi, s_hi, 0.0);
-        const Interval R(narrow.toi_lo, narrow.toi_hi);
-        const bool included = inclusion.certainly_included(R);
-        if (!included && inclusion.excluded(R)) continue;
-        if (included) {
-          const bool used = out.exact_used;
-          out = toi_width > 0 ? detail::refine_bracket(cubic, narrow.toi_lo, narrow.toi_hi,
-                                                       s_hi, toi_width)
-                              : narrow;  // the tightest pair, or a bracket the exact path tightens
-          out.exact_used = used;
-          return out;
-        }
-        out.exact_used = true;
-        double r_lo = narrow.toi_lo, r_hi = narrow.toi_hi;
-        if (r_lo != r_hi) std::tie(r_lo, r_hi) = exact.bisect_root(r_lo, r_hi);
-        if (r_lo != r_hi) return out;  // r is not a double: uncertain
-        if (detail::contact_at_coplanar_double(inclusion, r_lo, exact))
-          return contact_at_double(r_lo);
-        continue;  // the node's only coplanar instant is no contact
-      }
-    }
-    if (single_root && inclusion.excluded(T)) continue;  // tested in one projection above
-    if (node.depth == kMaxSubdivisionDepth) {  // uncertain
-      out.roots_unresolved = true;
-      return out;
-    }
-    Node left, right;
-    de_casteljau_halves(node.b, left.b, right.b);
-    const double mid = (node.s0 + node.s1) / 2;  // dyadic: exact
-    left.s0 = node.s0, left.s1 = mid, left.depth = node.depth + 1;
-    right.s0 = mid, right.s1 = node.s1, right.depth = node.depth + 1;
-    stack[top++] = right;
-    stack[top++] = left;
-  }
-  out.verdict = FilterOutcome::Verdict::no_contact;
-  return out;
+  CubicRootPolicy<Inclusion> policy{cubic, toi_width, inclusion, exact, tighter_cubic_available};
+  return earliest_root_search<3, detail::kMaxSubdivisionDepth>(cubic, t_max, policy);
 }
 
 }  // namespace exactccd::filters

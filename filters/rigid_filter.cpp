@@ -10,6 +10,7 @@
 #include "core/predicates/rigid_paths.hpp"
 #include "core/predicates/x87_interval.hpp"
 #include "filters/certified_numbers.hpp"
+#include "filters/earliest_root_search.hpp"
 #include "filters/polynomial_bernstein.hpp"
 #include "filters/rigid_paths_in_intervals.hpp"
 
@@ -210,14 +211,32 @@ class RootSearch {
 
   FilterOutcome run();
 
+  // The policy of the earliest-root search (filters/earliest_root_search.hpp).
+  bool excluded_first(const Interval&, bool) const { return false; }
+  bool hopeless(const Bernstein<Interval, 5>&, int, int, int) const { return false; }
+  int end_sign(const Interval&, double t, FilterOutcome& out) {
+    const int s = resolved_sign_at(t);
+    out.exact_used = verdict_exact_;
+    return s;
+  }
+  RootDecision at_double(double t, FilterOutcome& out) const {
+    const Inclusion i = inclusion_over(Interval(t));
+    if (i == Inclusion::excluded) return RootDecision::no_contact;
+    if (i == Inclusion::included) out = contact(Bracket{t, t, 1});
+    return i == Inclusion::included ? RootDecision::contact : RootDecision::undecided;
+  }
+  RootDecision single_root(double lo, double hi, int sign_hi, const Interval&, FilterOutcome& out) {
+    Bracket b{lo, hi, sign_hi};
+    const RootDecision d = decide_root(b);
+    out.exact_used = verdict_exact_;
+    if (d == RootDecision::contact) out = contact(b);
+    return d;
+  }
+  /// Disjoint boxes, or no contact at any s of the node.
+  bool excluded_last(const Interval& T, bool) const { return discarded(T); }
+
  private:
-  struct Node {
-    Bernstein<Interval, 5> b;
-    double u0, u1;
-    int depth;
-  };
   static constexpr int kMaxDepth = 14;
-  enum class RootVerdict : std::uint8_t { contact, no_contact, undecided };
 
   Side side_of(double t, int sign_hi) const {
     const CertifiedSign s = certified_sign(predicates::evaluate(g_, Interval(t)));
@@ -269,7 +288,7 @@ class RootSearch {
   }
   bool narrow_by_intervals(Bracket& b) const;
   void narrow_finely(Bracket& b, bool to_tightest);
-  RootVerdict decide_root(Bracket& b);
+  RootDecision decide_root(Bracket& b);
   FilterOutcome contact(const Bracket& b) const {
     FilterOutcome r;
     r.verdict = FilterOutcome::Verdict::contact;
@@ -375,7 +394,7 @@ void RootSearch::narrow_finely(Bracket& b, bool to_tightest) {
 
 /// Decides whether the only root r of the bracket is a contact, and narrows the bracket to the
 /// reported TOI when it is.
-RootSearch::RootVerdict RootSearch::decide_root(Bracket& b) {
+RootDecision RootSearch::decide_root(Bracket& b) {
   const bool at_tightest = narrow_by_intervals(b);
   Inclusion inclusion = inclusion_over(Interval(b.lo, b.hi));
   if (inclusion == Inclusion::unknown && !at_tightest) {
@@ -384,14 +403,14 @@ RootSearch::RootVerdict RootSearch::decide_root(Bracket& b) {
     verdict_exact_ = verdict_exact_ || exact_used_;
     inclusion = inclusion_over(Interval(b.lo, b.hi));
   }
-  if (inclusion == Inclusion::excluded) return RootVerdict::no_contact;
-  if (inclusion == Inclusion::unknown) return RootVerdict::undecided;
+  if (inclusion == Inclusion::excluded) return RootDecision::no_contact;
+  if (inclusion == Inclusion::unknown) return RootDecision::undecided;
   if (!toi_final(b)) {
     exact_used_ = false;
     narrow_finely(b, false);
     toi_exact_ = exact_used_;
   }
-  return RootVerdict::contact;
+  return RootDecision::contact;
 }
 
 FilterOutcome RootSearch::run() {
@@ -399,69 +418,7 @@ FilterOutcome RootSearch::run() {
   bool nonzero = false;
   for (const Interval& c : g_.c) nonzero = nonzero || certain_strict_sign(c) != 0;
   if (!nonzero) return FilterOutcome{};
-
-  // The signs of g at 0 and t_max, resolved when a node first needs them (2: not yet).
-  int sign_start = 2, sign_end = 2;
-  Node stack[kMaxDepth + 2];
-  int top = 0;
-  stack[top++] = Node{bernstein_of(g_, Interval(t_max_)), 0.0, 1.0, 0};
-  while (top > 0) {
-    const Node node = stack[--top];
-    if (strict_sign_of_all(node.b) != 0) continue;  // no coplanar instant in the node
-    const Interval T = Interval(t_max_) * Interval(node.u0, node.u1);
-    int s_lo = certain_strict_sign(node.b[0]), s_hi = certain_strict_sign(node.b[5]);
-    if (node.u0 == 0.0) {
-      if (sign_start == 2) {
-        sign_start = resolved_sign_at(0.0);
-        if (sign_start == 0) {  // coplanar at s = 0: a contact there is the first one
-          const Inclusion at_start = inclusion_over(Interval(0.0));
-          if (at_start == Inclusion::unknown) return FilterOutcome{};
-          if (at_start == Inclusion::included) return contact(Bracket{0.0, 0.0, 1});
-        }
-      }
-      s_lo = sign_start;
-    }
-    if (node.u1 == 1.0) {
-      if (sign_end == 2) sign_end = resolved_sign_at(t_max_);
-      s_hi = sign_end;
-    }
-    const bool monotone = certainly_monotone(node.b);
-    if (monotone && node.u0 == 0.0 && s_lo == 0) continue;  // its only root: s = 0, no contact
-    if (monotone && node.u1 == 1.0 && s_hi == 0) {          // its only root: s = t_max
-      const Inclusion at_end = inclusion_over(Interval(t_max_));
-      if (at_end == Inclusion::unknown) return FilterOutcome{};
-      if (at_end == Inclusion::included) return contact(Bracket{t_max_, t_max_, 1});
-      continue;
-    }
-    if (monotone && s_lo != 0 && s_hi == -s_lo) {
-      // Exactly one root, simple, in the node; re-certified on the doubles around it.
-      const double lo = T.inf(), hi = T.sup();
-      const int c_lo = node.u0 == 0.0 ? s_lo : certain_strict_sign(predicates::evaluate(g_, Interval(lo)));
-      const int c_hi = node.u1 == 1.0 ? s_hi : certain_strict_sign(predicates::evaluate(g_, Interval(hi)));
-      const int d = certain_strict_sign(predicates::evaluate(predicates::derivative(g_), T));
-      if (c_lo != 0 && c_hi == -c_lo && d != 0) {
-        Bracket b{lo, hi, c_hi};
-        switch (decide_root(b)) {
-          case RootVerdict::contact: return contact(b);
-          case RootVerdict::no_contact: continue;
-          case RootVerdict::undecided: return FilterOutcome{};
-        }
-      }
-    }
-    if (discarded(T)) continue;  // disjoint boxes, or no contact at any s of the node
-    if (node.depth == kMaxDepth) return FilterOutcome{};
-    Node left, right;
-    de_casteljau_halves(node.b, left.b, right.b);
-    const double mid = (node.u0 + node.u1) / 2;  // dyadic: exact
-    left.u0 = node.u0, left.u1 = mid, left.depth = node.depth + 1;
-    right.u0 = mid, right.u1 = node.u1, right.depth = node.depth + 1;
-    stack[top++] = right;
-    stack[top++] = left;
-  }
-  FilterOutcome none;
-  none.verdict = FilterOutcome::Verdict::no_contact;
-  none.exact_used = verdict_exact_;
-  return none;
+  return earliest_root_search<5, kMaxDepth>(g_, t_max_, *this);
 }
 
 }  // namespace
