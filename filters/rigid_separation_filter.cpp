@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <type_traits>
 
 #include "core/predicates/double_bits.hpp"
 #include "core/predicates/rigid_separation.hpp"
@@ -39,22 +40,38 @@ Jet operator*(const Jet& a, const Jet& b) {
   return {a.v * b.v, a.d * b.v + a.v * b.d, a.dd * b.v + Interval(2) * (a.d * b.d) + a.v * b.dd};
 }
 
+/// A number and its first derivative: the jets at an instant, where the second derivative is
+/// never used (half the products of Jet).
+struct SlopeJet {
+  Interval v{0.0}, d{0.0};
+};
+SlopeJet operator+(const SlopeJet& a, const SlopeJet& b) { return {a.v + b.v, a.d + b.d}; }
+SlopeJet operator-(const SlopeJet& a, const SlopeJet& b) { return {a.v - b.v, a.d - b.d}; }
+SlopeJet operator-(const SlopeJet& a) { return {-a.v, -a.d}; }
+SlopeJet operator*(const SlopeJet& a, const SlopeJet& b) {
+  return {a.v * b.v, a.d * b.v + a.v * b.d};
+}
+
 template <class NT>
 using ConstantPoint = Vec3<FixedPoly<NT, 0>>;
 template <class NT>
 using Positions = std::array<Vec3<NT>, 4>;
 
 /// Positions and their derivatives over T (or at an instant): x = X / w,
-/// x' = (X' - w' x) / w, x'' = (X'' - 2 w' x' - w'' x) / w (w >= 1).
-Positions<Jet> position_jets(const IntervalPaths& paths, const Interval& T) {
+/// x' = (X' - w' x) / w, x'' = (X'' - 2 w' x' - w'' x) / w (w >= 1); J = Jet or SlopeJet (no
+/// second derivative).
+template <class J>
+Positions<J> position_jets(const IntervalPaths& paths, const Interval& T) {
+  constexpr bool second = std::is_same_v<J, Jet>;
   Interval w[2], dw[2], ddw[2];
   for (int side = 0; side < 2; ++side) {
     const auto& p = paths.denominator[side];
     w[side] = predicates::evaluate(p, T);
     dw[side] = predicates::evaluate(predicates::derivative(p), T);
-    ddw[side] = predicates::evaluate(predicates::derivative(predicates::derivative(p)), T);
+    if constexpr (second)
+      ddw[side] = predicates::evaluate(predicates::derivative(predicates::derivative(p)), T);
   }
-  Positions<Jet> x;
+  Positions<J> x;
   for (int i = 0; i < 4; ++i) {
     const int side = i < paths.first_side_count ? 0 : 1;
     const auto& X = paths.numerator[i];
@@ -62,10 +79,14 @@ Positions<Jet> position_jets(const IntervalPaths& paths, const Interval& T) {
       const auto dc = predicates::derivative(c);
       const Interval v = predicates::evaluate(c, T) / w[side];
       const Interval d = (predicates::evaluate(dc, T) - dw[side] * v) / w[side];
-      const Interval dd = (predicates::evaluate(predicates::derivative(dc), T) -
-                           Interval(2) * (dw[side] * d) - ddw[side] * v) /
-                          w[side];
-      return Jet{v, d, dd};
+      if constexpr (second) {
+        const Interval dd = (predicates::evaluate(predicates::derivative(dc), T) -
+                             Interval(2) * (dw[side] * d) - ddw[side] * v) /
+                            w[side];
+        return Jet{v, d, dd};
+      } else {
+        return SlopeJet{v, d};
+      }
     };
     x[i] = {jet(X.x), jet(X.y), jet(X.z)};
   }
@@ -130,7 +151,7 @@ class Search {
       jets_of(k);
       return jet_over_[k];
     }
-    const Jet& jet_at_m(int k) {
+    const SlopeJet& jet_at_m(int k) {
       jets_of(k);
       return jet_at_m_[k];
     }
@@ -141,7 +162,7 @@ class Search {
       region_values<Interval>(x_, search_.delta2_, v_.data(), k);
       if (certified_sign(v_[k]) != CertifiedSign::uncertain || !narrow_) return;
       // Taylor at m: f(m) + f'(m) o + f''(T) o^2 / 2, o = T - m.
-      const Jet& m = jet_at_m(k);
+      const SlopeJet& m = jet_at_m(k);
       const Interval taylor =
           m.v + m.d * offset_ + jet_over(k).dd * CGAL::square(offset_) * Interval(0.5);
       const double lo = std::max(v_[k].inf(), taylor.inf());
@@ -151,8 +172,8 @@ class Search {
     void prepare() {
       if (ready_) return;
       const double m = T_.inf() + (T_.sup() - T_.inf()) / 2;  // rounded upwards: inside T
-      over_ = position_jets(search_.paths_, T_);
-      at_m_ = position_jets(search_.paths_, Interval(m));
+      over_ = position_jets<Jet>(search_.paths_, T_);
+      at_m_ = position_jets<SlopeJet>(search_.paths_, Interval(m));
       offset_ = T_ - Interval(m);
       ready_ = true;
     }
@@ -171,16 +192,21 @@ class Search {
     Values v_;
     std::uint32_t formed_ = 0, jets_formed_ = 0;
     bool ready_ = false;
-    Positions<Jet> over_, at_m_;
+    Positions<Jet> over_;
+    Positions<SlopeJet> at_m_;
     Interval offset_;
-    Jet jet_over_[kCount], jet_at_m_[kCount];
+    Jet jet_over_[kCount];
+    SlopeJet jet_at_m_[kCount];
   };
 
 
   /// Polynomial k's jet from position jets.
-  Jet jet_of(int k, const Positions<Jet>& x) const {
-    Jet out[kCount];
-    region_values<Jet>(x, Jet{delta2_, Interval(0.0), Interval(0.0)}, out, k);
+  template <class J>
+  J jet_of(int k, const Positions<J>& x) const {
+    J out[kCount];
+    J delta2;
+    delta2.v = delta2_;  // a constant: its derivatives are 0
+    region_values<J>(x, delta2, out, k);
     return out[k];
   }
   /// f_k changes sign at most once on T: f_k' of certain sign; or, for f_k = P - delta^2 Q with
@@ -205,7 +231,7 @@ class Search {
   /// f_k' over T: f'(m) + f''(T) o, within the direct enclosure f'(T).
   template <class V>
   static Interval derivative_over(int k, V& v) {
-    const Jet& m = v.jet_at_m(k);
+    const SlopeJet& m = v.jet_at_m(k);
     const Jet& t = v.jet_over(k);
     const Interval taylor = m.d + t.dd * v.offset();
     const double lo = std::max(t.d.inf(), taylor.inf()), hi = std::min(t.d.sup(), taylor.sup());
@@ -333,7 +359,7 @@ class Search {
   }
   /// An upper bound over S of the fastest vertex of side 0 plus the fastest of side 1.
   double speed_bound(const Interval& S) const {
-    const Positions<Jet> x = position_jets(paths_, S);
+    const Positions<SlopeJet> x = position_jets<SlopeJet>(paths_, S);
     double fastest[2] = {0.0, 0.0};
     for (int i = 0; i < 4; ++i) {
       Interval v2(0.0);
@@ -432,7 +458,7 @@ void Search<Separation>::tighten(int k, double* lo, double* hi) {
   bool unknown = false;
   for (int n = 0; n < 12 && !toi_final(*lo, *hi); ++n) {
     if (!(t > *lo && t < *hi) && !predicates::middle_double(*lo, *hi, &t)) break;
-    const Jet jet = jet_of(k, position_jets(paths_, Interval(t)));
+    const SlopeJet jet = jet_of(k, position_jets<SlopeJet>(paths_, Interval(t)));
     const CertifiedSign s = certified_sign(jet.v);
     if (s == CertifiedSign::uncertain) {
       unknown = true;
