@@ -75,8 +75,16 @@ Positions<J> position_jets(const IntervalPaths& paths, const Interval& T) {
   for (int i = 0; i < 4; ++i) {
     const int side = i < paths.first_side_count ? 0 : 1;
     const auto& X = paths.numerator[i];
+    const bool unit = paths.unit_denominator[side];
     auto jet = [&](const FixedPoly<Interval, 3>& c) {
       const auto dc = predicates::derivative(c);
+      if (unit) {  // w = 1, w' = w'' = 0: the numerator's own derivatives
+        if constexpr (second)
+          return Jet{predicates::evaluate(c, T), predicates::evaluate(dc, T),
+                     predicates::evaluate(predicates::derivative(dc), T)};
+        else
+          return SlopeJet{predicates::evaluate(c, T), predicates::evaluate(dc, T)};
+      }
       const Interval v = predicates::evaluate(c, T) / w[side];
       const Interval d = (predicates::evaluate(dc, T) - dw[side] * v) / w[side];
       if constexpr (second) {

@@ -17,6 +17,8 @@ struct RigidPaths {
   std::array<Vec3<FixedPoly<NT, 3>>, 4> numerator;  ///< X_i(s), in the query's point order
   std::array<FixedPoly<NT, 2>, 2> denominator;      ///< w_side(s) (1 for a linear side)
   int first_side_count = 1;                         ///< points of side 0 (vertex-face 1, edge-edge 2)
+  /// denominator[side] is the constant 1 (a linear side): positions need no division.
+  std::array<bool, 2> unit_denominator{};
 
   const FixedPoly<NT, 2>& denominator_of(int point) const {
     return denominator[point < first_side_count ? 0 : 1];
@@ -33,9 +35,12 @@ struct RigidPaths {
     const NT w[2] = {evaluate(denominator[0], s), evaluate(denominator[1], s)};
     std::array<Vec3<NT>, 4> x;
     for (int i = 0; i < 4; ++i) {
-      const NT& d = w[i < first_side_count ? 0 : 1];
-      x[i] = {evaluate(numerator[i].x, s) / d, evaluate(numerator[i].y, s) / d,
-              evaluate(numerator[i].z, s) / d};
+      const int side = i < first_side_count ? 0 : 1;
+      x[i] = {evaluate(numerator[i].x, s), evaluate(numerator[i].y, s),
+              evaluate(numerator[i].z, s)};
+      if (unit_denominator[side]) continue;  // x / 1 = x exactly
+      const NT& d = w[side];
+      x[i] = {x[i].x / d, x[i].y / d, x[i].z / d};
     }
     return x;
   }
@@ -56,6 +61,7 @@ EXACTCCD_CERTIFIED RigidPaths<NT> rigid_paths(const Query& q) {
                                      to(s.motion.cayley)};
     paths.denominator[side] = s.rigid ? rigid_path_denominator(motion)
                                       : FixedPoly<NT, 2>{{NT(1), NT(0), NT(0)}};
+    paths.unit_denominator[side] = !s.rigid;
     const int begin = side == 0 ? 0 : paths.first_side_count;
     const int end = side == 0 ? paths.first_side_count : 4;
     for (int i = begin; i < end; ++i) {
