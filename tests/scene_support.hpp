@@ -10,6 +10,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <gmpxx.h>
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -59,6 +60,20 @@ inline std::string describe(const SceneContact& c) {
 
 /// The two candidate lists are equal (both sorted); else the counts and the first pair missing
 /// on either side.
+/// Every pair of `part` is in `all` (both sorted), else the first one missing.
+inline ::testing::AssertionResult contains_pairs(const std::vector<ScenePair>& all,
+                                                 const std::vector<ScenePair>& part) {
+  std::vector<ScenePair> missing;
+  std::set_difference(part.begin(), part.end(), all.begin(), all.end(),
+                      std::back_inserter(missing));
+  if (missing.empty()) return ::testing::AssertionSuccess();
+  const ScenePair& p = missing.front();
+  return ::testing::AssertionFailure()
+         << missing.size() << " of " << part.size() << " pairs missing, first: type "
+         << static_cast<int>(p.type) << " meshes " << p.first_mesh << "/" << p.second_mesh
+         << " indices " << p.first_index << "/" << p.second_index;
+}
+
 inline ::testing::AssertionResult same_pairs(const std::vector<ScenePair>& got,
                                       const std::vector<ScenePair>& want) {
   // Report the first pair missing on either side (both lists are meant to be sorted).
@@ -140,6 +155,34 @@ inline bool boxes_overlap(const Box& a, const Box& b) {
   for (int k = 0; k < 3; ++k)
     if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
   return true;
+}
+
+/// Whether the boxes blended linearly from (a0 to a1) and (b0 to b1) overlap at some t in
+/// [0, t_end], decided exactly over the rationals: each of the six conditions lo - hi <= 0 is
+/// linear in t, so it holds on [0, r] or [r, 1] (or everywhere, or nowhere), and the boxes
+/// overlap exactly where all six hold. The exact reference of the scene's time cull
+/// (pipeline/scene/time_span.hpp computes a superset in doubles).
+inline bool blended_boxes_meet_by(const Box& a0, const Box& a1, const Box& b0, const Box& b1,
+                                  double t_end, double delta = 0.0) {
+  const mpq_class d(delta);  // within delta: lo - hi - delta <= 0
+  mpq_class lo(0), hi(t_end);
+  auto keep = [&](const mpq_class& g0, const mpq_class& g1) {
+    if (g0 <= 0 && g1 <= 0) return;
+    if (g0 > 0 && g1 > 0) {
+      lo = 1, hi = 0;
+      return;
+    }
+    const mpq_class r = g0 / (g0 - g1);
+    if (g0 > 0) lo = std::max(lo, r);
+    else hi = std::min(hi, r);
+  };
+  for (int k = 0; k < 3; ++k) {
+    keep(mpq_class(a0.lo[k]) - mpq_class(b0.hi[k]) - d,
+         mpq_class(a1.lo[k]) - mpq_class(b1.hi[k]) - d);
+    keep(mpq_class(b0.lo[k]) - mpq_class(a0.hi[k]) - d,
+         mpq_class(b1.lo[k]) - mpq_class(a1.hi[k]) - d);
+  }
+  return lo <= hi;
 }
 
 /// Boxes of a primitive (its vertex list) at the start, at the end, and over the step (start and
@@ -261,6 +304,9 @@ struct Reference {
   std::vector<SceneContact> instant_contacts;
   /// Pairs whose closed swept boxes overlap (the exact swept broad phase).
   std::vector<ScenePair> swept_overlaps;
+  /// The subset whose boxes blended from start to end overlap at some t in [0, t_max]
+  /// (blended_boxes_meet_by): the swept broad phase with its time cull keeps at least these.
+  std::vector<ScenePair> timed_overlaps;
   /// Pairs whose closed boxes overlap at the start or at the end of the step.
   std::vector<ScenePair> instant_overlaps;
 };
@@ -278,7 +324,11 @@ inline Reference brute_force(const std::vector<RefMesh>& meshes, const CcdOption
                 : edge_edge_ccd(reference_edge_edge_query(meshes, p), ccd);
         (p.type == QueryType::vertex_face ? r.vertex_face_pairs : r.edge_edge_pairs)++;
         const bool instant = boxes_overlap(a.start, b.start) || boxes_overlap(a.end, b.end);
-        if (boxes_overlap(a.swept, b.swept)) r.swept_overlaps.push_back(p);
+        if (boxes_overlap(a.swept, b.swept)) {
+          r.swept_overlaps.push_back(p);
+          if (blended_boxes_meet_by(a.start, a.end, b.start, b.end, ccd.t_max))
+            r.timed_overlaps.push_back(p);
+        }
         if (instant) r.instant_overlaps.push_back(p);
         if (c.collides) {
           r.contacts.push_back({p, c.toi_lo, c.toi_hi});

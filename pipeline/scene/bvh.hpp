@@ -139,10 +139,16 @@ class Bvh {
   /// (in some order of i and j). Node pairs are spread over TBB tasks: f is called concurrently.
   template <class F>
   void parallel_for_each_self_overlap(F&& f) const {
+    parallel_for_each_self_overlap(f, [](std::uint32_t, std::uint32_t) { return true; });
+  }
+  /// The same, skipping every pair of distinct nodes (a, b) for which keep(a, b) is false, and
+  /// the pairs of primitives below it (keep as for parallel_for_each_overlap).
+  template <class F, class Keep>
+  void parallel_for_each_self_overlap(F&& f, const Keep& keep) const {
     if (empty()) return;
     std::vector<Task> tasks{{0, 0, true}};
     split_tasks(*this, tasks);
-    run_tasks(*this, tasks, f);
+    run_tasks(*this, tasks, f, keep);
   }
 
  private:
@@ -194,8 +200,8 @@ class Bvh {
     overlap_nodes(other, a, b, f, [](std::uint32_t, std::uint32_t) { return true; });
   }
 
-  template <class F>
-  void self_nodes(std::uint32_t a, F& f) const {
+  template <class F, class Keep>
+  void self_nodes(std::uint32_t a, F& f, const Keep& keep) const {
     const Node& na = nodes_[a];
     if (na.leaf()) {
       for (std::uint32_t s = na.first; s < na.first + na.count; ++s)
@@ -203,9 +209,9 @@ class Bvh {
           if (overlap(boxes_[order_[s]], boxes_[order_[u]])) f(order_[s], order_[u]);
       return;
     }
-    self_nodes(left(a), f);
-    self_nodes(right(a), f);
-    overlap_nodes(*this, left(a), right(a), f);
+    self_nodes(left(a), f, keep);
+    self_nodes(right(a), f, keep);
+    overlap_nodes(*this, left(a), right(a), f, keep);
   }
 
   static double size_of(const Box& b) {
@@ -264,7 +270,7 @@ class Bvh {
                         for (std::size_t k = range.begin(); k != range.end(); ++k) {
                           const Task& t = tasks[k];
                           if (t.self)
-                            self_nodes(t.a, f);
+                            self_nodes(t.a, f, keep);
                           else
                             overlap_nodes(other, t.a, t.b, f, keep);
                         }

@@ -21,6 +21,7 @@
 #include "pipeline/scene/bvh.hpp"
 #include "pipeline/scene/rigid_boxes.hpp"
 #include "pipeline/scene/rigid_cylinder_ranges.hpp"
+#include "pipeline/scene/time_span.hpp"
 #include "pipeline/scene/time_window.hpp"
 #include "exactccd/ccd.hpp"
 
@@ -50,6 +51,12 @@ enum class Span : int { swept = 0, start = 1, end = 2 };
 /// The three hierarchies (vertices, edges, triangles) of one mesh over one span.
 struct Hierarchies {
   Bvh vertices, edges, faces;
+  /// Linear and static meshes, swept span: each primitive's boxes at t = 0 and t = 1 and each
+  /// node's merge of them, for culling by time (time_span.hpp); empty otherwise.
+  struct Motion {
+    std::vector<scene::MotionBox> primitives, nodes;
+  };
+  Motion vertex_motion, edge_motion, face_motion;
   bool built = false;
   bool stale = false;      ///< positions changed since the last refit
   double raised_by = 0.0;  ///< the min_separation the boxes' upper corners were raised by
@@ -222,6 +229,49 @@ std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* i
   return boxes;
 }
 
+/// Each primitive's boxes at t = 0 and t = 1 (a static mesh's both at its positions), upper
+/// corners raised by delta as in primitive_boxes. PROOF: proofs/scene.md#time-span
+template <int K>
+std::vector<scene::MotionBox> motion_boxes(const Mesh& m, const IndexRows<K>* indices,
+                                           Eigen::Index count, double delta) {
+  std::vector<scene::MotionBox> boxes(static_cast<std::size_t>(count));
+  const Positions& last = m.is_static ? m.start : m.end;
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      const predicates::FpEnvironmentGuard fp(
+                          delta > 0.0 ? predicates::Rounding::upward
+                                      : predicates::Rounding::to_nearest);
+                      for (Eigen::Index p = r.begin(); p != r.end(); ++p) {
+                        const auto vertex = [&](int k) {
+                          return indices ? (*indices)(p, k) : static_cast<std::int32_t>(p);
+                        };
+                        scene::MotionBox box{scene::point_box(m.start.row(vertex(0))),
+                                             scene::point_box(last.row(vertex(0)))};
+                        for (int k = 1; k < K; ++k) {
+                          scene::grow(box.at0, m.start.row(vertex(k)));
+                          scene::grow(box.at1, last.row(vertex(k)));
+                        }
+                        if (delta > 0.0) {
+                          scene::raise_upper_corner(box.at0, delta);
+                          scene::raise_upper_corner(box.at1, delta);
+                        }
+                        boxes[static_cast<std::size_t>(p)] = box;
+                      }
+                    });
+  return boxes;
+}
+
+/// The motion boxes of one hierarchy's primitives and their merges per node.
+template <int K>
+void set_motion(Hierarchies::Motion& motion, const Bvh& bvh, const Mesh& m,
+                const IndexRows<K>* indices, Eigen::Index count, double delta) {
+  motion.primitives = motion_boxes<K>(m, indices, count, delta);
+  motion.nodes = bvh.node_values(motion.primitives, [](const scene::MotionBox& a,
+                                                       const scene::MotionBox& b) {
+    return scene::merge(a, b);
+  });
+}
+
 /// Certified boxes of a rigid body's vertices over the span (swept: s in [0, 1]; start: s = 0;
 /// end: s = 1): unions of interval enclosures of each vertex's arc over pieces of the span
 /// (rigid_boxes.hpp, proofs/scene.md#rigid-boxes).
@@ -300,6 +350,11 @@ Hierarchies& prepare(Mesh& m, Span span, double delta, SceneStats& stats) {
   update(h.edges, primitive_boxes<2>(m, span, &m.edges, m.edges.rows(), delta), h.built, stats);
   update(h.faces, primitive_boxes<3>(m, span, &m.triangles, m.triangles.rows(), delta), h.built,
          stats);
+  if (span == Span::swept || m.is_static) {  // a static mesh's one set serves every span
+    set_motion<1>(h.vertex_motion, h.vertices, m, nullptr, m.start.rows(), delta);
+    set_motion<2>(h.edge_motion, h.edges, m, &m.edges, m.edges.rows(), delta);
+    set_motion<3>(h.face_motion, h.faces, m, &m.triangles, m.triangles.rows(), delta);
+  }
   h.built = true;
   h.stale = false;
   h.raised_by = delta;
@@ -474,54 +529,95 @@ struct Scene::Impl {
 
   /// Appends every candidate pair of the hierarchies `at(mesh)` (one span) to `found`: pairs
   /// of primitives whose boxes overlap, pairs within a mesh sharing a vertex excluded, pairs
-  /// whose cylinder ranges are apart (`culls`) counted in `culled` and excluded.
+  /// whose cylinder ranges are apart (`culls`) counted in `culled` and excluded. With `by_time`
+  /// (the swept span), pairs of linear or static meshes whose blended boxes cannot overlap by
+  /// t_max are cut with their nodes (time_span.hpp), each cut counted in `time_culled`.
   template <class At>
   void gather_candidates(const SceneOptions& o, const At& at,
                          const std::vector<std::optional<CylinderCull>>& culls,
                          tbb::enumerable_thread_specific<std::vector<ScenePair>>& found,
-                         tbb::enumerable_thread_specific<std::uint64_t>& culled) const {
+                         tbb::enumerable_thread_specific<std::uint64_t>& culled, bool by_time,
+                         tbb::enumerable_thread_specific<std::uint64_t>& time_culled) const {
     const std::size_t n = meshes.size();
+    const double t_end = o.ccd.t_max;
+    // The motions of a mesh pair when culling by time applies to it, else nullptr.
+    const auto motions = [&](MeshId a, MeshId b, auto member) {
+      using Motion = Hierarchies::Motion;
+      const Mesh& ma = meshes[a];
+      const Mesh& mb = meshes[b];
+      const bool applies = by_time && !ma.is_rigid && !mb.is_rigid;
+      return std::pair<const Motion*, const Motion*>(
+          applies ? &(at(ma).*member.first) : nullptr, applies ? &(at(mb).*member.second) : nullptr);
+    };
+    const auto time_keep = [&](const Hierarchies::Motion* ma, const Hierarchies::Motion* mb) {
+      return [ma, mb, t_end, &time_culled](std::uint32_t i, std::uint32_t j) {
+        if (scene::may_meet_by(ma->nodes[i], mb->nodes[j], t_end)) return true;
+        ++time_culled.local();
+        return false;
+      };
+    };
+    const auto time_apart = [&](const Hierarchies::Motion* ma, const Hierarchies::Motion* mb,
+                                std::uint32_t i, std::uint32_t j) {
+      if (!ma || scene::may_meet_by(ma->primitives[i], mb->primitives[j], t_end)) return false;
+      ++time_culled.local();
+      return true;
+    };
     for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
       const Mesh& mb = meshes[b];
       const auto& cull = culls[a * n + b];
       const Bvh& va = at(meshes[a]).vertices;
       const Bvh& fb = at(mb).faces;
-      const auto pair = [&](std::uint32_t v, std::uint32_t f) {
+      const auto [mv, mf] = motions(
+          a, b, std::make_pair(&Hierarchies::vertex_motion, &Hierarchies::face_motion));
+      const auto pair = [&, mv = mv, mf = mf](std::uint32_t v, std::uint32_t f) {
         if (a == b && triangle_has_vertex(mb.triangles, f, static_cast<std::int32_t>(v))) return;
         if (cull && scene::apart(cull->first->vertices[v], cull->second->faces[f])) {
           ++culled.local();
           return;
         }
+        if (time_apart(mv, mf, v, f)) return;
         found.local().push_back({QueryType::vertex_face, a, v, b, f});
       };
       if (cull)
         va.parallel_for_each_overlap(fb, pair,
                                      node_cull(va, cull->first->vertices, fb, cull->second->faces,
                                                culled));
+      else if (mv)
+        va.parallel_for_each_overlap(fb, pair, time_keep(mv, mf));
       else
         va.parallel_for_each_overlap(fb, pair);
     });
     for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
       const Mesh& ma = meshes[a];
+      const auto [ea_motion, eb_motion] =
+          motions(a, b, std::make_pair(&Hierarchies::edge_motion, &Hierarchies::edge_motion));
       if (a == b) {
-        at(ma).edges.parallel_for_each_self_overlap([&](std::uint32_t i, std::uint32_t j) {
+        const auto pair = [&, m = ea_motion](std::uint32_t i, std::uint32_t j) {
           if (edges_share_vertex(ma.edges, i, j)) return;
+          if (time_apart(m, m, i, j)) return;
           found.local().push_back({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)});
-        });
+        };
+        if (ea_motion)
+          at(ma).edges.parallel_for_each_self_overlap(pair, time_keep(ea_motion, ea_motion));
+        else
+          at(ma).edges.parallel_for_each_self_overlap(pair);
       } else {
         const auto& cull = culls[a * n + b];
         const Bvh& ea = at(ma).edges;
         const Bvh& eb = at(meshes[b]).edges;
-        const auto pair = [&](std::uint32_t i, std::uint32_t j) {
+        const auto pair = [&, m0 = ea_motion, m1 = eb_motion](std::uint32_t i, std::uint32_t j) {
           if (cull && scene::apart(cull->first->edges[i], cull->second->edges[j])) {
             ++culled.local();
             return;
           }
+          if (time_apart(m0, m1, i, j)) return;
           found.local().push_back({QueryType::edge_edge, a, i, b, j});
         };
         if (cull)
           ea.parallel_for_each_overlap(
               eb, pair, node_cull(ea, cull->first->edges, eb, cull->second->edges, culled));
+        else if (ea_motion)
+          ea.parallel_for_each_overlap(eb, pair, time_keep(ea_motion, eb_motion));
         else
           ea.parallel_for_each_overlap(eb, pair);
       }
@@ -557,10 +653,11 @@ struct Scene::Impl {
     for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats);
     const auto culls = cylinder_culls(o);
     tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
-    tbb::enumerable_thread_specific<std::uint64_t> culled(0);
+    tbb::enumerable_thread_specific<std::uint64_t> culled(0), time_culled(0);
     gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, culls,
-                      found, culled);
+                      found, culled, o.cull_by_time, time_culled);
     stats.cylinder_culled += total(culled);
+    stats.time_culled += total(time_culled);
     return concatenate(found);
   }
 
@@ -578,7 +675,7 @@ struct Scene::Impl {
   /// sorted, each once.
   std::vector<ScenePair> static_candidates(const SceneOptions& o, SceneStats& stats) {
     tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
-    tbb::enumerable_thread_specific<std::uint64_t> culled(0);
+    tbb::enumerable_thread_specific<std::uint64_t> culled(0), unused(0);
     const auto culls = cylinder_culls(o);
     for (Span span : {Span::start, Span::end}) {
       for (Mesh& m : meshes) prepare(m, span, o.min_separation, stats);
@@ -587,7 +684,7 @@ struct Scene::Impl {
           [span](const Mesh& m) -> const Hierarchies& {
             return m.spans[m.is_static ? 0 : static_cast<int>(span)];
           },
-          culls, found, culled);
+          culls, found, culled, false, unused);
     }
     stats.cylinder_culled += total(culled);
     std::vector<ScenePair> all = concatenate(found);

@@ -179,13 +179,15 @@ void bind_scene(py::module_& m) {
       .def_readonly("hierarchies_built", &SceneStats::hierarchies_built)
       .def_readonly("hierarchies_refitted", &SceneStats::hierarchies_refitted)
       .def_readonly("cylinder_culled", &SceneStats::cylinder_culled)
+      .def_readonly("time_culled", &SceneStats::time_culled)
       .def("__repr__", [](const SceneStats& s) {
         return "SceneStats(vertex_face_candidates=" + std::to_string(s.vertex_face_candidates) +
                ", edge_edge_candidates=" + std::to_string(s.edge_edge_candidates) +
                ", narrow_phase_tests=" + std::to_string(s.narrow_phase_tests) +
                ", hierarchies_built=" + std::to_string(s.hierarchies_built) +
                ", hierarchies_refitted=" + std::to_string(s.hierarchies_refitted) +
-               ", cylinder_culled=" + std::to_string(s.cylinder_culled) + ")";
+               ", cylinder_culled=" + std::to_string(s.cylinder_culled) +
+               ", time_culled=" + std::to_string(s.time_culled) + ")";
       });
 
   py::class_<SceneResult>(m, "SceneResult")

@@ -101,6 +101,10 @@ struct SceneOptions {
   int max_threads = 0;
   /// Also return the candidate pairs (SceneResult::candidates), e.g. to write them as queries.
   bool record_candidates = false;
+  /// Cut pairs of linearly moving or static meshes whose boxes, blended between t = 0 and
+  /// t = 1, cannot overlap by t_max (SceneStats::time_culled). Never changes an answer; false
+  /// only to measure what it saves.
+  bool cull_by_time = true;
 };
 
 /// A vertex-face or edge-edge pair of primitives of the scene.
@@ -166,6 +170,11 @@ struct SceneStats {
   /// primitives the same. Their pairs are not candidates, never tested. 0 in scenes without
   /// rigid bodies. With BroadPhase::static_bvh, counted per span.
   std::uint64_t cylinder_culled = 0;
+  /// Cuts by time (BroadPhase::swept_bvh, pairs of linearly moving or static meshes;
+  /// proofs/scene.md, section 5a): pairs of nodes, and pairs of primitives, whose boxes over the
+  /// step overlap but whose boxes blended between t = 0 and t = 1 cannot overlap at any time in
+  /// [0, t_max] (each cut once). Their pairs are not candidates, never tested.
+  std::uint64_t time_culled = 0;
 };
 
 /// The answer of Scene::find_contacts.
