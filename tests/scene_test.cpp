@@ -186,6 +186,40 @@ TEST(SceneRandom, EqualsBruteForce) {
   EXPECT_GT(contacts, test::scaled_count(100));
 }
 
+TEST(SceneTime, FarMovingMeshesAreCutByTimeAndEqualBruteForce) {
+  // A sheet sweeping diagonally through a static floor by many of its cells, and two boxes
+  // crossing the floor's corner along x and along y at different times: boxes over the step
+  // overlap far more often than boxes at any one time (proofs/scene.md#time-span).
+  MeshSpec floor = grid(9, 9, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  floor.is_static = true;
+  MeshSpec sheet = grid(9, 9, {-0.75, 0.125, 0.5}, {1, 0, 0}, {0, 0.75, 0});
+  for (Eigen::Index v = 0; v < sheet.start.rows(); ++v)
+    sheet.end.row(v) = sheet.start.row(v) + Eigen::RowVector3d(1.5, 0.0, -1.0);
+  MeshSpec along_x = box_mesh({-2, -0.25, -0.25}, {-1.75, 0, 0});
+  along_x.end.col(0).array() += 4.0;
+  MeshSpec along_y = box_mesh({1.125, 3, -0.25}, {1.375, 3.25, 0});
+  along_y.end.col(1).array() -= 4.0;
+  const SceneSpec spec{floor, sheet, along_x, along_y};
+  Scene scene = make_scene(spec);
+  for (const double t_max : {1.0, 0.375}) {
+    SCOPED_TRACE("t_max " + std::to_string(t_max));
+    SceneOptions o;
+    o.ccd.t_max = t_max;
+    const auto [got, ref] = check_step(scene, spec, o);
+    EXPECT_GT(got.stats.time_culled, 0u);
+    EXPECT_LT(got.candidates.size(), ref.swept_overlaps.size());
+    EXPECT_EQ(ref.contacts.empty(), t_max < 0.5);  // the sheet reaches the floor at t = 1/2
+    // Off: every pair whose swept boxes overlap, the same answers.
+    SceneOptions off = o;
+    off.cull_by_time = false;
+    off.record_candidates = true;
+    const SceneResult all = scene.find_contacts(off);
+    EXPECT_EQ(all.stats.time_culled, 0u);
+    EXPECT_TRUE(same_pairs(all.candidates, ref.swept_overlaps));
+    EXPECT_TRUE(same_contacts(all.contacts, got.contacts));
+  }
+}
+
 TEST(SceneRandom, ScaledByPowersOfTwoGivesIdenticalContacts) {
   // Multiplying every coordinate by 2^k is exact and leaves every contact time unchanged, so
   // the contacts (pairs and TOI doubles) must be identical; 2^-27 ~ 7e-9 and 2^27 ~ 1.3e8.

@@ -57,6 +57,8 @@ struct Hierarchies {
     std::vector<scene::MotionBox> primitives, nodes;
   };
   Motion vertex_motion, edge_motion, face_motion;
+  /// The motion boxes above are those of the current positions and delta.
+  bool has_motion = false;
   bool built = false;
   bool stale = false;      ///< positions changed since the last refit
   double raised_by = 0.0;  ///< the min_separation the boxes' upper corners were raised by
@@ -261,6 +263,27 @@ std::vector<scene::MotionBox> motion_boxes(const Mesh& m, const IndexRows<K>* in
   return boxes;
 }
 
+/// Whether a moving mesh travels far for its size: at least half of its edges have an end moving
+/// by more than the edge's length (max norms), as in a barrier method's trial step. Only then
+/// do boxes over the step overlap much more often than the primitives' boxes at any one time,
+/// and culling by time pays for its boxes (a speed heuristic only: the cull never changes an
+/// answer).
+bool moves_far(const Mesh& m) {
+  if (m.is_static || m.edges.rows() == 0) return false;
+  // A sample of about 1024 edges spread over the mesh decides it (a heuristic: sampling is
+  // enough, and large meshes pay almost nothing for it).
+  const Eigen::Index stride = std::max<Eigen::Index>(1, m.edges.rows() / 1024);
+  Eigen::Index far = 0, seen = 0;
+  for (Eigen::Index e = 0; e < m.edges.rows(); e += stride, ++seen) {
+    const std::int32_t a = m.edges(e, 0), b = m.edges(e, 1);
+    const double length = (m.start.row(a) - m.start.row(b)).cwiseAbs().maxCoeff();
+    const double moved = std::max((m.end.row(a) - m.start.row(a)).cwiseAbs().maxCoeff(),
+                                  (m.end.row(b) - m.start.row(b)).cwiseAbs().maxCoeff());
+    if (moved > length) ++far;
+  }
+  return 2 * far >= seen;
+}
+
 /// The motion boxes of one hierarchy's primitives and their merges per node.
 template <int K>
 void set_motion(Hierarchies::Motion& motion, const Bvh& bvh, const Mesh& m,
@@ -328,10 +351,14 @@ void update(Bvh& bvh, const std::vector<Box>& boxes, bool built, SceneStats& sta
 
 /// Builds, refits or rebuilds (when degraded) the hierarchies of one mesh over one span, boxes
 /// raised by delta; a change of delta since the last call refits them as a change of positions.
-Hierarchies& prepare(Mesh& m, Span span, double delta, SceneStats& stats) {
+/// With `with_motion` (swept span, a linear or static mesh) also the motion boxes for culling
+/// by time.
+Hierarchies& prepare(Mesh& m, Span span, double delta, SceneStats& stats,
+                     bool with_motion = false) {
   // A static mesh has one set of positions: one set of hierarchies serves every span.
   Hierarchies& h = m.spans[m.is_static ? 0 : static_cast<int>(span)];
-  if (h.built && !h.stale && h.raised_by == delta) return h;
+  with_motion = with_motion && !m.is_rigid;
+  if (h.built && !h.stale && h.raised_by == delta && (!with_motion || h.has_motion)) return h;
   if (m.is_rigid) {
     std::vector<Box> vertex_boxes = rigid_vertex_boxes(m, span);
     update(h.edges, merged_boxes<2>(vertex_boxes, m.edges, delta), h.built, stats);
@@ -350,10 +377,13 @@ Hierarchies& prepare(Mesh& m, Span span, double delta, SceneStats& stats) {
   update(h.edges, primitive_boxes<2>(m, span, &m.edges, m.edges.rows(), delta), h.built, stats);
   update(h.faces, primitive_boxes<3>(m, span, &m.triangles, m.triangles.rows(), delta), h.built,
          stats);
-  if (span == Span::swept || m.is_static) {  // a static mesh's one set serves every span
+  h.has_motion = with_motion;
+  if (with_motion) {
     set_motion<1>(h.vertex_motion, h.vertices, m, nullptr, m.start.rows(), delta);
     set_motion<2>(h.edge_motion, h.edges, m, &m.edges, m.edges.rows(), delta);
     set_motion<3>(h.face_motion, h.faces, m, &m.triangles, m.triangles.rows(), delta);
+  } else {
+    h.vertex_motion = h.edge_motion = h.face_motion = {};
   }
   h.built = true;
   h.stale = false;
@@ -545,7 +575,7 @@ struct Scene::Impl {
       using Motion = Hierarchies::Motion;
       const Mesh& ma = meshes[a];
       const Mesh& mb = meshes[b];
-      const bool applies = by_time && !ma.is_rigid && !mb.is_rigid;
+      const bool applies = by_time && at(ma).has_motion && at(mb).has_motion;
       return std::pair<const Motion*, const Motion*>(
           applies ? &(at(ma).*member.first) : nullptr, applies ? &(at(mb).*member.second) : nullptr);
     };
@@ -650,12 +680,17 @@ struct Scene::Impl {
 
   /// The candidate pairs of the swept hierarchies, in no particular order.
   std::vector<ScenePair> swept_candidates(const SceneOptions& o, SceneStats& stats) {
-    for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats);
+    // Culling by time when some linearly moving mesh travels far for its size (moves_far).
+    const bool by_time =
+        o.cull_by_time && std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) {
+          return !m.is_rigid && moves_far(m);
+        });
+    for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats, by_time);
     const auto culls = cylinder_culls(o);
     tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
     tbb::enumerable_thread_specific<std::uint64_t> culled(0), time_culled(0);
     gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, culls,
-                      found, culled, o.cull_by_time, time_culled);
+                      found, culled, by_time, time_culled);
     stats.cylinder_culled += total(culled);
     stats.time_culled += total(time_culled);
     return concatenate(found);
