@@ -3,6 +3,7 @@
 #include "exactccd/scene.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -427,6 +428,17 @@ struct Decision {
 
 }  // namespace
 
+/// Candidate pairs and, for each, the start of its time span (the earliest time its blended
+/// boxes can overlap, time_span.hpp; 0 without the cull by time).
+struct Candidates {
+  std::vector<ScenePair> pairs;
+  std::vector<double> starts;
+  void add(const ScenePair& p, double start) {
+    pairs.push_back(p);
+    starts.push_back(start);
+  }
+};
+
 struct Scene::Impl {
   std::vector<Mesh> meshes;
 
@@ -565,7 +577,7 @@ struct Scene::Impl {
   template <class At>
   void gather_candidates(const SceneOptions& o, const At& at,
                          const std::vector<std::optional<CylinderCull>>& culls,
-                         tbb::enumerable_thread_specific<std::vector<ScenePair>>& found,
+                         tbb::enumerable_thread_specific<Candidates>& found,
                          tbb::enumerable_thread_specific<std::uint64_t>& culled, bool by_time,
                          tbb::enumerable_thread_specific<std::uint64_t>& time_culled) const {
     const std::size_t n = meshes.size();
@@ -586,11 +598,14 @@ struct Scene::Impl {
         return false;
       };
     };
-    const auto time_apart = [&](const Hierarchies::Motion* ma, const Hierarchies::Motion* mb,
+    // The start of a pair's time span, or +infinity when it cannot meet by t_end (counted).
+    const auto time_start = [&](const Hierarchies::Motion* ma, const Hierarchies::Motion* mb,
                                 std::uint32_t i, std::uint32_t j) {
-      if (!ma || scene::may_meet_by(ma->primitives[i], mb->primitives[j], t_end)) return false;
+      if (!ma) return 0.0;
+      const scene::TimeSpan span = scene::overlap_span(ma->primitives[i], mb->primitives[j]);
+      if (!span.empty() && span.lo <= t_end) return span.lo;
       ++time_culled.local();
-      return true;
+      return std::numeric_limits<double>::infinity();
     };
     for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
       const Mesh& mb = meshes[b];
@@ -605,8 +620,9 @@ struct Scene::Impl {
           ++culled.local();
           return;
         }
-        if (time_apart(mv, mf, v, f)) return;
-        found.local().push_back({QueryType::vertex_face, a, v, b, f});
+        const double start = time_start(mv, mf, v, f);
+        if (start == std::numeric_limits<double>::infinity()) return;
+        found.local().add({QueryType::vertex_face, a, v, b, f}, start);
       };
       if (cull)
         va.parallel_for_each_overlap(fb, pair,
@@ -624,8 +640,9 @@ struct Scene::Impl {
       if (a == b) {
         const auto pair = [&, m = ea_motion](std::uint32_t i, std::uint32_t j) {
           if (edges_share_vertex(ma.edges, i, j)) return;
-          if (time_apart(m, m, i, j)) return;
-          found.local().push_back({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)});
+          const double start = time_start(m, m, i, j);
+          if (start == std::numeric_limits<double>::infinity()) return;
+          found.local().add({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)}, start);
         };
         if (ea_motion)
           at(ma).edges.parallel_for_each_self_overlap(pair, time_keep(ea_motion, ea_motion));
@@ -640,8 +657,9 @@ struct Scene::Impl {
             ++culled.local();
             return;
           }
-          if (time_apart(m0, m1, i, j)) return;
-          found.local().push_back({QueryType::edge_edge, a, i, b, j});
+          const double start = time_start(m0, m1, i, j);
+          if (start == std::numeric_limits<double>::infinity()) return;
+          found.local().add({QueryType::edge_edge, a, i, b, j}, start);
         };
         if (cull)
           ea.parallel_for_each_overlap(
@@ -678,8 +696,9 @@ struct Scene::Impl {
     return sum;
   }
 
-  /// The candidate pairs of the swept hierarchies, in no particular order.
-  std::vector<ScenePair> swept_candidates(const SceneOptions& o, SceneStats& stats) {
+  /// The candidate pairs of the swept hierarchies, in no particular order, with their spans'
+  /// starts.
+  Candidates swept_candidates(const SceneOptions& o, SceneStats& stats) {
     // Culling by time when some linearly moving mesh travels far for its size (moves_far).
     const bool by_time =
         o.cull_by_time && std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) {
@@ -687,7 +706,7 @@ struct Scene::Impl {
         });
     for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats, by_time);
     const auto culls = cylinder_culls(o);
-    tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+    tbb::enumerable_thread_specific<Candidates> found;
     tbb::enumerable_thread_specific<std::uint64_t> culled(0), time_culled(0);
     gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, culls,
                       found, culled, by_time, time_culled);
@@ -696,20 +715,23 @@ struct Scene::Impl {
     return concatenate(found);
   }
 
-  static std::vector<ScenePair> concatenate(
-      tbb::enumerable_thread_specific<std::vector<ScenePair>>& parts) {
+  static Candidates concatenate(tbb::enumerable_thread_specific<Candidates>& parts) {
     std::size_t total = 0;
-    for (const auto& part : parts) total += part.size();
-    std::vector<ScenePair> all;
-    all.reserve(total);
-    for (const auto& part : parts) all.insert(all.end(), part.begin(), part.end());
+    for (const Candidates& part : parts) total += part.pairs.size();
+    Candidates all;
+    all.pairs.reserve(total);
+    all.starts.reserve(total);
+    for (const Candidates& part : parts) {
+      all.pairs.insert(all.pairs.end(), part.pairs.begin(), part.pairs.end());
+      all.starts.insert(all.starts.end(), part.starts.begin(), part.starts.end());
+    }
     return all;
   }
 
   /// The candidates of the older scheme: pairs whose boxes overlap at the start or at the end,
   /// sorted, each once.
   std::vector<ScenePair> static_candidates(const SceneOptions& o, SceneStats& stats) {
-    tbb::enumerable_thread_specific<std::vector<ScenePair>> found;
+    tbb::enumerable_thread_specific<Candidates> found;
     tbb::enumerable_thread_specific<std::uint64_t> culled(0), unused(0);
     const auto culls = cylinder_culls(o);
     for (Span span : {Span::start, Span::end}) {
@@ -722,7 +744,7 @@ struct Scene::Impl {
           culls, found, culled, false, unused);
     }
     stats.cylinder_culled += total(culled);
-    std::vector<ScenePair> all = concatenate(found);
+    std::vector<ScenePair> all = std::move(concatenate(found).pairs);
     tbb::parallel_sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     return all;
@@ -759,7 +781,7 @@ struct Scene::Impl {
   SceneResult find_contacts(const SceneOptions& o) {
     SceneResult result;
     std::vector<ScenePair> candidates = o.broad_phase == BroadPhase::swept_bvh
-                                            ? swept_candidates(o, result.stats)
+                                            ? std::move(swept_candidates(o, result.stats).pairs)
                                             : static_candidates(o, result.stats);
     // The narrow phase over a flat list: work stealing balances clusters of costly pairs.
     tbb::enumerable_thread_specific<std::vector<SceneContact>> found;
@@ -803,6 +825,29 @@ struct Scene::Impl {
   }
 
   EarliestContact earliest_contact(const SceneOptions& o);
+
+  /// Orders the candidates by their spans' starts in kSpanBuckets buckets of equal width (a
+  /// counting sort: linear time, and enough to meet early contacts first), order kept within
+  /// a bucket. Nothing to do when every start is 0 (no cull by time).
+  static void order_by_span_start(Candidates& c) {
+    constexpr int kSpanBuckets = 64;
+    if (std::all_of(c.starts.begin(), c.starts.end(), [](double t) { return t == 0.0; })) return;
+    const auto bucket = [](double t) {
+      return std::min(kSpanBuckets - 1, static_cast<int>(std::max(t, 0.0) * kSpanBuckets));
+    };
+    std::array<std::size_t, kSpanBuckets + 1> first{};
+    for (const double t : c.starts) ++first[bucket(t) + 1];
+    for (int b = 0; b < kSpanBuckets; ++b) first[b + 1] += first[b];
+    Candidates ordered;
+    ordered.pairs.resize(c.pairs.size());
+    ordered.starts.resize(c.starts.size());
+    for (std::size_t k = 0; k < c.pairs.size(); ++k) {
+      const std::size_t at = first[bucket(c.starts[k])]++;
+      ordered.pairs[at] = c.pairs[k];
+      ordered.starts[at] = c.starts[k];
+    }
+    c = std::move(ordered);
+  }
 };
 
 /// The earliest contact with pruning. A shared bound T only decreases; every pair is tested
@@ -816,8 +861,13 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
   EarliestContact out;
   const double t_max = o.ccd.t_max;
   std::atomic<double> bound{t_max};
-  const std::vector<ScenePair> candidates = swept_candidates(o, out.stats);
-  count(candidates, out.stats);
+  Candidates gathered = swept_candidates(o, out.stats);
+  count(gathered.pairs, out.stats);
+  // Earliest span first (in buckets: linear time), so that early contacts lower the bound soon;
+  // a pair whose span starts after the bound cannot meet by it and is skipped.
+  order_by_span_start(gathered);
+  const std::vector<ScenePair>& candidates = gathered.pairs;
+  const std::vector<double>& starts = gathered.starts;
   struct Found {
     std::vector<SceneContact> contacts;
     std::uint64_t tests = 0;
@@ -832,6 +882,7 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const ScenePair& p = candidates[k];
       const double window = bound.load(std::memory_order_relaxed);
+      if (starts[k] > window) continue;  // its blended boxes cannot overlap by the bound
       CcdOptions options = o.ccd;
       options.t_max = window;
       // One query per pair: culled over the window when the bound has shrunk, else decided.
