@@ -197,6 +197,24 @@ Eigen::Vector3d row(const Positions& x, std::int32_t i) { return x.row(i).transp
 template <int K>
 using IndexRows = Eigen::Matrix<std::int32_t, Eigen::Dynamic, K, Eigen::RowMajor>;
 
+/// Calls f(p, vertex) for every primitive p < count in parallel, vertex(k) its k-th vertex (p
+/// itself for vertices: no index matrix), with the FP state the boxes need: min/max by
+/// comparison with no denormals-are-zero, the raise by delta > 0 rounded upwards (min/max are
+/// exact in either mode).
+template <int K, class F>
+void for_each_primitive(const IndexRows<K>* indices, Eigen::Index count, double delta, F&& f) {
+  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
+                    [&](const tbb::blocked_range<Eigen::Index>& r) {
+                      const predicates::FpEnvironmentGuard fp(
+                          delta > 0.0 ? predicates::Rounding::upward
+                                      : predicates::Rounding::to_nearest);
+                      for (Eigen::Index p = r.begin(); p != r.end(); ++p)
+                        f(p, [&](int k) {
+                          return indices ? (*indices)(p, k) : static_cast<std::int32_t>(p);
+                        });
+                    });
+}
+
 /// Boxes of a mesh's primitives over a span: min/max of input doubles only, so exact. A moving
 /// primitive stays in the box of its start and end positions (proofs/scene.md#swept-boxes).
 /// With delta > 0 each box's upper corner is then raised by delta, rounded upwards
@@ -208,27 +226,15 @@ std::vector<Box> primitive_boxes(const Mesh& m, Span span, const IndexRows<K>* i
   const bool use_start = span != Span::end || m.is_static;
   const bool use_end = span != Span::start && !m.is_static;
   const Positions& first = use_start ? m.start : m.end;
-  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
-                    [&](const tbb::blocked_range<Eigen::Index>& r) {
-                      // min/max by comparison: no denormals-are-zero; the raise by delta
-                      // rounds upwards (min/max are exact in either mode).
-                      const predicates::FpEnvironmentGuard fp(
-                          delta > 0.0 ? predicates::Rounding::upward
-                                      : predicates::Rounding::to_nearest);
-                      for (Eigen::Index p = r.begin(); p != r.end(); ++p) {
-                        // Vertex k of primitive p: p itself for vertices (no index matrix).
-                        const auto vertex = [&](int k) {
-                          return indices ? (*indices)(p, k) : static_cast<std::int32_t>(p);
-                        };
-                        Box box = scene::point_box(first.row(vertex(0)));
-                        for (int k = 0; k < K; ++k) {
-                          if (use_start) scene::grow(box, m.start.row(vertex(k)));
-                          if (use_end) scene::grow(box, m.end.row(vertex(k)));
-                        }
-                        if (delta > 0.0) scene::raise_upper_corner(box, delta);
-                        boxes[static_cast<std::size_t>(p)] = box;
-                      }
-                    });
+  for_each_primitive<K>(indices, count, delta, [&](Eigen::Index p, const auto& vertex) {
+    Box box = scene::point_box(first.row(vertex(0)));
+    for (int k = 0; k < K; ++k) {
+      if (use_start) scene::grow(box, m.start.row(vertex(k)));
+      if (use_end) scene::grow(box, m.end.row(vertex(k)));
+    }
+    if (delta > 0.0) scene::raise_upper_corner(box, delta);
+    boxes[static_cast<std::size_t>(p)] = box;
+  });
   return boxes;
 }
 
@@ -239,28 +245,19 @@ std::vector<scene::MotionBox> motion_boxes(const Mesh& m, const IndexRows<K>* in
                                            Eigen::Index count, double delta) {
   std::vector<scene::MotionBox> boxes(static_cast<std::size_t>(count));
   const Positions& last = m.is_static ? m.start : m.end;
-  tbb::parallel_for(tbb::blocked_range<Eigen::Index>(0, count, 4096),
-                    [&](const tbb::blocked_range<Eigen::Index>& r) {
-                      const predicates::FpEnvironmentGuard fp(
-                          delta > 0.0 ? predicates::Rounding::upward
-                                      : predicates::Rounding::to_nearest);
-                      for (Eigen::Index p = r.begin(); p != r.end(); ++p) {
-                        const auto vertex = [&](int k) {
-                          return indices ? (*indices)(p, k) : static_cast<std::int32_t>(p);
-                        };
-                        scene::MotionBox box{scene::point_box(m.start.row(vertex(0))),
-                                             scene::point_box(last.row(vertex(0)))};
-                        for (int k = 1; k < K; ++k) {
-                          scene::grow(box.at0, m.start.row(vertex(k)));
-                          scene::grow(box.at1, last.row(vertex(k)));
-                        }
-                        if (delta > 0.0) {
-                          scene::raise_upper_corner(box.at0, delta);
-                          scene::raise_upper_corner(box.at1, delta);
-                        }
-                        boxes[static_cast<std::size_t>(p)] = box;
-                      }
-                    });
+  for_each_primitive<K>(indices, count, delta, [&](Eigen::Index p, const auto& vertex) {
+    scene::MotionBox box{scene::point_box(m.start.row(vertex(0))),
+                         scene::point_box(last.row(vertex(0)))};
+    for (int k = 1; k < K; ++k) {
+      scene::grow(box.at0, m.start.row(vertex(k)));
+      scene::grow(box.at1, last.row(vertex(k)));
+    }
+    if (delta > 0.0) {
+      scene::raise_upper_corner(box.at0, delta);
+      scene::raise_upper_corner(box.at1, delta);
+    }
+    boxes[static_cast<std::size_t>(p)] = box;
+  });
   return boxes;
 }
 
