@@ -881,7 +881,11 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
       const double window = bound.load(std::memory_order_relaxed);
       if (starts[k] > window) continue;  // its blended boxes cannot overlap by the bound
       CcdOptions options = o.ccd;
-      options.t_max = window;
+      // A subnormal bound (a contact at exactly t = 0 was found) is decided over [0, t_max]
+      // instead: the same first contact when it lies below the bound, and the filters, whose
+      // arithmetic has no room below the smallest normal double, would leave every such pair
+      // to the exact path.
+      options.t_max = window < std::numeric_limits<double>::min() ? t_max : window;
       // One query per pair: culled over the window when the bound has shrunk, else decided.
       const auto decide_linear = [&](const auto& query) -> std::optional<CcdResult> {
         if (window < t_max && scene::disjoint_over_window(query, window, o.min_separation))
