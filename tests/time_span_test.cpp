@@ -106,6 +106,13 @@ TEST(TimeSpan, ContainsTheExactTimesOnRandomAndExtremeBoxes) {
   MotionBox a{{{-big, -big, -big}, {big, big, big}}, {{big, big, big}, {big, big, big}}};
   MotionBox b{{{-big, 0, 0}, {-big, 0, 0}}, {{-big, -big, -big}, {-big, -big, -big}}};
   check_pair(a, b, tally);
+  // One gap overflows at one end only: g0 = -2^1022 - 2^1022 is finite, g1 = 2^1023 + 2^1023
+  // overflows to +infinity, while the exact root is 1/3 (no cut to a span near 0 allowed).
+  const double half = std::ldexp(1.0, 1022);
+  const MotionBox left{{{-half, 0, 0}, {-half, 1, 1}}, {{big, 0, 0}, {big, 1, 1}}};
+  const MotionBox right{{{half, 0, 0}, {half, 1, 1}}, {{-big, 0, 0}, {-big, 1, 1}}};
+  check_pair(left, right, tally);
+  check_pair(right, left, tally);
   // The cull is not idle: most exactly empty spans are cut (all but a few within the slack).
   EXPECT_GT(tally.exact_empty, 1000);
   EXPECT_GT(tally.cut, tally.exact_empty * 9 / 10);

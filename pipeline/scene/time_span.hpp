@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "core/predicates/double_bits.hpp"
@@ -57,8 +58,12 @@ inline void keep_nonpositive(double g0, double g1, TimeSpan& s) {
     s.hi = 0.0;
     return;
   }
-  const double r = g0 / (g0 - g1);  // the root of the line, one sign change in [0, 1]
-  if (!(r >= 0.0 && r <= 1.0)) return;  // overflow (an infinite difference): no restriction
+  // An infinite difference (overflow) bounds nothing: g0 = -1e308 with g1 = +inf (truly 2e308)
+  // would give r = 0 for a root at 1/3. Finite ones give the root within 2^-50 relative.
+  const double d = g0 - g1;
+  if (!(std::isfinite(g0) && std::isfinite(g1) && std::isfinite(d))) return;
+  const double r = g0 / d;  // the root of the line, one sign change in [0, 1]
+  if (!(r >= 0.0 && r <= 1.0)) return;
   if (g0 > 0)
     s.lo = std::max(s.lo, below(r));  // g <= 0 on [r, 1]
   else
