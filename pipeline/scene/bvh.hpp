@@ -98,6 +98,8 @@ class Bvh {
   }
 
   bool empty() const { return nodes_.empty(); }
+  /// The box of every primitive (the root's); the tree must not be empty.
+  const Box& bounds() const { return nodes_.front().box; }
 
   /// Calls f(i, j) for every primitive i of `*this` and j of `other` whose boxes overlap, each
   /// pair once. Node pairs are spread over TBB tasks: f is called concurrently.
@@ -112,7 +114,7 @@ class Bvh {
   void parallel_for_each_overlap(const Bvh& other, F&& f, const Keep& keep) const {
     if (empty() || other.empty()) return;
     std::vector<Task> tasks{{0, 0, false}};
-    split_tasks(other, tasks);
+    split_tasks(other, tasks, keep);
     run_tasks(other, tasks, f, keep);
   }
   /// Per node, the merge of `per_primitive[i]` over the primitives i below it (`merge(x, y)`
@@ -147,7 +149,7 @@ class Bvh {
   void parallel_for_each_self_overlap(F&& f, const Keep& keep) const {
     if (empty()) return;
     std::vector<Task> tasks{{0, 0, true}};
-    split_tasks(*this, tasks);
+    split_tasks(*this, tasks, keep);
     run_tasks(*this, tasks, f, keep);
   }
 
@@ -158,6 +160,7 @@ class Bvh {
     bool self;
   };
   static constexpr std::size_t target_tasks = 256;
+  static constexpr std::size_t nodes_per_task = 64;
 
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end,
                            std::vector<std::array<double, 3>>& centroids);
@@ -218,10 +221,15 @@ class Bvh {
     return (b.hi[0] - b.lo[0]) + (b.hi[1] - b.lo[1]) + (b.hi[2] - b.lo[2]);
   }
 
-  /// Expands tasks breadth-first until there are enough to keep the threads busy; every
-  /// overlapping pair is reached from exactly one task.
-  void split_tasks(const Bvh& other, std::vector<Task>& tasks) const {
-    for (int round = 0; round < 32 && tasks.size() < target_tasks; ++round) {
+  /// Expands tasks breadth-first until there are enough to keep the threads busy (fewer for
+  /// small trees, where a task would cost more than its work); every overlapping pair is
+  /// reached from exactly one task. Node pairs that do not overlap or that keep rejects are
+  /// dropped on the way (keep as for parallel_for_each_overlap).
+  template <class Keep>
+  void split_tasks(const Bvh& other, std::vector<Task>& tasks, const Keep& keep) const {
+    const std::size_t target =
+        std::min(target_tasks, (nodes_.size() + other.nodes_.size()) / nodes_per_task + 1);
+    for (int round = 0; round < 32 && tasks.size() < target; ++round) {
       std::vector<Task> next;
       bool split_any = false;
       for (const Task& t : tasks) {
@@ -238,7 +246,7 @@ class Bvh {
           split_any = true;
           continue;
         }
-        if (!overlap(na.box, nb.box)) continue;
+        if (!overlap(na.box, nb.box) || !keep(t.a, t.b)) continue;
         if (na.leaf() && nb.leaf()) {
           next.push_back(t);
         } else if (nb.leaf() || (!na.leaf() && size_of(na.box) >= size_of(nb.box))) {
@@ -262,6 +270,11 @@ class Bvh {
   }
   template <class F, class Keep>
   void run_tasks(const Bvh& other, const std::vector<Task>& tasks, F& f, const Keep& keep) const {
+    if (tasks.size() == 1) {  // a small tree: no task to spawn
+      const predicates::RoundToNearestGuard fp;
+      const Task& t = tasks.front();
+      return t.self ? self_nodes(t.a, f, keep) : overlap_nodes(other, t.a, t.b, f, keep);
+    }
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size(), 1),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         // A worker may run with the host's FP state: box comparisons must not

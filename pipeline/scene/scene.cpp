@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <mutex>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -172,7 +173,10 @@ void check_triangles(const Triangles& triangles, Eigen::Index vertex_count) {
 
 void check_options(const SceneOptions& o) {
   check_ccd_options(o.ccd);
-  if (o.max_threads < 0) throw std::invalid_argument("exactccd: max_threads must be >= 0");
+  if (o.max_threads < 0 || o.max_threads > kMaxThreads)
+    throw std::invalid_argument("exactccd: max_threads must be in [0, " +
+                                std::to_string(kMaxThreads) + "], not " +
+                                std::to_string(o.max_threads));
   if (!(o.min_separation >= 0.0) || !std::isfinite(o.min_separation))
     throw std::invalid_argument("exactccd: SceneOptions::min_separation must be finite and >= 0");
   // One place for the scene's delta: SceneOptions::min_separation, which the broad phase
@@ -399,17 +403,20 @@ bool edges_share_vertex(const Edges& e, std::uint32_t i, std::uint32_t j) {
   return e(a, 0) == e(b, 0) || e(a, 0) == e(b, 1) || e(a, 1) == e(b, 0) || e(a, 1) == e(b, 1);
 }
 
-/// The ordered mesh pairs a call visits: vertex-face (A, B) for A != B unless both are static,
-/// and (A, A) for a moving mesh (not a rigid body) with self-collision; edge-edge the same with
-/// A <= B.
-template <class F>
-void for_each_mesh_pair(const std::vector<Mesh>& meshes, bool self, bool ordered, F&& f) {
-  for (std::size_t a = 0; a < meshes.size(); ++a)
-    for (std::size_t b = ordered ? 0 : a; b < meshes.size(); ++b) {
-      if (meshes[a].is_static && meshes[b].is_static) continue;
-      if (a == b && (!self || meshes[a].is_rigid)) continue;
-      f(static_cast<MeshId>(a), static_cast<MeshId>(b));
-    }
+/// Whether a call visits the mesh pair (a, b), a <= b: not when both are static; (a, a) only
+/// for a moving mesh (not a rigid body) with self-collision. Vertex-face visits such a pair in
+/// both orders, edge-edge once.
+bool visits(const std::vector<Mesh>& meshes, bool self, MeshId a, MeshId b) {
+  if (meshes[a].is_static && meshes[b].is_static) return false;
+  return a != b || (self && !meshes[a].is_rigid);
+}
+
+/// The box of every primitive in a mesh's hierarchies, or nullopt when they hold none.
+std::optional<Box> bounds_of(const Hierarchies& h) {
+  std::optional<Box> box;
+  for (const Bvh* tree : {&h.vertices, &h.edges, &h.faces})
+    if (!tree->empty()) box = box ? scene::merge(*box, tree->bounds()) : tree->bounds();
+  return box;
 }
 
 /// A pair's answer: the verdict with the TOI in s, and the contact time where defined.
@@ -424,6 +431,12 @@ struct Decision {
 };
 
 }  // namespace
+
+/// Per-thread values, looked up in the traversals' inner loops: native thread-local keys, much
+/// cheaper per lookup than the default's hash table.
+template <class T>
+using PerThread = tbb::enumerable_thread_specific<T, tbb::cache_aligned_allocator<T>,
+                                                  tbb::ets_key_per_instance>;
 
 /// Candidate pairs and, for each, the start of its time span (the earliest time its blended
 /// boxes can overlap, time_span.hpp; 0 without the cull by time).
@@ -554,31 +567,65 @@ struct Scene::Impl {
             row(b.end, b.edges(j, 0)),   row(b.end, b.edges(j, 1))};
   }
 
-  /// The cylinder culls of the mesh pairs the calls visit, indexed a * mesh count + b
-  /// (cylinder_cull); computed before the parallel traversals, which only read them.
-  std::vector<std::optional<CylinderCull>> cylinder_culls(const SceneOptions& o) {
-    const std::size_t n = meshes.size();
-    std::vector<std::optional<CylinderCull>> culls(n * n);
-    if (!any_rigid()) return culls;
-    for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
-      culls[a * n + b] = cylinder_cull(meshes, a, b, o.min_separation);
+  /// A mesh pair a call visits (a <= b) and its cylinder culls in both orders.
+  struct MeshPair {
+    MeshId a, b;
+    std::optional<CylinderCull> ab, ba;  ///< cylinder_cull(a, b), cylinder_cull(b, a)
+  };
+
+  /// The mesh pairs a call visits (`visits`) whose boxes overlap, the box of a mesh merging
+  /// its hierarchies `at(mesh)` for every `at` given, sorted; pairs apart hold no pair of
+  /// primitives whose boxes overlap (each primitive's box lies in its mesh's), so nothing is
+  /// lost. Found by a hierarchy over the meshes' boxes: scenes of many small meshes cost time
+  /// and memory in proportion to the pairs that come close, not to the square of their number.
+  /// Then the cylinder culls (rigid bodies only), before the parallel traversals read them.
+  /// PROOF: proofs/scene.md#broad-phase
+  template <class... At>
+  std::vector<MeshPair> close_mesh_pairs(const SceneOptions& o, const At&... at) {
+    std::vector<Box> boxes;
+    std::vector<MeshId> ids;  // the mesh of each box (meshes without primitives have none)
+    for (MeshId m = 0; m < meshes.size(); ++m) {
+      std::optional<Box> box;
+      for (const std::optional<Box>& b : {bounds_of(at(meshes[m]))...})
+        if (b) box = box ? scene::merge(*box, *b) : *b;
+      if (!box) continue;
+      boxes.push_back(*box);
+      ids.push_back(m);
+    }
+    Bvh tree;
+    tree.build(boxes);
+    PerThread<std::vector<MeshPair>> found;
+    tree.parallel_for_each_self_overlap([&](std::uint32_t i, std::uint32_t j) {
+      const MeshId a = std::min(ids[i], ids[j]), b = std::max(ids[i], ids[j]);
+      if (visits(meshes, o.self_collision, a, b)) found.local().push_back({a, b, {}, {}});
     });
-    return culls;
+    std::vector<MeshPair> pairs;
+    for (MeshId m : ids)
+      if (visits(meshes, o.self_collision, m, m)) pairs.push_back({m, m, {}, {}});
+    for (const auto& part : found) pairs.insert(pairs.end(), part.begin(), part.end());
+    std::sort(pairs.begin(), pairs.end(), [](const MeshPair& x, const MeshPair& y) {
+      return std::tie(x.a, x.b) < std::tie(y.a, y.b);
+    });
+    if (any_rigid())
+      for (MeshPair& p : pairs) {
+        p.ab = cylinder_cull(meshes, p.a, p.b, o.min_separation);
+        p.ba = cylinder_cull(meshes, p.b, p.a, o.min_separation);
+      }
+    return pairs;
   }
 
-  /// Appends every candidate pair of the hierarchies `at(mesh)` (one span) to `found`: pairs
-  /// of primitives whose boxes overlap, pairs within a mesh sharing a vertex excluded, pairs
-  /// whose cylinder ranges are apart (`culls`) counted in `culled` and excluded. With `by_time`
-  /// (the swept span), pairs of linear or static meshes whose blended boxes cannot overlap by
-  /// t_max are cut with their nodes (time_span.hpp), each cut counted in `time_culled`.
-  template <class At>
-  void gather_candidates(const SceneOptions& o, const At& at,
-                         const std::vector<std::optional<CylinderCull>>& culls,
-                         tbb::enumerable_thread_specific<Candidates>& found,
-                         tbb::enumerable_thread_specific<std::uint64_t>& culled, bool by_time,
-                         tbb::enumerable_thread_specific<std::uint64_t>& time_culled) const {
-    const std::size_t n = meshes.size();
-    const double t_end = o.ccd.t_max;
+  /// Calls sink(pair, start) (concurrently) for every candidate pair of the hierarchies
+  /// `at(mesh)` (one span) of the mesh pairs `pairs`: pairs of primitives whose boxes overlap,
+  /// pairs within a mesh sharing a vertex excluded, pairs whose cylinder ranges are apart (the
+  /// pair's culls) counted in `culled` and excluded. With `by_time` (the swept span), pairs of
+  /// linear or static meshes whose blended boxes cannot overlap by until() (read at each test:
+  /// a bound that only decreases, time_span.hpp) are cut with their nodes, each cut counted in
+  /// `time_culled`; `start` is the start of the pair's time span (0 without motion boxes).
+  template <class At, class Sink, class Until>
+  void gather_candidates(const At& at, const std::vector<MeshPair>& pairs, const Sink& sink,
+                         PerThread<std::uint64_t>& culled, bool by_time,
+                         const Until& until,
+                         PerThread<std::uint64_t>& time_culled) const {
     // The motions of a mesh pair when culling by time applies to it, else nullptr.
     const auto motions = [&](MeshId a, MeshId b, auto member) {
       using Motion = Hierarchies::Motion;
@@ -589,24 +636,23 @@ struct Scene::Impl {
           applies ? &(at(ma).*member.first) : nullptr, applies ? &(at(mb).*member.second) : nullptr);
     };
     const auto time_keep = [&](const Hierarchies::Motion* ma, const Hierarchies::Motion* mb) {
-      return [ma, mb, t_end, &time_culled](std::uint32_t i, std::uint32_t j) {
-        if (scene::may_meet_by(ma->nodes[i], mb->nodes[j], t_end)) return true;
+      return [ma, mb, &until, &time_culled](std::uint32_t i, std::uint32_t j) {
+        if (scene::may_meet_by(ma->nodes[i], mb->nodes[j], until())) return true;
         ++time_culled.local();
         return false;
       };
     };
-    // The start of a pair's time span, or +infinity when it cannot meet by t_end (counted).
+    // The start of a pair's time span, or +infinity when it cannot meet by until() (counted).
     const auto time_start = [&](const Hierarchies::Motion* ma, const Hierarchies::Motion* mb,
                                 std::uint32_t i, std::uint32_t j) {
       if (!ma) return 0.0;
       const scene::TimeSpan span = scene::overlap_span(ma->primitives[i], mb->primitives[j]);
-      if (!span.empty() && span.lo <= t_end) return span.lo;
+      if (!span.empty() && span.lo <= until()) return span.lo;
       ++time_culled.local();
       return std::numeric_limits<double>::infinity();
     };
-    for_each_mesh_pair(meshes, o.self_collision, true, [&](MeshId a, MeshId b) {
+    const auto vertex_face = [&](MeshId a, MeshId b, const std::optional<CylinderCull>& cull) {
       const Mesh& mb = meshes[b];
-      const auto& cull = culls[a * n + b];
       const Bvh& va = at(meshes[a]).vertices;
       const Bvh& fb = at(mb).faces;
       const auto [mv, mf] = motions(
@@ -619,7 +665,7 @@ struct Scene::Impl {
         }
         const double start = time_start(mv, mf, v, f);
         if (start == std::numeric_limits<double>::infinity()) return;
-        found.local().add({QueryType::vertex_face, a, v, b, f}, start);
+        sink(ScenePair{QueryType::vertex_face, a, v, b, f}, start);
       };
       if (cull)
         va.parallel_for_each_overlap(fb, pair,
@@ -629,8 +675,8 @@ struct Scene::Impl {
         va.parallel_for_each_overlap(fb, pair, time_keep(mv, mf));
       else
         va.parallel_for_each_overlap(fb, pair);
-    });
-    for_each_mesh_pair(meshes, o.self_collision, false, [&](MeshId a, MeshId b) {
+    };
+    const auto edge_edge = [&](MeshId a, MeshId b, const std::optional<CylinderCull>& cull) {
       const Mesh& ma = meshes[a];
       const auto [ea_motion, eb_motion] =
           motions(a, b, std::make_pair(&Hierarchies::edge_motion, &Hierarchies::edge_motion));
@@ -639,14 +685,13 @@ struct Scene::Impl {
           if (edges_share_vertex(ma.edges, i, j)) return;
           const double start = time_start(m, m, i, j);
           if (start == std::numeric_limits<double>::infinity()) return;
-          found.local().add({QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)}, start);
+          sink(ScenePair{QueryType::edge_edge, a, std::min(i, j), a, std::max(i, j)}, start);
         };
         if (ea_motion)
           at(ma).edges.parallel_for_each_self_overlap(pair, time_keep(ea_motion, ea_motion));
         else
           at(ma).edges.parallel_for_each_self_overlap(pair);
       } else {
-        const auto& cull = culls[a * n + b];
         const Bvh& ea = at(ma).edges;
         const Bvh& eb = at(meshes[b]).edges;
         const auto pair = [&, m0 = ea_motion, m1 = eb_motion](std::uint32_t i, std::uint32_t j) {
@@ -656,7 +701,7 @@ struct Scene::Impl {
           }
           const double start = time_start(m0, m1, i, j);
           if (start == std::numeric_limits<double>::infinity()) return;
-          found.local().add({QueryType::edge_edge, a, i, b, j}, start);
+          sink(ScenePair{QueryType::edge_edge, a, i, b, j}, start);
         };
         if (cull)
           ea.parallel_for_each_overlap(
@@ -666,6 +711,13 @@ struct Scene::Impl {
         else
           ea.parallel_for_each_overlap(eb, pair);
       }
+    };
+    // Many small meshes: the mesh pairs in parallel too (each traversal is itself parallel).
+    tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
+      const MeshPair& p = pairs[k];
+      vertex_face(p.a, p.b, p.ab);
+      if (p.a != p.b) vertex_face(p.b, p.a, p.ba);
+      edge_edge(p.a, p.b, p.ab);
     });
   }
 
@@ -673,7 +725,7 @@ struct Scene::Impl {
   /// primitives below it, so apart nodes hold no pair that is not apart (each cut counted).
   struct NodeCull {
     std::vector<scene::CylinderRange> first, second;
-    tbb::enumerable_thread_specific<std::uint64_t>* culled;
+    PerThread<std::uint64_t>* culled;
     bool operator()(std::uint32_t a, std::uint32_t b) const {
       if (!scene::apart(first[a], second[b])) return true;
       ++culled->local();
@@ -682,37 +734,58 @@ struct Scene::Impl {
   };
   static NodeCull node_cull(const Bvh& a, const std::vector<scene::CylinderRange>& ra,
                             const Bvh& b, const std::vector<scene::CylinderRange>& rb,
-                            tbb::enumerable_thread_specific<std::uint64_t>& culled) {
+                            PerThread<std::uint64_t>& culled) {
     return {a.node_values(ra, scene::merge_ranges), b.node_values(rb, scene::merge_ranges),
             &culled};
   }
 
-  static std::uint64_t total(const tbb::enumerable_thread_specific<std::uint64_t>& counts) {
+  static std::uint64_t total(const PerThread<std::uint64_t>& counts) {
     std::uint64_t sum = 0;
     for (std::uint64_t c : counts) sum += c;
     return sum;
   }
 
-  /// The candidate pairs of the swept hierarchies, in no particular order, with their spans'
-  /// starts.
-  Candidates swept_candidates(const SceneOptions& o, SceneStats& stats) {
-    // Culling by time when some linearly moving mesh travels far for its size (moves_far).
-    const bool by_time =
-        o.cull_by_time && std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) {
-          return !m.is_rigid && moves_far(m);
-        });
-    for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats, by_time);
-    const auto culls = cylinder_culls(o);
-    tbb::enumerable_thread_specific<Candidates> found;
-    tbb::enumerable_thread_specific<std::uint64_t> culled(0), time_culled(0);
-    gather_candidates(o, [](const Mesh& m) -> const Hierarchies& { return m.spans[0]; }, culls,
-                      found, culled, by_time, time_culled);
+  static const Hierarchies& swept(const Mesh& m) { return m.spans[0]; }
+
+  /// The swept hierarchies, ready to traverse: the mesh pairs, and whether to cull by time (when
+  /// some linearly moving mesh travels far for its size, moves_far).
+  struct SweptScene {
+    std::vector<MeshPair> pairs;
+    bool by_time = false;
+  };
+  SweptScene prepare_swept(const SceneOptions& o, SceneStats& stats) {
+    SweptScene s;
+    s.by_time = o.cull_by_time && std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) {
+                  return !m.is_rigid && moves_far(m);
+                });
+    for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats, s.by_time);
+    s.pairs = close_mesh_pairs(o, swept);
+    return s;
+  }
+
+  /// Calls sink(pair, start) for every candidate pair of the swept hierarchies that can meet
+  /// by until() (gather_candidates), counting the culls in the stats.
+  template <class Sink, class Until>
+  void swept_candidates(const SweptScene& s, const Sink& sink, const Until& until,
+                        SceneStats& stats) {
+    PerThread<std::uint64_t> culled(0), time_culled(0);
+    gather_candidates(swept, s.pairs, sink, culled, s.by_time, until, time_culled);
     stats.cylinder_culled += total(culled);
     stats.time_culled += total(time_culled);
+  }
+  /// Every candidate pair of the swept hierarchies that can meet by t_max, in no particular
+  /// order, with their spans' starts.
+  Candidates swept_candidates(const SceneOptions& o, SceneStats& stats) {
+    const SweptScene s = prepare_swept(o, stats);
+    PerThread<Candidates> found;
+    const double t_max = o.ccd.t_max;
+    swept_candidates(
+        s, [&](const ScenePair& p, double start) { found.local().add(p, start); },
+        [t_max] { return t_max; }, stats);
     return concatenate(found);
   }
 
-  static Candidates concatenate(tbb::enumerable_thread_specific<Candidates>& parts) {
+  static Candidates concatenate(PerThread<Candidates>& parts) {
     std::size_t total = 0;
     for (const Candidates& part : parts) total += part.pairs.size();
     Candidates all;
@@ -728,17 +801,17 @@ struct Scene::Impl {
   /// The candidates of the older scheme: pairs whose boxes overlap at the start or at the end,
   /// sorted, each once.
   std::vector<ScenePair> static_candidates(const SceneOptions& o, SceneStats& stats) {
-    tbb::enumerable_thread_specific<Candidates> found;
-    tbb::enumerable_thread_specific<std::uint64_t> culled(0), unused(0);
-    const auto culls = cylinder_culls(o);
+    PerThread<Candidates> found;
+    PerThread<std::uint64_t> culled(0), unused(0);
     for (Span span : {Span::start, Span::end}) {
       for (Mesh& m : meshes) prepare(m, span, o.min_separation, stats);
+      const auto at = [span](const Mesh& m) -> const Hierarchies& {
+        return m.spans[m.is_static ? 0 : static_cast<int>(span)];
+      };
       gather_candidates(
-          o,
-          [span](const Mesh& m) -> const Hierarchies& {
-            return m.spans[m.is_static ? 0 : static_cast<int>(span)];
-          },
-          culls, found, culled, false, unused);
+          at, close_mesh_pairs(o, at),
+          [&](const ScenePair& p, double start) { found.local().add(p, start); }, culled, false,
+          [] { return 1.0; }, unused);
     }
     stats.cylinder_culled += total(culled);
     std::vector<ScenePair> all = std::move(concatenate(found).pairs);
@@ -781,7 +854,7 @@ struct Scene::Impl {
                                             ? std::move(swept_candidates(o, result.stats).pairs)
                                             : static_candidates(o, result.stats);
     // The narrow phase over a flat list: work stealing balances clusters of costly pairs.
-    tbb::enumerable_thread_specific<std::vector<SceneContact>> found;
+    PerThread<std::vector<SceneContact>> found;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 64),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         const predicates::RoundToNearestGuard fp;
@@ -858,70 +931,108 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
   EarliestContact out;
   const double t_max = o.ccd.t_max;
   std::atomic<double> bound{t_max};
-  Candidates gathered = swept_candidates(o, out.stats);
-  count(gathered.pairs, out.stats);
-  // Earliest span first (in buckets: linear time), so that early contacts lower the bound soon;
-  // a pair whose span starts after the bound cannot meet by it and is skipped.
-  order_by_span_start(gathered);
-  const std::vector<ScenePair>& candidates = gathered.pairs;
-  const std::vector<double>& starts = gathered.starts;
-  struct Found {
+  // Contacts at t = 0: the smallest pair known to have toi_lo = 0 with the caller's options
+  // (its final answer). No pair after it in pair order can be the earliest (a tie at 0 goes to
+  // the smaller pair, and no toi_lo is below 0), so such pairs are skipped: a step whose
+  // earliest contact is at t = 0 decides only the pairs before the best one found so far.
+  // Threads read the shared pair under the lock only when its version has changed.
+  std::mutex zero_lock;
+  std::atomic<std::uint64_t> zero_version{0};
+  ScenePair zero_pair;
+  struct Local {
     std::vector<SceneContact> contacts;
-    std::uint64_t tests = 0;
+    std::uint64_t tests = 0, vertex_face = 0, edge_edge = 0;
+    std::uint64_t seen_version = 0;
+    ScenePair below;  // zero_pair as of seen_version (> 0)
   };
-  tbb::enumerable_thread_specific<Found> locals;
-  const auto batch = tbb::blocked_range<std::size_t>(0, candidates.size(), 64);
-  tbb::parallel_for(batch, [&](const tbb::blocked_range<std::size_t>& range) {
-    Found& local = locals.local();
+  PerThread<Local> locals;
+  // Decides one candidate over [0, bound] (after a certified cull over that window).
+  const auto decide_one = [&](const ScenePair& p, Local& local) {
+    const double window = bound.load(std::memory_order_relaxed);
+    if (zero_version.load(std::memory_order_acquire) != local.seen_version) {
+      const std::lock_guard<std::mutex> hold(zero_lock);
+      local.seen_version = zero_version.load(std::memory_order_relaxed);
+      local.below = zero_pair;
+    }
+    if (local.seen_version > 0 && !(p < local.below)) return;  // cannot beat a contact at 0
     // Upward rounding for the window culls (time_window.hpp); each pair's test sets and restores
-    // its own mode, and the bound below only gets larger under upward rounding (still valid).
+    // its own mode.
     const predicates::RoundingGuard upward;
-    for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      const ScenePair& p = candidates[k];
-      const double window = bound.load(std::memory_order_relaxed);
-      if (starts[k] > window) continue;  // its blended boxes cannot overlap by the bound
-      CcdOptions options = o.ccd;
-      // A subnormal bound (a contact at exactly t = 0 was found) is decided over [0, t_max]
-      // instead: the same first contact when it lies below the bound, and the filters, whose
-      // arithmetic has no room below the smallest normal double, would leave every such pair
-      // to the exact path.
-      options.t_max = window < std::numeric_limits<double>::min() ? t_max : window;
-      // One query per pair: culled over the window when the bound has shrunk, else decided.
-      const auto decide_linear = [&](const auto& query) -> std::optional<CcdResult> {
-        if (window < t_max && scene::disjoint_over_window(query, window, o.min_separation))
-          return std::nullopt;
+    CcdOptions options = o.ccd;
+    // A subnormal bound (a contact at exactly t = 0 was found) is decided over [0, t_max]
+    // instead: the same first contact when it lies below the bound, and the filters, whose
+    // arithmetic has no room below the smallest normal double, would leave every such pair to
+    // the exact path.
+    options.t_max = window < std::numeric_limits<double>::min() ? t_max : window;
+    // One query per pair: culled over the window when the bound has shrunk, else decided.
+    const auto decide_linear = [&](const auto& query) -> std::optional<CcdResult> {
+      if (window < t_max && scene::disjoint_over_window(query, window, o.min_separation))
+        return std::nullopt;
+      ++local.tests;
+      return decide_query(query, options);
+    };
+    std::optional<CcdResult> decided;
+    if (involves_rigid(p)) {
+      // The same over the arcs: certified boxes over [0, window], then the rigid test.
+      if (!(window < t_max && rigid_disjoint_over_window(p, window, o.min_separation))) {
         ++local.tests;
-        return decide_query(query, options);
-      };
-      std::optional<CcdResult> decided;
-      if (involves_rigid(p)) {
-        // The same over the arcs: certified boxes over [0, window], then the rigid test.
-        if (!(window < t_max && rigid_disjoint_over_window(p, window, o.min_separation))) {
-          ++local.tests;
-          decided = p.type == QueryType::vertex_face
-                        ? vertex_face_ccd(rigid_vertex_face(p), options).ccd
-                        : edge_edge_ccd(rigid_edge_edge(p), options).ccd;
-        }
-      } else {
-        decided = p.type == QueryType::vertex_face ? decide_linear(vertex_face(p))
-                                                   : decide_linear(edge_edge(p));
+        decided = p.type == QueryType::vertex_face
+                      ? vertex_face_ccd(rigid_vertex_face(p), options).ccd
+                      : edge_edge_ccd(rigid_edge_edge(p), options).ccd;
       }
-      if (!decided) continue;
-      const CcdResult& r = *decided;
-      if (!r.collides) continue;
-      local.contacts.push_back({p, r.toi_lo, r.toi_hi});
-      const double next = std::min(
-          t_max,
-          std::nextafter(r.toi_hi + o.ccd.toi_width, std::numeric_limits<double>::infinity()));
-      double current = bound.load(std::memory_order_relaxed);
-      while (next < current && !bound.compare_exchange_weak(current, next)) {
+    } else {
+      decided = p.type == QueryType::vertex_face ? decide_linear(vertex_face(p))
+                                                 : decide_linear(edge_edge(p));
+    }
+    if (!decided || !decided->collides) return;
+    const CcdResult& r = *decided;
+    local.contacts.push_back({p, r.toi_lo, r.toi_hi});
+    if (r.toi_lo == 0.0 && options.t_max == t_max) {  // the caller's options: final
+      const std::lock_guard<std::mutex> hold(zero_lock);
+      if (zero_version.load(std::memory_order_relaxed) == 0 || p < zero_pair) {
+        zero_pair = p;
+        zero_version.fetch_add(1, std::memory_order_release);
       }
     }
+    const double next = std::min(
+        t_max,
+        std::nextafter(r.toi_hi + o.ccd.toi_width, std::numeric_limits<double>::infinity()));
+    double current = bound.load(std::memory_order_relaxed);
+    while (next < current && !bound.compare_exchange_weak(current, next)) {
+    }
+  };
+  // One traversal, cut by the bound as it falls: pairs whose spans start at 0 (close at the
+  // start: touching, resting, neighbours) are decided as the traversal meets them, so a contact
+  // at or near t = 0 shrinks the rest of the traversal at once; the others are kept for later.
+  PerThread<Candidates> later;
+  const SweptScene swept_scene = prepare_swept(o, out.stats);
+  swept_candidates(
+      swept_scene,
+      [&](const ScenePair& p, double start) {
+        Local& local = locals.local();
+        ++(p.type == QueryType::vertex_face ? local.vertex_face : local.edge_edge);
+        if (start == 0.0)
+          decide_one(p, local);
+        else
+          later.local().add(p, start);
+      },
+      [&bound] { return bound.load(std::memory_order_relaxed); }, out.stats);
+  // Then the rest, earliest span first (in buckets: linear time), so that early contacts lower
+  // the bound soon; a pair whose span starts after the bound cannot meet by it and is skipped.
+  Candidates rest = concatenate(later);
+  order_by_span_start(rest);
+  const auto batch = tbb::blocked_range<std::size_t>(0, rest.pairs.size(), 64);
+  tbb::parallel_for(batch, [&](const tbb::blocked_range<std::size_t>& range) {
+    Local& local = locals.local();
+    for (std::size_t k = range.begin(); k != range.end(); ++k)
+      if (rest.starts[k] <= bound.load(std::memory_order_relaxed)) decide_one(rest.pairs[k], local);
   });
   const double final_bound = bound.load();
   std::vector<SceneContact> found;
-  for (Found& local : locals) {
+  for (Local& local : locals) {
     out.stats.narrow_phase_tests += local.tests;
+    out.stats.vertex_face_candidates += local.vertex_face;
+    out.stats.edge_edge_candidates += local.edge_edge;
     for (const SceneContact& c : local.contacts)
       if (c.toi_lo <= final_bound) found.push_back(c);
   }

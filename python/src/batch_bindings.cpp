@@ -14,6 +14,7 @@
 
 #include "bindings.hpp"
 #include "exactccd/ccd.hpp"
+#include "exactccd/scene.hpp"
 
 namespace exactccd::python {
 
@@ -61,8 +62,9 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
                        double toi_width, const std::string& mode,
                        const std::optional<int>& threads, double min_separation) {
   const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
-  if (threads && *threads < 1)
-    throw py::value_error("threads must be >= 1 (or None for every core), not " +
+  if (threads && (*threads < 1 || *threads > kMaxThreads))
+    throw py::value_error("threads must be in [1, " + std::to_string(kMaxThreads) +
+                          "] (or None for every core), not " +
                           std::to_string(*threads));
   const DoubleArray array = as_double_array(queries, {-1, 8, 3}, "queries");
   const auto n = static_cast<std::size_t>(array.shape(0));

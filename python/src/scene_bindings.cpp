@@ -71,7 +71,9 @@ SceneOptions scene_options(double t_max, double toi_width, const std::string& mo
   options.min_separation = min_separation;
   options.broad_phase = parse_broad_phase(broad_phase);
   options.self_collision = self_collision;
-  if (max_threads < 0) throw py::value_error("max_threads must be >= 0 (0: every core)");
+  if (max_threads < 0 || max_threads > kMaxThreads)
+    throw py::value_error("max_threads must be in [0, " + std::to_string(kMaxThreads) +
+                          "] (0: every core), not " + std::to_string(max_threads));
   options.max_threads = max_threads;
   options.record_candidates = record_candidates;
   return options;

@@ -64,6 +64,13 @@ def test_batch_converts_its_input(sample_files):
         assert_same(BATCH[data.type](converted), reference)
 
 
+@pytest.mark.parametrize("threads", [0, -1, 65537])
+def test_batch_refuses_a_bad_thread_count(threads):
+    # 65537 crashed the process inside TBB's task arena before it was refused.
+    with pytest.raises(ValueError, match="threads"):
+        exactccd.vertex_face_ccd_batch(np.zeros((1, 8, 3)), threads=threads)
+
+
 def test_empty_batch():
     result = exactccd.vertex_face_ccd_batch(np.zeros((0, 8, 3)))
     assert all(len(a) == 0 for a in result)

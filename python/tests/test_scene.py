@@ -163,6 +163,11 @@ def test_bad_scene_input(two_meshes):
         scene.find_contacts(t_max=0.0)
     with pytest.raises(ValueError):
         scene.earliest_contact(broad_phase="static_bvh")
+    for threads in (-1, 65537):  # TBB's arena crashed on 65537 before it was refused
+        with pytest.raises(ValueError, match="max_threads"):
+            scene.find_contacts(max_threads=threads)
+        with pytest.raises(ValueError, match="max_threads"):
+            scene.earliest_contact(max_threads=threads)
     with pytest.raises(IndexError):
         scene.vertex_face_query(exactccd.ScenePair("vf", 0, 10 ** 6, 0, 0))
     with pytest.raises(ValueError):

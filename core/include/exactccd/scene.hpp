@@ -75,6 +75,10 @@ enum class BroadPhase : std::uint8_t {
 /// \return "swept_bvh" or "static_bvh" (a static string).
 EXACTCCD_API const char* to_string(BroadPhase broad_phase) noexcept;
 
+/// The most threads a call may ask for (SceneOptions::max_threads, Python's `threads`): TBB's
+/// task arenas fail beyond it (a crash, not an error), so a larger request is refused.
+constexpr int kMaxThreads = 65536;
+
 /// Options of Scene::find_contacts and Scene::earliest_contact.
 struct SceneOptions {
   /// Options of each pair's test (t_max, toi_width, mode), as in vertex_face_ccd; invalid ones
@@ -97,7 +101,8 @@ struct SceneOptions {
   BroadPhase broad_phase = BroadPhase::swept_bvh;
   /// Test pairs within each moving mesh (pairs sharing a vertex excluded).
   bool self_collision = true;
-  /// At most this many threads for the narrow phase; 0: TBB's default. Must be >= 0.
+  /// At most this many threads for the narrow phase; 0: TBB's default. Must be in
+  /// [0, kMaxThreads].
   int max_threads = 0;
   /// Also return the candidate pairs (SceneResult::candidates), e.g. to write them as queries.
   bool record_candidates = false;
