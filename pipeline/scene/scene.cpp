@@ -849,6 +849,7 @@ struct Scene::Impl {
   }
 
   SceneResult find_contacts(const SceneOptions& o) {
+    if (o.broad_phase == BroadPhase::swept_bvh && !o.record_candidates) return streamed_contacts(o);
     SceneResult result;
     std::vector<ScenePair> candidates = o.broad_phase == BroadPhase::swept_bvh
                                             ? std::move(swept_candidates(o, result.stats).pairs)
@@ -875,6 +876,39 @@ struct Scene::Impl {
       tbb::parallel_sort(candidates.begin(), candidates.end());
       result.candidates = std::move(candidates);
     }
+    result.earliest = earliest_of(result.contacts);
+    return result;
+  }
+
+  /// find_contacts without a list of candidates: each pair is decided as the traversal meets
+  /// it (memory independent of the candidate count; the traversal's tasks spread the work).
+  SceneResult streamed_contacts(const SceneOptions& o) {
+    SceneResult result;
+    struct Local {
+      std::vector<SceneContact> contacts;
+      std::uint64_t vertex_face = 0, edge_edge = 0;
+    };
+    PerThread<Local> locals;
+    const double t_max = o.ccd.t_max;
+    swept_candidates(
+        prepare_swept(o, result.stats),
+        [&](const ScenePair& p, double) {
+          Local& local = locals.local();
+          ++(p.type == QueryType::vertex_face ? local.vertex_face : local.edge_edge);
+          const Decision d = decide(p, o.ccd);
+          if (d.ccd.collides) local.contacts.push_back(d.contact(p));
+        },
+        [t_max] { return t_max; }, result.stats);
+    for (const Local& local : locals) {
+      result.contacts.insert(result.contacts.end(), local.contacts.begin(), local.contacts.end());
+      result.stats.vertex_face_candidates += local.vertex_face;
+      result.stats.edge_edge_candidates += local.edge_edge;
+    }
+    result.stats.narrow_phase_tests =
+        result.stats.vertex_face_candidates + result.stats.edge_edge_candidates;
+    // Sorted output: the same whatever the number of threads and the order they ran in.
+    tbb::parallel_sort(result.contacts.begin(), result.contacts.end(),
+                       [](const SceneContact& a, const SceneContact& b) { return a.pair < b.pair; });
     result.earliest = earliest_of(result.contacts);
     return result;
   }
