@@ -48,16 +48,26 @@ constexpr unsigned kRoundToNearest = 0x0000;
 constexpr unsigned kRoundUpward = 0x4000;
 constexpr unsigned kAllExceptionsMasked = 0x1f80;  // IM DM ZM OM UM PM; FTZ (0x8000), DAZ (0x40)
                                                    // and the sticky flags (0x3f) all clear
+constexpr unsigned kStickyFlags = 0x3f;            // IE DE ZE OE UE PE
 }  // namespace mxcsr
 
 /// Holds the environment the proofs assume for its lifetime (one thread: MXCSR is per thread).
 class FpEnvironmentGuard {
  public:
+  /// Writes the register only when its control bits differ from those asked for (an ldmxcsr
+  /// costs about as much as a filtered query's arithmetic); the caller's sticky flags are kept,
+  /// the library never reads them.
   explicit FpEnvironmentGuard(Rounding rounding) noexcept : saved_(_mm_getcsr()) {
-    _mm_setcsr(mxcsr::kAllExceptionsMasked |
-               (rounding == Rounding::upward ? mxcsr::kRoundUpward : mxcsr::kRoundToNearest));
+    const unsigned wanted =
+        mxcsr::kAllExceptionsMasked |
+        (rounding == Rounding::upward ? mxcsr::kRoundUpward : mxcsr::kRoundToNearest) |
+        (saved_ & mxcsr::kStickyFlags);
+    if (wanted != saved_) _mm_setcsr(wanted);
   }
-  ~FpEnvironmentGuard() { _mm_setcsr(saved_); }
+  /// The caller's register back, bit for bit (flags raised inside the library included).
+  ~FpEnvironmentGuard() {
+    if (_mm_getcsr() != saved_) _mm_setcsr(saved_);
+  }
   FpEnvironmentGuard(const FpEnvironmentGuard&) = delete;
   FpEnvironmentGuard& operator=(const FpEnvironmentGuard&) = delete;
 
