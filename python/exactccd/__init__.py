@@ -15,9 +15,22 @@ the primitives come within Euclidean distance delta, and the TOI is the earliest
 Bad input raises ValueError (malformed query files: exactccd.InputError, a ValueError).
 """
 
+import enum
 from typing import NamedTuple, Optional
 
 import numpy as np
+
+
+class QueryType(str, enum.Enum):
+    """The kind of a pair of primitives (ScenePair.type): an enum whose members are also the
+    strings that name them in query files, so `pair.type == "vertex-face"` holds as well."""
+
+    vertex_face = "vertex-face"
+    edge_edge = "edge-edge"
+
+    def __str__(self):
+        return self.value
+
 
 from . import _exactccd
 from ._exactccd import (
@@ -54,7 +67,7 @@ for _type in (CcdResult, EarliestContact, InputError, RigidCcdResult, RigidMotio
 
 __all__ = [
     "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES",
-    "QueryData", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene", "SceneContact",
+    "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene", "SceneContact",
     "ScenePair", "SceneResult", "SceneStats", "edge_edge_ccd", "edge_edge_ccd_batch", "exact_ccd",
     "find_query_files", "query_type_from_path", "read_query_file", "read_query_file_exact",
     "rigid_edge_edge_ccd", "rigid_vertex_face_ccd", "vertex_face_ccd", "vertex_face_ccd_batch",

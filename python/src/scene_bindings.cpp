@@ -147,7 +147,14 @@ void bind_scene(py::module_& m) {
            }),
            py::arg("type"), py::arg("first_mesh"), py::arg("first_index"),
            py::arg("second_mesh"), py::arg("second_index"))
-      .def_property_readonly("type", [](const ScenePair& p) { return to_string(p.type); })
+      .def_property_readonly(
+          "type",
+          [](const ScenePair& p) {
+            // exactccd.QueryType: an enum whose members are also their names as strings.
+            return py::module_::import("exactccd").attr("QueryType")(to_string(p.type));
+          },
+          "exactccd.QueryType.vertex_face or .edge_edge (equal to \"vertex-face\", "
+          "\"edge-edge\").")
       .def_readonly("first_mesh", &ScenePair::first_mesh)
       .def_readonly("first_index", &ScenePair::first_index)
       .def_readonly("second_mesh", &ScenePair::second_mesh)
@@ -194,24 +201,18 @@ void bind_scene(py::module_& m) {
 
   py::class_<SceneResult>(m, "SceneResult")
       .def_readonly("contacts", &SceneResult::contacts, "Every colliding pair, in pair order.")
-      .def_property_readonly(
-          "earliest",
-          [](const SceneResult& r) -> std::optional<SceneContact> {
-            if (r.contacts.empty()) return std::nullopt;
-            return r.earliest;
-          },
-          "The contact with the smallest toi_lo (ties: pair order), or None.")
+      .def_readonly("earliest", &SceneResult::earliest,
+                    "The contact with the smallest toi_lo (ties: pair order); without contacts, "
+                    "toi_lo = toi_hi = +inf, as in C++.")
       .def_readonly("candidates", &SceneResult::candidates,
                     "Every candidate pair (with record_candidates=True).")
       .def_readonly("stats", &SceneResult::stats);
 
   py::class_<EarliestContact>(m, "EarliestContact")
       .def_readonly("collides", &EarliestContact::collides)
-      .def_property_readonly("contact",
-                             [](const EarliestContact& e) -> std::optional<SceneContact> {
-                               if (!e.collides) return std::nullopt;
-                               return e.contact;
-                             })
+      .def_readonly("contact", &EarliestContact::contact,
+                    "The earliest contact; without one (collides False), toi_lo = toi_hi = +inf, "
+                    "as in C++.")
       .def_readonly("stats", &EarliestContact::stats);
 
   py::class_<GuardedScene>(m, "Scene",

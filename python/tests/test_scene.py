@@ -116,6 +116,33 @@ def test_cross_mesh_contacts_equal_all_pairs(two_meshes):
     assert len(got) > 0
 
 
+def test_pair_types_are_an_enum_and_no_contact_is_infinity(two_meshes):
+    scene = build(two_meshes)
+    result = scene.find_contacts()
+    types = {c.pair.type for c in result.contacts}
+    assert types == {exactccd.QueryType.vertex_face, exactccd.QueryType.edge_edge}
+    assert all(isinstance(t, exactccd.QueryType) for t in types)
+    # Members are also their names in query files.
+    assert exactccd.QueryType.vertex_face == "vertex-face"
+    assert f"{exactccd.QueryType.edge_edge}" == "edge-edge"
+    p = result.contacts[0].pair
+    for kind in (p.type, str(p.type)):
+        assert exactccd.ScenePair(kind, p.first_mesh, p.first_index, p.second_mesh,
+                                  p.second_index) == p
+    # Without a contact: +infinity TOIs, as in C++ (once, None).
+    (start, _, faces), _ = two_meshes
+    apart = exactccd.Scene()
+    mesh = apart.add_mesh(start, faces)
+    apart.set_motion(mesh, start, start + [0.0, 0.0, 0.1])
+    apart.add_static_mesh(start + [0.0, 0.0, 10.0], faces)
+    none = apart.find_contacts(self_collision=False)
+    assert none.contacts == [] and none.earliest.toi_lo == none.earliest.toi_hi == np.inf
+    first = apart.earliest_contact(self_collision=False)
+    assert not first.collides and first.contact.toi_lo == first.contact.toi_hi == np.inf
+    # With contacts, the earliest as before.
+    assert result.earliest.toi_lo == min(c.toi_lo for c in result.contacts)
+
+
 def test_mesh_accessors_and_static_mesh(two_meshes):
     (start, end, faces), (other, _, other_faces) = two_meshes
     scene = exactccd.Scene()
