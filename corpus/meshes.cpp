@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "exactccd/query_file.hpp"
 
 namespace exactccd::scenes {
@@ -153,6 +155,32 @@ std::array<Box3, 4> square_hole_block_boxes(double center_x, double center_y, do
           Box3{{h1x, o0y, z_bottom}, {o1x, o1y, z_top}},   // x above the hole, all y
           Box3{{h0x, o0y, z_bottom}, {h1x, h0y, z_top}},   // between them, y below the hole
           Box3{{h0x, h1y, z_bottom}, {h1x, o1y, z_top}}};  // between them, y above the hole
+}
+
+Mesh open_tube(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, double radius, int sides,
+               int segments) {
+  if (sides < 3 || segments < 1 || p0 == p1)
+    throw std::invalid_argument("open_tube: needs sides >= 3, segments >= 1 and p0 != p1");
+  const Eigen::Vector3d axis = (p1 - p0).normalized();
+  // Any unit vector across the axis, then the third of a right-handed frame.
+  const Eigen::Vector3d e1 = axis.unitOrthogonal();
+  const Eigen::Vector3d e2 = axis.cross(e1);
+  std::vector<Eigen::Vector3d> v;
+  std::vector<Eigen::Vector3i> t;
+  for (int k = 0; k <= segments; ++k) {
+    const Eigen::Vector3d c = p0 + (p1 - p0) * (static_cast<double>(k) / segments);
+    for (int j = 0; j < sides; ++j) {
+      const double phi = 2 * kPi * j / sides;
+      v.push_back(c + radius * (std::cos(phi) * e1 + std::sin(phi) * e2));
+    }
+  }
+  const auto at = [&](int k, int j) { return k * sides + (j % sides); };
+  for (int k = 0; k < segments; ++k)
+    for (int j = 0; j < sides; ++j) {
+      t.emplace_back(at(k, j), at(k, j + 1), at(k + 1, j + 1));
+      t.emplace_back(at(k, j), at(k + 1, j + 1), at(k + 1, j));
+    }
+  return make_mesh(v, t);
 }
 
 Mesh block_with_square_hole(double center_x, double center_y, double outer, double hole,

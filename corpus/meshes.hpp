@@ -47,6 +47,12 @@ Mesh thin_slab(int n, double width, double thickness, const Eigen::Vector3d& cen
 /// the body's unique highest and lowest points (along z). Needs slices >= 3, stacks >= 2.
 Mesh uv_sphere(const Eigen::Vector3d& center, double radius, int slices, int stacks);
 
+/// An open tube (no caps) of the given radius around the segment from `p0` to `p1`: `segments`
+/// + 1 rings of `sides` vertices (ring k at p0 + k / segments (p1 - p0)), two triangles per
+/// quad. Needs sides >= 3, segments >= 1 and p0 != p1.
+Mesh open_tube(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, double radius, int sides,
+               int segments);
+
 /// A closed axis-aligned box.
 struct Box3 {
   Eigen::Vector3d lo, hi;

@@ -644,6 +644,38 @@ TEST_F(CliTest, BenchRigidTimesBothModesWithoutDisagreement) {
       << text.out;
 }
 
+TEST_F(CliTest, BenchBarrierStepsRunsTheTrialStepsThroughTheScene) {
+  // Two small steps as JSON lines: earliest_contact checked against find_contacts' earliest
+  // (exit status 0); the resting step's earliest contact is at t = 0.
+  const RunResult r = run({"bench", "--barrier-steps", "--barrier-scale", "0.02", "--barrier-step",
+                           "resting_slide", "--barrier-step", "twisted_rods", "--repetitions", "1",
+                           "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line;
+  std::vector<nlohmann::json> steps;
+  while (std::getline(lines, line)) steps.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(steps.size(), 2u) << r.out;
+  EXPECT_EQ(steps[0].value("step", ""), "resting_slide");
+  EXPECT_EQ(steps[1].value("step", ""), "twisted_rods");
+  EXPECT_EQ(steps[0].value("earliest", 1.0), 0.0);
+  for (const nlohmann::json& s : steps) {
+    EXPECT_GT(s.value("candidates", 0u), 0u);
+    EXPECT_GT(s.value("contacts", 0u), 0u);
+    EXPECT_EQ(s.at("earliest_contact_ms").size(), 2u);
+  }
+  // Options of other benchmarks, a second delta, an unknown step: bad command lines.
+  expect_bad_input(run({"bench", "--barrier-steps", "--rigid-count", "5"}),
+                   {"--rigid-count", "--barrier-steps"});
+  expect_bad_input(run({"bench", "--barrier-steps", "--min-separation", "0,0.1"}),
+                   {"one --min-separation"});
+  expect_bad_input(run({"bench", "--barrier-steps", "--min-separation", "-1"}),
+                   {"minimum separation"});
+  expect_bad_input(run({"bench", "--barrier-steps", "--barrier-step", "juggling"}),
+                   {"--barrier-step"});
+  expect_bad_input(run({"bench", "--barrier-scale", "0.1"}), {"--barrier-scale", "--barrier-steps"});
+}
+
 TEST_F(CliTest, BenchRigidGradesFloatOnlyAgainstTheCertifiedMode) {
   // float_only (uncertified) runs on rigid pairs too; it is graded against the first certified
   // mode and never counted as a disagreement (exit status 0). "default": the old name of

@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "bench_command.hpp"
+#include "corpus/barrier_steps.hpp"
+#include "oracle/barrier_report.hpp"
 #include "rigid_bench_command.hpp"
 #include "check_command.hpp"
 #include "exactccd/query_file.hpp"
@@ -260,6 +262,25 @@ int main(int argc, char** argv) {
           ->check(numeric_text(true))
           ->check(CLI::Range(std::size_t{1}, std::size_t{100000000}))
           ->capture_default_str();
+  exactccd::oracle::BarrierReportOptions barrier_options;
+  bool bench_barrier = false;
+  bench->add_flag("--barrier-steps", bench_barrier,
+                  "Run barrier-method trial steps through the scene instead (cloth on a ball, "
+                  "many bodies, resting and sliding contact, debris, twisted rods, rollers: "
+                  "--barrier-scale, --barrier-step, --repetitions, --min-separation, --json): "
+                  "candidates, cuts by time, contacts, the earliest contact, and the median time "
+                  "of earliest_contact and find_contacts on 1 and 2 threads; exit status 1 when "
+                  "earliest_contact differs from find_contacts' earliest");
+  CLI::Option* bench_barrier_scale =
+      bench->add_option("--barrier-scale", barrier_options.scale,
+                        "Mesh resolution of the barrier steps (1: 20k-650k triangles)")
+          ->check(numeric_text(false))
+          ->check(CLI::Range(0.01, 20.0))
+          ->capture_default_str();
+  CLI::Option* bench_barrier_step =
+      bench->add_option("--barrier-step", barrier_options.steps,
+                        "Only these barrier steps (repeatable; default: all)")
+          ->check(CLI::IsMember(exactccd::corpus::barrier_step_names()));
 
   // `exactccd study` runs the study program of the benchmarks (study): see forward_to_study.
   app.add_subcommand(
@@ -402,6 +423,28 @@ int main(int argc, char** argv) {
       }
       return run_rigid_bench(rigid_bench_options);
     }
+    if (bench->parsed() && bench_barrier) {
+      for (CLI::Option* option : {bench_resolution, bench_steps, bench_seed, bench_rigid_count,
+                                  bench_modes_option})
+        if (option->count() > 0)
+          throw UsageError(option->get_name() + " does not apply to --barrier-steps");
+      if (bench_options.simulation || !bench_options.paths.empty() || bench_rigid ||
+          bench_options.relative_separation)
+        throw UsageError("--barrier-steps runs its own scenes (no PATH, --simulation, --rigid "
+                         "or --relative-separation)");
+      if (bench_options.min_separations.size() != 1)
+        throw UsageError("--barrier-steps takes one --min-separation");
+      barrier_options.min_separation = bench_options.min_separations.front();
+      barrier_options.repetitions = bench_options.repetitions;
+      barrier_options.json = bench_options.json;
+      try {
+        return exactccd::oracle::run_barrier_report(barrier_options, stdout);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());  // a delta out of range
+      }
+    }
+    for (CLI::Option* option : {bench_barrier_scale, bench_barrier_step})
+      if (option->count() > 0) throw UsageError(option->get_name() + " needs --barrier-steps");
     if (bench_rigid_count->count() > 0) throw UsageError("--rigid-count needs --rigid");
     if (bench->parsed()) {
       for (CLI::Option* option : {bench_resolution, bench_steps, bench_seed})
