@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "corpus/barrier_steps.hpp"
 #include "exactccd/scene.hpp"
@@ -20,6 +21,14 @@ bool same_contacts(const SceneResult& a, const SceneResult& b) {
   };
   return a.contacts.size() == b.contacts.size() && same(a.earliest, b.earliest) &&
          std::equal(a.contacts.begin(), a.contacts.end(), b.contacts.begin(), same);
+}
+
+/// A time in JSON: 17 significant digits, or null for no contact (JSON has no infinity).
+std::string json_time(double t) {
+  if (!std::isfinite(t)) return "null";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", t);
+  return text;
 }
 
 double peak_mib() {
@@ -100,11 +109,12 @@ int run_barrier_report(const BarrierReportOptions& options, std::FILE* out) {
             out,
             "{\"step\": \"%s\", \"cull_by_time\": %s, \"min_separation\": %.17g, \"triangles\": "
             "%ld, \"candidates\": %llu, \"time_culled\": %llu, \"contacts\": %zu, "
-            "\"earliest\": %.17g, \"earliest_contact_ms\": [%.3f, %.3f], "
+            "\"earliest\": %s, \"earliest_contact_ms\": [%.3f, %.3f], "
             "\"find_contacts_ms\": [%.3f, %.3f], \"peak_mib\": %.1f}\n",
             name.c_str(), by_time ? "true" : "false", options.min_separation, triangles,
             candidates, static_cast<unsigned long long>(r.stats.time_culled), r.contacts.size(),
-            r.earliest.toi_lo, ms[0][0], ms[0][1], ms[1][0], ms[1][1], peak_mib());
+            json_time(r.earliest.toi_lo).c_str(), ms[0][0], ms[0][1], ms[1][0], ms[1][1],
+            peak_mib());
       } else {
         std::fprintf(out, "%-14s %-5s %8ld %10llu %10llu %9zu %12.6g %9.1f %9.1f %9.1f %9.1f\n",
                      name.c_str(), by_time ? "on" : "off", triangles, candidates,

@@ -659,6 +659,7 @@ TEST_F(CliTest, BenchBarrierStepsRunsTheTrialStepsThroughTheScene) {
   EXPECT_EQ(steps[0].value("step", ""), "resting_slide");
   EXPECT_EQ(steps[1].value("step", ""), "twisted_rods");
   EXPECT_EQ(steps[0].value("earliest", 1.0), 0.0);
+
   for (const nlohmann::json& s : steps) {
     EXPECT_GT(s.value("candidates", 0u), 0u);
     EXPECT_GT(s.value("contacts", 0u), 0u);
