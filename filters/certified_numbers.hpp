@@ -1,8 +1,7 @@
-// The number types the filters compute in (core/predicates: intervals with directed rounding,
-// double-double with error bounds), by their short names in the filters' namespace.
+// The number type the filters compute in (core/predicates: intervals with directed rounding),
+// by its short names in the filters' namespace.
 #pragma once
 
-#include "core/predicates/double_double_bounds.hpp"
 #include "core/predicates/interval.hpp"
 
 namespace exactccd::filters {
@@ -13,6 +12,5 @@ using predicates::certified_sign;
 using predicates::CertifiedSign;
 using predicates::Interval;
 using predicates::RoundingGuard;
-namespace dd = predicates::dd;
 
 }  // namespace exactccd::filters

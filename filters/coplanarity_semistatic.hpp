@@ -24,7 +24,7 @@ constexpr double kUnitRoundoff = 0x1p-53;
 /// |fl(D) - D| <= kSingle * Mx * My * Mz for one determinant of rounded differences evaluated by
 /// det3, with the product itself rounded to nearest (proofs/filters.md#lemma-det-error). The
 /// certified value evaluated from det3 itself is semistatic::compute_epsilon_single()
-/// (filters/semistatic_epsilon.hpp): 46u + O(u^2); the literal is that first-order term times
+/// (tests/semistatic_epsilon.hpp): 46u + O(u^2); the literal is that first-order term times
 /// (1 + 2^-40), and semistatic_epsilon_test checks that it covers the computed value, tightly.
 constexpr double kSingle = 46.0 * kUnitRoundoff * (1.0 + 0x1p-40);
 /// The same for a sum of three such determinants, bernstein_b1_times_3 and bernstein_b2_times_3
@@ -34,8 +34,8 @@ constexpr double kTriple = 168.0 * kUnitRoundoff * (1.0 + 0x1p-40);
 constexpr double kMin = 0x1p-200, kMax = 0x1p200;
 
 /// det[v, w, u] = v . (w x u) in a fixed order, over any 3-vector type with x(), y(), z():
-/// Eigen::Vector3d in the filter, error bounds in compute_epsilon (semistatic_epsilon.hpp), so
-/// the constants above are computed from this very code.
+/// Eigen::Vector3d in the filter, error bounds in compute_epsilon
+/// (tests/semistatic_epsilon.hpp), so the constants above are computed from this very code.
 template <class Vec3>
 EXACTCCD_CERTIFIED auto det3(const Vec3& v, const Vec3& w, const Vec3& u) {
   const auto mx = w.y() * u.z() - w.z() * u.y();

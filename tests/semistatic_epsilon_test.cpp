@@ -14,8 +14,8 @@
 
 #include "exactccd/types.hpp"
 #include "filters/coplanarity_semistatic.hpp"
-#include "filters/semistatic_epsilon.hpp"
-#include "filters/static_filter_error.hpp"
+#include "semistatic_epsilon.hpp"
+#include "static_filter_error.hpp"
 #include "test_support.hpp"
 
 namespace {

@@ -21,12 +21,14 @@
 #include "exact/polynomials/root_isolation.hpp"
 #include "exact/polynomials/small_polynomial.hpp"
 #include "integer_polynomial_support.hpp"
+#include "tarski_reference.hpp"
 #include "test_scale.hpp"
 
 namespace exactccd::exact {
 namespace {
 
 using Q = mpq_class;
+using test::tarski_sign_at_root;
 
 struct RationalPolynomial {
   std::vector<Q> c;  // c[i] of t^i

@@ -20,9 +20,6 @@ struct RigidPaths {
   /// denominator[side] is the constant 1 (a linear side): positions need no division.
   std::array<bool, 2> unit_denominator{};
 
-  const FixedPoly<NT, 2>& denominator_of(int point) const {
-    return denominator[point < first_side_count ? 0 : 1];
-  }
   /// The point on the common denominator: Y_i = X_i w_other, so x_i = Y_i / W.
   RigidPoint<NT> on_common_denominator(int point) const {
     return predicates::on_common_denominator(numerator[point],

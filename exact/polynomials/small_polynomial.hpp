@@ -194,15 +194,6 @@ int sign_at_dyadic(const MpzPolynomial& p, const mpz_class& T, unsigned k);
 int bernstein_signs_dyadic(const MpzPolynomial& p, const mpz_class& A, const mpz_class& B,
                            unsigned K, int (&signs)[4]);
 
-/// The sign of g at the only root r of p in the open interval (A 2^-K, B 2^-K), where p does not
-/// vanish at the ends: the Sturm-Tarski query Var(a) - Var(b) of the signed remainder sequence
-/// of p and (p' g mod p), whose cost does not depend on how close r is to a root of g. Kept as
-/// the tests' independent reference for sign_at_root_by_remainders (about 5x its cost on wide
-/// coefficients: its remainder sequence divides out contents with gcds).
-/// PROOF: proofs/exact_ccd.md#sign-at-a-bracketed-root
-int tarski_sign_at_root(const MpzPolynomial& p, const MpzPolynomial& g, const mpz_class& A,
-                        const mpz_class& B, unsigned K);
-
 /// The pseudo-remainder r of a by b (deg a >= deg b >= 0): lc(b)^n a = Q b + r with
 /// n = deg a - deg b + 1 and deg r < deg b; returns the sign of lc(b)^n, so that at every root x
 /// of b, a(x) has the sign of the returned value times r(x).

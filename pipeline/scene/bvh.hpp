@@ -198,10 +198,6 @@ class Bvh {
       overlap_nodes(other, a, other.right(b), f, keep);
     }
   }
-  template <class F>
-  void overlap_nodes(const Bvh& other, std::uint32_t a, std::uint32_t b, F& f) const {
-    overlap_nodes(other, a, b, f, [](std::uint32_t, std::uint32_t) { return true; });
-  }
 
   template <class F, class Keep>
   void self_nodes(std::uint32_t a, F& f, const Keep& keep) const {
@@ -264,10 +260,6 @@ class Bvh {
     }
   }
 
-  template <class F>
-  void run_tasks(const Bvh& other, const std::vector<Task>& tasks, F& f) const {
-    run_tasks(other, tasks, f, [](std::uint32_t, std::uint32_t) { return true; });
-  }
   template <class F, class Keep>
   void run_tasks(const Bvh& other, const std::vector<Task>& tasks, F& f, const Keep& keep) const {
     if (tasks.size() == 1) {  // a small tree: no task to spawn

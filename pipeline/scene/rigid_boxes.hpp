@@ -63,14 +63,6 @@ inline Pieces pieces_for(const RigidMotion& motion, double s_lo, double s_hi) {
   return p;
 }
 
-/// One piece [s_lo, s_hi].
-inline Pieces single_piece(double s_lo, double s_hi) {
-  Pieces p;
-  p.ends[0] = s_lo;
-  p.ends[1] = s_hi;
-  return p;
-}
-
 /// Per piece of one body: enclosures of s, f1(s) and f2(s) over the piece.
 struct ArcPieces {
   struct Piece {

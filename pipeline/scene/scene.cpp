@@ -989,9 +989,6 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
       local.below = zero_pair;
     }
     if (local.seen_version > 0 && !(p < local.below)) return;  // cannot beat a contact at 0
-    // Upward rounding for the window culls (time_window.hpp); each pair's test sets and restores
-    // its own mode.
-    const predicates::RoundingGuard upward;
     CcdOptions options = o.ccd;
     // A subnormal bound (a contact at exactly t = 0 was found) is decided over [0, t_max]
     // instead: the same first contact when it lies below the bound, and the filters, whose
@@ -999,8 +996,16 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
     // the exact path.
     options.t_max = window < std::numeric_limits<double>::min() ? t_max : window;
     // One query per pair: culled over the window when the bound has shrunk, else decided.
+    // The window culls hold upward rounding (time_window.hpp), set only when the bound has
+    // shrunk (an MXCSR write per pair costs as much as a filtered test).
+    const auto culled_over_window = [&](const auto& cull) {
+      if (!(window < t_max)) return false;
+      const predicates::RoundingGuard upward;
+      return cull();
+    };
     const auto decide_linear = [&](const auto& query) -> std::optional<CcdResult> {
-      if (window < t_max && scene::disjoint_over_window(query, window, o.min_separation))
+      if (culled_over_window(
+              [&] { return scene::disjoint_over_window(query, window, o.min_separation); }))
         return std::nullopt;
       ++local.tests;
       return decide_query(query, options);
@@ -1008,7 +1013,8 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
     std::optional<CcdResult> decided;
     if (involves_rigid(p)) {
       // The same over the arcs: certified boxes over [0, window], then the rigid test.
-      if (!(window < t_max && rigid_disjoint_over_window(p, window, o.min_separation))) {
+      if (!culled_over_window(
+              [&] { return rigid_disjoint_over_window(p, window, o.min_separation); })) {
         ++local.tests;
         decided = p.type == QueryType::vertex_face
                       ? vertex_face_ccd(rigid_vertex_face(p), options).ccd

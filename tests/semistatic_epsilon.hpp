@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "filters/coplanarity_semistatic.hpp"
-#include "filters/static_filter_error.hpp"
+#include "static_filter_error.hpp"
 
 namespace exactccd::filters::semistatic {
 
