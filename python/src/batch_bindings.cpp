@@ -46,10 +46,11 @@ class FirstFailure {
   std::exception_ptr error_;
 };
 
+// Built in place from the array's rows (inlined: no intermediate list of points per query).
 template <class Query>
-Query query_of(const double* data) {
-  const QueryPoints p = points_of(data);
-  return {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]};
+Query query_of(const double* d) {
+  const auto row = [d](int r) { return Eigen::Vector3d(d[3 * r], d[3 * r + 1], d[3 * r + 2]); };
+  return {row(0), row(1), row(2), row(3), row(4), row(5), row(6), row(7)};
 }
 
 CcdResult decide(QueryType type, const double* data, const CcdOptions& options) {
