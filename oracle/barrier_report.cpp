@@ -1,6 +1,9 @@
 #include "oracle/barrier_report.hpp"
 
 #include <sys/resource.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -37,6 +40,32 @@ double peak_mib() {
   return static_cast<double>(u.ru_maxrss) / 1024.0;  // kilobytes on Linux
 }
 
+/// Starts a new peak of the resident set (Linux: "5" to /proc/self/clear_refs resets VmHWM);
+/// false where that is not possible.
+bool reset_peak() {
+#if defined(__GLIBC__)
+  malloc_trim(0);  // hand the previous steps' freed memory back, so that it is not counted
+#endif
+  std::FILE* f = std::fopen("/proc/self/clear_refs", "w");
+  if (!f) return false;
+  const bool ok = std::fputs("5", f) >= 0;
+  return std::fclose(f) == 0 && ok;
+}
+
+/// The peak resident set since the last reset_peak (VmHWM), in MiB; the process's peak where
+/// /proc is not readable.
+double peak_since_reset_mib() {
+  if (std::FILE* f = std::fopen("/proc/self/status", "r")) {
+    char line[256];
+    long kib = -1;
+    while (std::fgets(line, sizeof line, f))
+      if (std::sscanf(line, "VmHWM: %ld kB", &kib) == 1) break;
+    std::fclose(f);
+    if (kib >= 0) return static_cast<double>(kib) / 1024.0;
+  }
+  return peak_mib();
+}
+
 template <class F>
 double median_ms(int repetitions, F&& f) {
   std::vector<double> t;
@@ -63,14 +92,15 @@ int run_barrier_report(const BarrierReportOptions& options, std::FILE* out) {
     throw std::invalid_argument("the minimum separation must be finite and >= 0");
   if (options.repetitions < 1) throw std::invalid_argument("repetitions must be >= 1");
   if (!options.json)
-    std::fprintf(out, "%-14s %-5s %8s %10s %10s %9s %12s %9s %9s %9s %9s\n", "step", "time",
+    std::fprintf(out, "%-14s %-5s %8s %10s %10s %9s %12s %9s %9s %9s %9s %8s\n", "step", "time",
                  "tris", "candidates", "time_cuts", "contacts", "earliest", "ec_1t_ms",
-                 "ec_2t_ms", "fc_1t_ms", "fc_2t_ms");
+                 "ec_2t_ms", "fc_1t_ms", "fc_2t_ms", "peak_mib");
   int status = 0;
   for (const std::string& name : names) {
     if (!options.steps.empty() &&
         std::find(options.steps.begin(), options.steps.end(), name) == options.steps.end())
       continue;
+    const bool per_step = reset_peak();
     const std::vector<corpus::StepBody> bodies = corpus::barrier_step(name, options.scale);
     long triangles = 0;
     for (const corpus::StepBody& b : bodies) triangles += static_cast<long>(b.mesh.triangles.rows());
@@ -104,6 +134,9 @@ int run_barrier_report(const BarrierReportOptions& options, std::FILE* out) {
       }
       const unsigned long long candidates =
           r.stats.vertex_face_candidates + r.stats.edge_edge_candidates;
+      // The step's peak resident memory (its scene, both settings so far) where Linux can reset
+      // the peak, else the process's.
+      const double peak = per_step ? peak_since_reset_mib() : peak_mib();
       if (options.json) {
         std::fprintf(
             out,
@@ -114,12 +147,13 @@ int run_barrier_report(const BarrierReportOptions& options, std::FILE* out) {
             name.c_str(), by_time ? "true" : "false", options.min_separation, triangles,
             candidates, static_cast<unsigned long long>(r.stats.time_culled), r.contacts.size(),
             json_time(r.earliest.toi_lo).c_str(), ms[0][0], ms[0][1], ms[1][0], ms[1][1],
-            peak_mib());
+            peak);
       } else {
-        std::fprintf(out, "%-14s %-5s %8ld %10llu %10llu %9zu %12.6g %9.1f %9.1f %9.1f %9.1f\n",
+        std::fprintf(out,
+                     "%-14s %-5s %8ld %10llu %10llu %9zu %12.6g %9.1f %9.1f %9.1f %9.1f %8.1f\n",
                      name.c_str(), by_time ? "on" : "off", triangles, candidates,
                      static_cast<unsigned long long>(r.stats.time_culled), r.contacts.size(),
-                     r.earliest.toi_lo, ms[0][0], ms[0][1], ms[1][0], ms[1][1]);
+                     r.earliest.toi_lo, ms[0][0], ms[0][1], ms[1][0], ms[1][1], peak);
       }
       std::fflush(out);
     }

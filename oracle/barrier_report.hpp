@@ -1,7 +1,7 @@
 // The barrier-step report (`exactccd bench --barrier-steps`, bench/exactccd_barrier_steps): each
 // trial step of corpus/barrier_steps.hpp through exactccd::Scene, with per step its triangles,
 // candidates, cuts by time, colliding pairs, earliest contact, the median time of
-// earliest_contact and find_contacts on 1 and 2 threads, and the process's peak memory. Checked
+// earliest_contact and find_contacts on 1 and 2 threads, and its peak memory. Checked
 // on the way: earliest_contact equals find_contacts().earliest, and with `compare_off` the cull
 // by time changes no answer.
 #pragma once
