@@ -16,19 +16,11 @@ namespace detail {
 
 constexpr int kMaxSubdivisionDepth = 10;
 
-/// hi - lo <= width, with the difference rounded up (through the interval type, whose
-/// operations the compiler cannot move across the rounding-mode switch).
-EXACTCCD_CERTIFIED bool certainly_within_width(double lo, double hi, double width) {
-  return (Interval(hi) - Interval(lo)).sup() <= width;
-}
-
 using predicates::double_of;
 using predicates::order_bits;
 
 /// Where a double lies relative to the only root r of a bracket, by the certified sign of the
 /// cubic's enclosure there (the sign at the bracket's upper end is `sign_hi`).
-enum class Side : std::uint8_t { below, at, above, unknown };
-
 EXACTCCD_CERTIFIED Side side_of_root(const Interval& value, int sign_hi) {
   const CertifiedSign s = certified_sign(value);
   if (s == CertifiedSign::uncertain) return Side::unknown;

@@ -16,6 +16,15 @@
 
 namespace exactccd::filters {
 
+/// Where a double lies relative to the only root of a bracket, by a certified sign there.
+enum class Side : std::uint8_t { below, at, above, unknown };
+
+/// hi - lo <= width, with the difference rounded up (through the interval type, whose
+/// operations the compiler cannot move across the rounding-mode switch).
+EXACTCCD_CERTIFIED bool certainly_within_width(double lo, double hi, double width) {
+  return (Interval(hi) - Interval(lo)).sup() <= width;
+}
+
 /// What a policy made of a root at a double (an end of [0, t_max]) or of an isolated root.
 enum class RootDecision : std::uint8_t { contact, no_contact, undecided };
 

@@ -184,18 +184,11 @@ struct Guide {
   }
 };
 
-/// hi - lo <= width, the difference rounded up through the interval type.
-bool certainly_within_width(double lo, double hi, double width) {
-  return (Interval(hi) - Interval(lo)).sup() <= width;
-}
-
 using predicates::double_of;
 using predicates::order_bits;
 
 /// No double lies strictly inside the bracket: it is the tightest pair (or the exact root).
 bool tightest(const Bracket& b) { return order_bits(b.hi) - order_bits(b.lo) < 2; }
-
-enum class Side : std::uint8_t { below, at, above, unknown };
 
 class RootSearch {
  public:
