@@ -159,7 +159,7 @@ struct SceneContact {
 /// Work counts of one call (for statistics and benchmarks).
 struct SceneStats {
   /// Pairs whose boxes overlap (the narrow phase's input; boxes raised by min_separation), per
-  /// type.
+  /// type; for earliest_contact, those its traversal reached before its bound cut the rest.
   std::uint64_t vertex_face_candidates = 0;
   /// Edge-edge pairs whose boxes overlap.
   std::uint64_t edge_edge_candidates = 0;
@@ -178,7 +178,8 @@ struct SceneStats {
   /// Cuts by time (BroadPhase::swept_bvh, pairs of linearly moving or static meshes;
   /// proofs/scene.md, section 5a): pairs of nodes, and pairs of primitives, whose boxes over the
   /// step overlap but whose boxes blended between t = 0 and t = 1 cannot overlap at any time in
-  /// [0, t_max] (each cut once). Their pairs are not candidates, never tested.
+  /// [0, t_max] (for earliest_contact: in [0, T] for its bound T as it falls; each cut once).
+  /// Their pairs are not candidates, never tested.
   std::uint64_t time_culled = 0;
 };
 
