@@ -432,11 +432,11 @@ struct Decision {
 
 }  // namespace
 
-/// Per-thread values, looked up in the traversals' inner loops: native thread-local keys, much
-/// cheaper per lookup than the default's hash table.
+/// Per-thread values. TBB's default lookup (a hash table), not ets_key_per_instance: that one
+/// takes a native thread-local key per instance and ignores a failure to get one, so very many
+/// concurrent calls could exhaust the process's keys.
 template <class T>
-using PerThread = tbb::enumerable_thread_specific<T, tbb::cache_aligned_allocator<T>,
-                                                  tbb::ets_key_per_instance>;
+using PerThread = tbb::enumerable_thread_specific<T>;
 
 /// Candidate pairs and, for each, the start of its time span (the earliest time its blended
 /// boxes can overlap, time_span.hpp; 0 without the cull by time).
