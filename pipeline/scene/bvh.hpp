@@ -113,6 +113,9 @@ class Bvh {
   template <class F, class Keep>
   void parallel_for_each_overlap(const Bvh& other, F&& f, const Keep& keep) const {
     if (empty() || other.empty()) return;
+    // The caller may be a worker running with the host's FP state: the splitting compares boxes
+    // and calls keep, whose time spans subtract (proofs/filters.md#fp-environment).
+    const predicates::RoundToNearestGuard fp;
     std::vector<Task> tasks{{0, 0, false}};
     split_tasks(other, tasks, keep);
     run_tasks(other, tasks, f, keep);
@@ -148,6 +151,7 @@ class Bvh {
   template <class F, class Keep>
   void parallel_for_each_self_overlap(F&& f, const Keep& keep) const {
     if (empty()) return;
+    const predicates::RoundToNearestGuard fp;  // as in parallel_for_each_overlap
     std::vector<Task> tasks{{0, 0, true}};
     split_tasks(*this, tasks, keep);
     run_tasks(*this, tasks, f, keep);
@@ -262,8 +266,7 @@ class Bvh {
 
   template <class F, class Keep>
   void run_tasks(const Bvh& other, const std::vector<Task>& tasks, F& f, const Keep& keep) const {
-    if (tasks.size() == 1) {  // a small tree: no task to spawn
-      const predicates::RoundToNearestGuard fp;
+    if (tasks.size() == 1) {  // a small tree: no task to spawn (the caller holds the FP state)
       const Task& t = tasks.front();
       return t.self ? self_nodes(t.a, f, keep) : overlap_nodes(other, t.a, t.b, f, keep);
     }

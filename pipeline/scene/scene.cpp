@@ -1063,6 +1063,8 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
   order_by_span_start(rest);
   const auto batch = tbb::blocked_range<std::size_t>(0, rest.pairs.size(), 64);
   tbb::parallel_for(batch, [&](const tbb::blocked_range<std::size_t>& range) {
+    // A worker may run with the host's FP state (proofs/filters.md#fp-environment).
+    const predicates::RoundToNearestGuard fp;
     Local& local = locals.local();
     for (std::size_t k = range.begin(); k != range.end(); ++k)
       if (rest.starts[k] <= bound.load(std::memory_order_relaxed)) decide_one(rest.pairs[k], local);

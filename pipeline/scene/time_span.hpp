@@ -59,9 +59,10 @@ inline void keep_nonpositive(double g0, double g1, TimeSpan& s) {
     return;
   }
   // An infinite difference (overflow) bounds nothing: g0 = -1e308 with g1 = +inf (truly 2e308)
-  // would give r = 0 for a root at 1/3. Finite ones give the root within 2^-50 relative.
+  // would give r = 0 for a root at 1/3. Finite ones give the root within 2^-50 relative. Here
+  // g0 and g1 have opposite signs (or one is 0), so d is infinite whenever one of them is.
   const double d = g0 - g1;
-  if (!(std::isfinite(g0) && std::isfinite(g1) && std::isfinite(d))) return;
+  if (!std::isfinite(d)) return;
   const double r = g0 / d;  // the root of the line, one sign change in [0, 1]
   if (!(r >= 0.0 && r <= 1.0)) return;
   if (g0 > 0)
