@@ -675,6 +675,7 @@ TEST_F(CliTest, BenchBarrierStepsRunsTheTrialStepsThroughTheScene) {
   expect_bad_input(run({"bench", "--barrier-steps", "--barrier-step", "juggling"}),
                    {"--barrier-step"});
   expect_bad_input(run({"bench", "--barrier-scale", "0.1"}), {"--barrier-scale", "--barrier-steps"});
+  expect_bad_input(run({"bench", "--barrier-steps", "--rigid"}), {"--rigid", "--barrier-steps"});
 }
 
 TEST_F(CliTest, BenchRigidGradesFloatOnlyAgainstTheCertifiedMode) {

@@ -406,6 +406,7 @@ int main(int argc, char** argv) {
       simulate_options.exact_truth = simulate_truth == "exact";
       return run_simulate(simulate_options);
     }
+    if (bench_rigid && bench_barrier) throw UsageError("--rigid and --barrier-steps: choose one");
     if (bench->parsed() && bench_rigid) {
       for (CLI::Option* option : {bench_resolution, bench_steps})
         if (option->count() > 0) throw UsageError(option->get_name() + " needs --simulation");
