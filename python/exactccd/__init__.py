@@ -67,8 +67,8 @@ for _type in (CcdResult, EarliestContact, InputError, RigidCcdResult, RigidMotio
 
 __all__ = [
     "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES",
-    "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene", "SceneContact",
-    "ScenePair", "SceneResult", "SceneStats", "edge_edge_ccd", "edge_edge_ccd_batch", "exact_ccd",
+    "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene",
+    "SceneContact", "ScenePair", "SceneResult", "SceneStats", "edge_edge_ccd", "edge_edge_ccd_batch", "exact_ccd",
     "find_query_files", "query_type_from_path", "read_query_file", "read_query_file_exact",
     "rigid_edge_edge_ccd", "rigid_vertex_face_ccd", "vertex_face_ccd", "vertex_face_ccd_batch",
     "write_query_file",

@@ -46,11 +46,11 @@ class FirstFailure {
   std::exception_ptr error_;
 };
 
-// Built in place from the array's rows (inlined: no intermediate list of points per query).
+// Built in place from the rows (a list of points first would cost a copy per query).
 template <class Query>
 Query query_of(const double* d) {
-  const auto row = [d](int r) { return Eigen::Vector3d(d[3 * r], d[3 * r + 1], d[3 * r + 2]); };
-  return {row(0), row(1), row(2), row(3), row(4), row(5), row(6), row(7)};
+  return {row_of(d, 0), row_of(d, 1), row_of(d, 2), row_of(d, 3),
+          row_of(d, 4), row_of(d, 5), row_of(d, 6), row_of(d, 7)};
 }
 
 CcdResult decide(QueryType type, const double* data, const CcdOptions& options) {

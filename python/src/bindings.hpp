@@ -41,8 +41,17 @@ DoubleArray as_double_array(const py::handle& object, const std::vector<py::ssiz
 /// A 3-vector from any array-like of 3 numbers, or ValueError naming `what`.
 Eigen::Vector3d vector_of(const py::handle& object, const char* what);
 
+/// Point `row` of an (8, 3) array.
+inline Eigen::Vector3d row_of(const double* data, int row) {
+  return {data[3 * row], data[3 * row + 1], data[3 * row + 2]};
+}
+
 /// The 8 points of an (8, 3) array.
-QueryPoints points_of(const double* data);
+inline QueryPoints points_of(const double* data) {
+  QueryPoints points;
+  for (int row = 0; row < 8; ++row) points[static_cast<std::size_t>(row)] = row_of(data, row);
+  return points;
+}
 
 /// The stage names in code order (to_string(Stage) for codes 0, 1, ... until "unknown").
 const std::vector<std::string>& stage_names();

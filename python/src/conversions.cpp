@@ -72,13 +72,6 @@ Eigen::Vector3d vector_of(const py::handle& object, const char* what) {
   return {array.data()[0], array.data()[1], array.data()[2]};
 }
 
-QueryPoints points_of(const double* data) {
-  QueryPoints points;
-  for (std::size_t row = 0; row < 8; ++row)
-    points[row] = Eigen::Vector3d(data[3 * row], data[3 * row + 1], data[3 * row + 2]);
-  return points;
-}
-
 const std::vector<std::string>& stage_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> found;
