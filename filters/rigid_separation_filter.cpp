@@ -137,7 +137,7 @@ class Search {
   /// which narrows quadratically with T.
   class PieceValues {
    public:
-    /// narrow: worth the Taylor form (a piece of at most 1/8 of [0, t_max], not an instant).
+    /// narrow: worth the Taylor form (a piece of at most 1/128 of [0, t_max], not an instant).
     PieceValues(const Search& search, const Interval& T, const Boxes& x, bool narrow)
         : search_(search), T_(T), x_(x), narrow_(narrow) {}
     const Interval& operator[](int k) {
@@ -340,7 +340,7 @@ class Search {
   static constexpr int kMaxAdvances = 32;
   static constexpr double kSlowAdvance = 0x1p-8;  // of t_max: then the pieces take over
   static constexpr double kFirstWindow = 0x1p-6;  // of t_max: the least first window
-  static constexpr double kNarrow = 0x1p-3;       // of t_max: pieces worth the Taylor form
+  static constexpr double kNarrow = 0x1p-7;       // of t_max: pieces worth the Taylor form
 
   /// A lower bound of the distance between the primitives at an instant whose positions' boxes
   /// are x: the larger of the gap between the two sides' boxes and the distance to the

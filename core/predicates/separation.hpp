@@ -103,7 +103,8 @@ struct VertexFaceSeparation {
   template <class F>
   void for_each_polynomial(F&& f, int only = -1) const {
     auto wanted = [only](int k) { return only < 0 || only == k; };
-    const auto n = cross(b - a, c - a);
+    decltype(cross(b - a, c - a)) n{};  // the face's normal: only where it is used
+    if (only < 0 || only <= 3 || only == 16) n = cross(b - a, c - a);
     if (wanted(0)) {
       const auto d = dot(n, p - a);
       f(d * d - scaled(delta2, dot(n, n)));
