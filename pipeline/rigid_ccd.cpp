@@ -190,13 +190,16 @@ RigidMotion RigidMotion::turn(const Eigen::Vector3d& pivot, const Eigen::Vector3
     throw std::invalid_argument("exactccd: RigidMotion::turn needs finite inputs");
   if (!(std::abs(angle) < M_PI))
     throw std::invalid_argument("exactccd: RigidMotion::turn needs |angle| < pi");
-  const double length = axis.norm();
-  if (!(length > 0.0) || !std::isfinite(length))
-    throw std::invalid_argument("exactccd: RigidMotion::turn needs a non-zero finite axis");
+  // Scaled by its largest |component| first: the norm of [1e308, 1e308, 1e308] overflows and
+  // that of [0, 0, 1e-320] underflows, although both are good directions.
+  const double largest = axis.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0))
+    throw std::invalid_argument("exactccd: RigidMotion::turn needs a non-zero axis");
+  const Eigen::Vector3d direction = axis / largest;
   RigidMotion m;
   m.pivot = pivot;
   m.translation = translation;
-  m.cayley = axis * (std::tan(angle / 2) / length);
+  m.cayley = direction * (std::tan(angle / 2) / direction.norm());
   return m;
 }
 

@@ -424,6 +424,25 @@ TEST_F(CliRigid, GoodSceneRuns) {
   EXPECT_EQ(parse_json(r)["bodies"][1]["name"], "body 1");  // the default name
 }
 
+// Axes whose norm overflows or underflows in doubles are good directions all the same: the same
+// turn as the unit axis, and the library's message is printed with one "exactccd: ".
+TEST_F(CliRigid, HugeAndTinyAxesTurnAsTheUnitAxis) {
+  json unit = good_scene();
+  const RunResult reference = run_scene(unit, true);
+  ASSERT_EQ(reference.status, 0) << reference.err;
+  for (const json& axis : {json{0, 0, 1e308}, json{0, 0, 1e-320}, json{0, 0, 4.9e-324}}) {
+    SCOPED_TRACE(axis.dump());
+    json s = good_scene();
+    s["bodies"][0]["motion"]["axis"] = axis;
+    const RunResult r = run_scene(s, true);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(parse_json(r)["steps"], parse_json(reference)["steps"]);
+  }
+  json s = good_scene();
+  s["bodies"][0]["motion"]["axis"] = {1e308, 1e308, 1e308};
+  EXPECT_EQ(run_scene(s).status, 0);
+}
+
 TEST_F(CliRigid, MalformedScenesAreRejectedWithTheKey) {
   json s;
   s = good_scene(); s.erase("bodies");
@@ -502,6 +521,11 @@ TEST_F(CliRigid, BadMinSeparationIsRejected) {
   }
   expect_bad_input(run_bounded({"rigid", "--min-separation", "-1", scene}),
                    {"--min-separation", ">= 0", "-1"});
+  // Beyond the doubles either way: named, not rounded to 0 or infinity.
+  expect_bad_input(run_bounded({"rigid", "--min-separation", "1e-400", scene}),
+                   {"--min-separation", "'1e-400'", "round to 0"});
+  expect_bad_input(run_bounded({"rigid", "--min-separation", "1e400", scene}),
+                   {"--min-separation", "'1e400'", "beyond the largest double"});
   json s = good_scene();
   s["min_separation"] = -0.5;
   expect_rejected(s, {"min_separation", ">= 0"});
@@ -526,6 +550,15 @@ TEST_F(CliRigid, MalformedFilesAreRejected) {
   huge.replace(huge.find("[0,0,0]"), 7, "[1e999,0,0]");
   rejects("huge.json", huge, {"1e999"});
   rejects("deep.json", std::string(100000, '[') + std::string(100000, ']'), {"the scene"});
+  // nlohmann would keep the last of two keys, and stop reading at a NUL byte.
+  std::string twice = good_scene().dump();
+  twice.insert(1, "\"t_max\":1,\"t_max\":0.5,");
+  rejects("twice.json", twice, {"'t_max'", "appears twice"});
+  std::string inner = good_scene().dump();
+  inner.replace(inner.find("\"kind\":\"static\""), 15, "\"kind\":\"static\",\"kind\":\"rigid\"");
+  rejects("twice_inner.json", inner, {"'kind'", "appears twice"});
+  rejects("nul.json", good_scene().dump() + std::string(1, '\0') + "{\"more\": 1}",
+          {"NUL byte"});
   rejects("array.json", "[1, 2]", {"the scene", "an object"});
   // Files that are not regular files, or missing.
   expect_bad_input(run_bounded({"rigid", (dir_ / "missing.json").string()}),

@@ -496,6 +496,15 @@ TEST(RigidCcd, BadInputThrowsClearly) {
   EXPECT_THROW(vertex_face_ccd(q, bad_t), std::invalid_argument);
   EXPECT_THROW(RigidMotion::turn(Vector3d::Zero(), Vector3d::Zero(), 1.0), std::invalid_argument);
   EXPECT_THROW(RigidMotion::turn(Vector3d::Zero(), Vector3d::UnitZ(), 3.5), std::invalid_argument);
+  // An axis whose norm overflows ([1e308, 1e308, 1e308]) or underflows ([0, 0, 1e-320]) in
+  // doubles is a good direction: the turn about it is the turn about its unit vector.
+  const Vector3d diagonal = Vector3d::Ones().normalized();
+  EXPECT_EQ(RigidMotion::turn(Vector3d::Zero(), Vector3d::Constant(1e308), 1.0).cayley,
+            RigidMotion::turn(Vector3d::Zero(), diagonal, 1.0).cayley);
+  EXPECT_EQ(RigidMotion::turn(Vector3d::Zero(), Vector3d(0, 0, 1e-320), 1.0).cayley,
+            RigidMotion::turn(Vector3d::Zero(), Vector3d::UnitZ(), 1.0).cayley);
+  EXPECT_EQ(RigidMotion::turn(Vector3d::Zero(), Vector3d(0, -4.9e-324, 0), 1.0).cayley,
+            RigidMotion::turn(Vector3d::Zero(), -Vector3d::UnitY(), 1.0).cayley);
   // Huge coordinates and a huge Cayley vector (a turn close to 180 degrees) are valid input.
   q = bisector_wall(1.0, 0.1);
   q.vertex.rigid.cayley = Vector3d(0, 0, 1e300);

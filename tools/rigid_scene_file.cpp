@@ -13,9 +13,12 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
+#include <vector>
 
 #include "exactccd/query_file.hpp"
 #include "obj_reader.hpp"
@@ -182,7 +185,11 @@ class Reader {
     try {
       return RigidMotion::turn(pivot, axis, degrees * (M_PI / 180.0), translation);
     } catch (const std::invalid_argument& e) {
-      fail(where, e.what());  // a rounding corner case (|angle| rounded to pi, a huge axis)
+      // A rounding corner case (|angle| rounded to pi); the message without its "exactccd: ",
+      // which the command prints once in front of the file name.
+      std::string what = e.what();
+      if (what.rfind("exactccd: ", 0) == 0) what.erase(0, 10);
+      fail(where, what);
     }
   }
 
@@ -295,11 +302,53 @@ class Reader {
 
 }  // namespace
 
+namespace {
+
+/// JSON's text ends at its last byte: nlohmann's lexer takes a NUL byte for the end of the input
+/// and would ignore whatever follows it.
+void refuse_nul_bytes(const std::string& text, const std::string& path) {
+  const std::size_t at = text.find('\0');
+  if (at == std::string::npos) return;
+  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n');
+  throw InputError(path, static_cast<std::size_t>(line),
+                   "a NUL byte at offset " + std::to_string(at) + " (JSON text has none)");
+}
+
+/// nlohmann keeps the last of repeated keys silently; a scene file whose "t_max" appears twice
+/// is a mistake to report, not a choice to make. The callback sees every key as it is parsed.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(std::string path) : path_(std::move(path)) {}
+  bool operator()(int, Json::parse_event_t event, Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start: keys_.emplace_back(); break;
+      case Json::parse_event_t::object_end: keys_.pop_back(); break;
+      case Json::parse_event_t::key: {
+        const std::string& key = parsed.get_ref<const std::string&>();
+        if (!keys_.back().insert(key).second)
+          throw InputError(path_, 0,
+                           "the key " + quote_for_message(key) +
+                               " appears twice in one object (each key at most once)");
+        break;
+      }
+      default: break;
+    }
+    return true;
+  }
+
+ private:
+  std::string path_;
+  std::vector<std::set<std::string>> keys_;
+};
+
+}  // namespace
+
 RigidSceneFile read_rigid_scene_file(const std::string& path) {
   const std::string text = read_regular_file(path);
+  refuse_nul_bytes(text, path);
   Json json;
   try {
-    json = Json::parse(text);
+    json = Json::parse(text, DuplicateKeyCheck(path));
   } catch (const Json::exception& e) {  // parse_error, and out_of_range for 1e999
     // "[json.exception.parse_error.101] parse error at line 3, column 5: ..." without the tag.
     std::string what = e.what();
