@@ -59,7 +59,8 @@ Answer parse_answer(std::string_view text, double t_max, const std::string& path
   if (!answer.collides) {
     if (is_positive_infinity(trim(text.substr(comma + 1)))) return answer;  // `0,inf`
     throw InputError(path, line,
-                     "a finite toi on a '0' (no collision) line: " + quote_for_message(text));
+                     "a '0' (no collision) line takes no toi, or 'inf', found " +
+                         quote_for_message(text));
   }
   answer.toi = parse_toi(trim(text.substr(comma + 1)), t_max, path, line);
   return answer;
@@ -117,7 +118,15 @@ std::vector<Answer> read_answers_file(const std::string& path, std::size_t query
   LineReader in(path, "an answers file");
   std::vector<Answer> answers;
   std::string line;
+  std::size_t blank = 0;  // the first of the blank lines just read (0: none)
   while (in.next(line)) {
+    // Blank lines at the end of the file are no answers; one before an answer is an error.
+    if (trim(line).empty()) {
+      if (blank == 0) blank = in.line_number();
+      continue;
+    }
+    if (blank != 0)
+      throw InputError(path, blank, "a blank line among the answers (one answer per line)");
     if (answers.size() == query_count)
       throw InputError(path, in.line_number(),
                        "more answer lines than the " + std::to_string(query_count) +

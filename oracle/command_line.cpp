@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -83,9 +84,18 @@ CLI::Validator numeric_text(bool integer) {
                text.find_first_not_of("0123456789", digits) == std::string::npos;
         } else if (ok) {
           char* end = nullptr;
-          std::strtod(text.c_str(), &end);
+          errno = 0;
+          const double value = std::strtod(text.c_str(), &end);
           ok = !std::isspace(static_cast<unsigned char>(text[0])) &&
                end == text.c_str() + text.size();
+          // Out of the doubles' range: strtod would give 0 or infinity without a word.
+          if (ok && errno == ERANGE && value == 0)
+            return exactccd::quote_for_message(text) +
+                   " is too small for a double: it would round to 0 (the least positive double "
+                   "is about 4.9e-324)";
+          if (ok && errno == ERANGE && std::isinf(value))
+            return exactccd::quote_for_message(text) +
+                   " is beyond the largest double (about 1.8e308)";
         }
         return ok ? std::string()
                   : exactccd::quote_for_message(text) + " is not " +

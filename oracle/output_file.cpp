@@ -90,6 +90,8 @@ struct Destination {
 
 Destination examine(const std::string& path, Overwrite overwrite, const std::string& option) {
   if (path.empty()) throw UsageError(option + ": the file name is empty");
+  if (path.find('\0') != std::string::npos)  // the C library would write to a shorter path
+    throw UsageError(option + ": the file name contains a NUL byte");
   Destination d;
   d.path = path;
   struct stat status {};

@@ -1,6 +1,7 @@
 // The check of CcdOptions that the library's entry points make (ccd.cpp and the scene).
 #pragma once
 
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -9,16 +10,26 @@
 
 namespace exactccd {
 
+/// x as the shortest decimal that reads back as x (1e+308, -1e-300: not std::to_string's 309
+/// digits or "-0.000000").
+inline std::string shortest_decimal(double x) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
+  return std::string(text, end);
+}
+
 /// Throws std::invalid_argument unless t_max lies in (0, 1] and toi_width and min_separation
-/// are finite and >= 0.
+/// are finite and >= 0; the message names the value given.
 inline void check_ccd_options(const CcdOptions& o) {
   if (!(o.t_max > 0.0 && o.t_max <= 1.0))
     throw std::invalid_argument("exactccd: t_max must lie in (0, 1], got " +
-                                std::to_string(o.t_max));
+                                shortest_decimal(o.t_max));
   if (!(o.toi_width >= 0.0) || !std::isfinite(o.toi_width))
-    throw std::invalid_argument("exactccd: toi_width must be finite and >= 0");
+    throw std::invalid_argument("exactccd: toi_width must be finite and >= 0, got " +
+                                shortest_decimal(o.toi_width));
   if (!(o.min_separation >= 0.0) || !std::isfinite(o.min_separation))
-    throw std::invalid_argument("exactccd: min_separation must be finite and >= 0");
+    throw std::invalid_argument("exactccd: min_separation must be finite and >= 0, got " +
+                                shortest_decimal(o.min_separation));
 }
 
 }  // namespace exactccd

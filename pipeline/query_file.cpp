@@ -57,6 +57,9 @@ std::string system_message(int error) {
 }  // namespace
 
 void require_regular_file(const std::string& path, const std::string& what) {
+  // The C library would stop at the NUL and open another file (Python strings may hold one).
+  if (path.find('\0') != std::string::npos)
+    throw InputError(printable(path), 0, "a path must not contain a NUL byte");
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0) throw InputError(path, 0, system_message(errno));
   if (!S_ISREG(status.st_mode))

@@ -194,6 +194,26 @@ TEST_F(CliTest, GradeAcceptsInfinityToiOnNoCollisionLine) {
   }
 }
 
+// Blank lines after the last answer (an editor's final newline, twice) are no answers; a blank
+// line before an answer is an error at its own line.
+TEST_F(CliTest, GradeIgnoresBlankLinesOnlyAtTheEnd) {
+  for (const char* end : {"\n", "\n\n", "\n \n\t\n"}) {
+    SCOPED_TRACE(end);
+    const RunResult r = grade(std::string("1,0.5\n1,0.25\n0") + end);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(parse_json(r).value("queries", 0u), 3u);
+  }
+  const fs::path answers = dir_ / "answers.txt";
+  expect_bad_input(grade("1,0.5\n\n1,0.25\n0\n"), {answers.string() + ":2:", "blank line"});
+  // 3 answers and a blank line for 3 queries: complete, not "more answer lines".
+  EXPECT_EQ(grade("1,0.5\n1,0.25\n0\n\n").status, 0);
+}
+
+TEST_F(CliTest, GradeNamesWhatANoCollisionLineTakes) {
+  expect_bad_input(grade("1\n1\n0,nan\n"),
+                   {(dir_ / "answers.txt").string() + ":3:", "takes no toi, or 'inf'", "'0,nan'"});
+}
+
 TEST_F(CliTest, GradeRejectsTooFewAnswers) {
   expect_bad_input(grade("1\n1\n"), {(dir_ / "answers.txt").string(), "queries.csv"});
 }

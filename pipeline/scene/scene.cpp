@@ -178,7 +178,9 @@ void check_options(const SceneOptions& o) {
                                 std::to_string(kMaxThreads) + "], not " +
                                 std::to_string(o.max_threads));
   if (!(o.min_separation >= 0.0) || !std::isfinite(o.min_separation))
-    throw std::invalid_argument("exactccd: SceneOptions::min_separation must be finite and >= 0");
+    throw std::invalid_argument(
+        "exactccd: SceneOptions::min_separation must be finite and >= 0, got " +
+        shortest_decimal(o.min_separation));
   // One place for the scene's delta: SceneOptions::min_separation, which the broad phase
   // inflates the boxes by and the scene copies into every pair's options.
   if (o.ccd.min_separation != 0.0)
