@@ -65,6 +65,27 @@ for _type in (CcdResult, EarliestContact, InputError, RigidCcdResult, RigidMotio
               SceneStats):
     _type.__module__ = __name__
 
+# Arguments of the wrong type: one line naming the public function, not pybind11's listing.
+from . import _arguments
+
+for _type in (RigidMotion, Scene, ScenePair):
+    _arguments.wrap_class(_type)
+exact_ccd = _arguments.one_line_type_errors(exact_ccd, "exact_ccd")
+find_query_files = _arguments.one_line_type_errors(find_query_files, "find_query_files")
+query_type_from_path = _arguments.one_line_type_errors(query_type_from_path,
+                                                       "query_type_from_path")
+rigid_edge_edge_ccd = _arguments.one_line_type_errors(rigid_edge_edge_ccd, "rigid_edge_edge_ccd")
+rigid_vertex_face_ccd = _arguments.one_line_type_errors(rigid_vertex_face_ccd,
+                                                        "rigid_vertex_face_ccd")
+
+
+def _options(function, t_max, toi_width, mode, min_separation):
+    """The options, type-checked (their domains are checked by the library)."""
+    return (_arguments.real(function, "t_max", t_max),
+            _arguments.real(function, "toi_width", toi_width),
+            _arguments.text(function, "mode", mode),
+            _arguments.real(function, "min_separation", min_separation))
+
 __all__ = [
     "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES",
     "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene",
@@ -102,8 +123,9 @@ def vertex_face_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
     TOI the earliest such time (0: contact).
     Raises ValueError for non-finite coordinates or options outside their domain.
     """
-    return _exactccd._vertex_face_ccd(_points(points, _VERTEX_FACE_ROWS), t_max, toi_width, mode,
-                                      min_separation)
+    return _exactccd._vertex_face_ccd(
+        _points(points, _VERTEX_FACE_ROWS),
+        *_options("vertex_face_ccd", t_max, toi_width, mode, min_separation))
 
 
 def edge_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
@@ -113,8 +135,9 @@ def edge_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
     edge_edge_ccd(ea0_t0, ea1_t0, eb0_t0, eb1_t0, ea0_t1, ea1_t1, eb0_t1, eb1_t1) or
     edge_edge_ccd(points) with one (8, 3) array; options as vertex_face_ccd.
     """
-    return _exactccd._edge_edge_ccd(_points(points, _EDGE_EDGE_ROWS), t_max, toi_width, mode,
-                                    min_separation)
+    return _exactccd._edge_edge_ccd(
+        _points(points, _EDGE_EDGE_ROWS),
+        *_options("edge_edge_ccd", t_max, toi_width, mode, min_separation))
 
 
 class BatchResult(NamedTuple):
@@ -138,8 +161,8 @@ def vertex_face_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0
     the calling thread). Results equal one vertex_face_ccd call per query. Raises ValueError
     for a wrong shape, bad options, or a bad query (the message names the first one's index).
     """
-    return BatchResult(*_exactccd._ccd_batch("vertex-face", queries, t_max, toi_width, mode,
-                                             threads, min_separation))
+    return _batch("vertex_face_ccd_batch", "vertex-face", queries, t_max, toi_width, mode,
+                  threads, min_separation)
 
 
 def edge_edge_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
@@ -147,5 +170,13 @@ def edge_edge_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
                         min_separation: float = 0.0) -> BatchResult:
     """Decides N edge-edge queries: an (N, 8, 3) array, rows ea0, ea1, eb0, eb1 at t0 then at
     t1. As vertex_face_ccd_batch."""
-    return BatchResult(*_exactccd._ccd_batch("edge-edge", queries, t_max, toi_width, mode,
-                                             threads, min_separation))
+    return _batch("edge_edge_ccd_batch", "edge-edge", queries, t_max, toi_width, mode, threads,
+                  min_separation)
+
+
+def _batch(function, type, queries, t_max, toi_width, mode, threads, min_separation):
+    t_max, toi_width, mode, min_separation = _options(function, t_max, toi_width, mode,
+                                                      min_separation)
+    threads = _arguments.count_or_none(function, "threads", threads)
+    return BatchResult(*_exactccd._ccd_batch(type, queries, t_max, toi_width, mode, threads,
+                                             min_separation))

@@ -4,6 +4,7 @@ x_num,x_den,y_num,y_den,z_num,z_den,truth; coordinates exact rationals."""
 import errno
 import os
 import secrets
+import stat
 from typing import NamedTuple, Optional
 
 import numpy as np
@@ -20,6 +21,15 @@ class QueryData(NamedTuple):
     type: str
 
 
+def _checked_path(path) -> str:
+    """The path as a str; a NUL character is refused (the C library would cut the path there and
+    name another file)."""
+    path = os.fsdecode(os.fspath(path))
+    if "\0" in path:
+        raise ValueError(f"a path must not contain a NUL character: {path!r}")
+    return path
+
+
 def read_query_file(path, type: Optional[str] = None) -> QueryData:
     """Reads a benchmark CSV file into an (N, 8, 3) float64 array and its truth column.
 
@@ -27,13 +37,13 @@ def read_query_file(path, type: Optional[str] = None) -> QueryData:
     Raises exactccd.InputError (naming the file and line) for a malformed file, an unknown type,
     or a coordinate that is not exactly a double (read_query_file_exact reads those).
     """
-    return QueryData(*_exactccd._read_query_file(os.fspath(path), type))
+    return QueryData(*_exactccd._read_query_file(_checked_path(path), type))
 
 
 def read_query_file_exact(path, type: Optional[str] = None) -> QueryData:
     """Reads a benchmark CSV file with every coordinate as an exact fractions.Fraction:
     queries is a list of N lists of 8 (x, y, z) tuples, for exactccd.exact_ccd."""
-    return QueryData(*_exactccd._read_query_file_exact(os.fspath(path), type))
+    return QueryData(*_exactccd._read_query_file_exact(_checked_path(path), type))
 
 
 def _temporary_file(folder, name):
@@ -55,11 +65,22 @@ def write_query_file(path, queries, truth, *, overwrite: bool = False) -> None:
 
     The file appears whole or not at all: written to a temporary file in the same folder, then
     renamed into place. An existing file is never replaced unless overwrite=True
-    (FileExistsError). Raises ValueError for a wrong shape or a non-finite coordinate, before
-    anything is written.
+    (FileExistsError), nor a folder (IsADirectoryError) or another kind of file. Raises
+    ValueError for a wrong shape, a non-finite coordinate, a truth value other than 0 or 1, or a
+    NUL character in the path, before anything is written.
     """
     text = _exactccd._format_query_rows(queries, truth)
-    path = os.fspath(path)
+    path = _checked_path(path)
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        mode = None
+    if mode is not None and stat.S_ISDIR(mode):
+        raise IsADirectoryError(errno.EISDIR, "is a folder, not a file: write_query_file needs "
+                                "the path of the file to write", path)
+    if mode is not None and not stat.S_ISREG(mode):
+        raise FileExistsError(errno.EEXIST, "is not a regular file (a device, FIFO or socket): "
+                              "write_query_file never replaces one", path)
     folder, name = os.path.split(os.path.abspath(path))
     if not overwrite and os.path.lexists(path):
         raise FileExistsError(errno.EEXIST, "refusing to replace an existing file "

@@ -77,14 +77,20 @@ py::tuple read_exact(const std::string& path, const std::optional<std::string>& 
 py::bytes format_rows(const py::handle& queries, const py::handle& truth) {
   const DoubleArray array = as_double_array(queries, {-1, 8, 3}, "queries");
   const auto n = array.shape(0);
-  const py::array_t<bool, py::array::c_style | py::array::forcecast> flags =
-      py::module_::import("numpy").attr("ascontiguousarray")(truth, py::arg("dtype") = "bool");
+  // As numbers, not as bools: a truth of 2 (or 0.5) is a mistake, not a collision.
+  const py::array_t<double, py::array::c_style | py::array::forcecast> flags =
+      py::module_::import("numpy").attr("ascontiguousarray")(truth, py::arg("dtype") = "float64");
   if (flags.ndim() != 1 || flags.shape(0) != n)
     throw py::value_error("truth must have shape (" + std::to_string(n) + ",), one value per query");
   std::string text;
   for (py::ssize_t i = 0; i < n; ++i) {
+    const double flag = flags.data()[i];
+    if (flag != 0.0 && flag != 1.0)
+      throw py::value_error("truth[" + std::to_string(i) + "] is " +
+                            std::string(py::repr(py::float_(flag))) +
+                            ": each truth value is 0 (no collision) or 1 (collision)");
     try {
-      append_query_rows(text, points_of(array.data() + 24 * i), flags.data()[i]);
+      append_query_rows(text, points_of(array.data() + 24 * i), flag == 1.0);
     } catch (const std::invalid_argument& e) {
       throw py::value_error("query " + std::to_string(i) + ": " + e.what());
     }

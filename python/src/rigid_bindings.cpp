@@ -23,6 +23,18 @@ SideMotion side_motion(const py::handle& motion, int vertices, const char* what)
   return side;
 }
 
+/// A motion's vector, refused at once when not finite (a NaN motion would fail only when used).
+Eigen::Vector3d finite_vector_of(const py::handle& object, const char* what) {
+  const Eigen::Vector3d x = vector_of(object, what);
+  if (!x.allFinite()) {
+    char text[160];
+    std::snprintf(text, sizeof text, "RigidMotion: %s must be finite, got (%.17g, %.17g, %.17g)",
+                  what, x.x(), x.y(), x.z());
+    throw py::value_error(text);
+  }
+  return x;
+}
+
 std::string repr(const RigidCcdResult& r) {
   char text[240];
   std::snprintf(text, sizeof text,
@@ -42,9 +54,9 @@ void bind_rigid(py::module_& m) {
       .def(py::init([](const py::handle& pivot, const py::handle& translation,
                        const py::handle& cayley) {
              RigidMotion r;
-             r.pivot = vector_of(pivot, "pivot");
-             r.translation = vector_of(translation, "translation");
-             r.cayley = vector_of(cayley, "cayley");
+             r.pivot = finite_vector_of(pivot, "pivot");
+             r.translation = finite_vector_of(translation, "translation");
+             r.cayley = finite_vector_of(cayley, "cayley");
              return r;
            }),
            py::arg("pivot") = py::make_tuple(0.0, 0.0, 0.0),

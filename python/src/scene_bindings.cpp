@@ -8,6 +8,7 @@
 #include <limits>
 #include <mutex>
 #include <string>
+#include <type_traits>
 
 #include "bindings.hpp"
 #include "exactccd/scene.hpp"
@@ -31,16 +32,25 @@ Triangles triangles_of(const py::handle& object) {
   if (array.size() > 0 && !numpy.attr("issubdtype")(array.dtype(), numpy.attr("integer")).cast<bool>())
     throw py::type_error("faces must be an integer array, not of dtype " +
                          std::string(py::str(array.dtype())));
-  const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> indices(array);
-  if (indices.ndim() != 2 || indices.shape(1) != 3)
-    throw py::value_error("faces must have shape (F, 3)");
-  Triangles triangles(indices.shape(0), 3);
-  for (py::ssize_t k = 0; k < indices.size(); ++k) {
-    const std::int64_t v = indices.data()[k];
-    if (v < 0 || v > std::numeric_limits<std::int32_t>::max())
-      throw py::value_error("faces: vertex index " + std::to_string(v) + " out of range");
-    triangles.data()[k] = static_cast<std::int32_t>(v);
-  }
+  Triangles triangles;
+  // Unsigned arrays read as uint64 (through int64, 2^64 - 1 would wrap round to -1).
+  auto copy = [&](auto signed_or_unsigned) {
+    using Index = decltype(signed_or_unsigned);
+    const py::array_t<Index, py::array::c_style | py::array::forcecast> indices(array);
+    if (indices.ndim() != 2 || indices.shape(1) != 3)
+      throw py::value_error("faces must have shape (F, 3)");
+    triangles.resize(indices.shape(0), 3);
+    for (py::ssize_t k = 0; k < indices.size(); ++k) {
+      const Index v = indices.data()[k];
+      const bool negative = std::is_signed_v<Index> && static_cast<std::int64_t>(v) < 0;
+      if (negative || v > Index{std::numeric_limits<std::int32_t>::max()})
+        throw py::value_error("faces: vertex index " + std::to_string(v) +
+                              " out of range (0 to 2147483647, and below the vertex count)");
+      triangles.data()[k] = static_cast<std::int32_t>(v);
+    }
+  };
+  if (array.dtype().kind() == 'u') copy(std::uint64_t{});
+  else copy(std::int64_t{});
   return triangles;
 }
 
