@@ -14,6 +14,7 @@
 #include "exactccd/rational_query.hpp"
 #include "pipeline/ccd_options_check.hpp"
 #include "pipeline/dispatch.hpp"
+#include "pipeline/held_at_start.hpp"
 #include "pipeline/linear_problems.hpp"
 
 namespace exactccd {
@@ -88,7 +89,12 @@ CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard
       nearest;  // the TOI's conversions to doubles compare doubles
   check_ccd_options(options);
-  return exact_with_separation(query, mpq_class(options.min_separation), options);
+  const mpq_class delta(options.min_separation);
+  if (options.t_max == 0.0)
+    return pipeline::decided_at_start(query, options, [&](const auto& q, const auto& o) {
+      return exact_with_separation(q, delta, o);
+    });
+  return exact_with_separation(query, delta, options);
 }
 
 CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
@@ -101,6 +107,10 @@ CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
         "argument, not both");
   if (sgn(min_separation) < 0)
     throw std::invalid_argument("exactccd: min_separation must be >= 0");
+  if (options.t_max == 0.0)
+    return pipeline::decided_at_start(query, options, [&](const auto& q, const auto& o) {
+      return exact_with_separation(q, min_separation, o);
+    });
   return exact_with_separation(query, min_separation, options);
 }
 
@@ -112,9 +122,12 @@ CcdResult linear_ccd(const Query& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
   if (!predicates::all_finite(query)) to_rational(query);  // throws, naming the coordinate
-  if (options.min_separation > 0)
-    return pipeline::certified_ccd<pipeline::LinearSeparation<Query>>(query, options);
-  return pipeline::certified_ccd<pipeline::LinearContact<Query>>(query, options);
+  const auto decide = [](const Query& q, const CcdOptions& o) {
+    return o.min_separation > 0 ? pipeline::certified_ccd<pipeline::LinearSeparation<Query>>(q, o)
+                                : pipeline::certified_ccd<pipeline::LinearContact<Query>>(q, o);
+  };
+  if (options.t_max == 0.0) return pipeline::decided_at_start(query, options, decide);
+  return decide(query, options);
 }
 
 }  // namespace

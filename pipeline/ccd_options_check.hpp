@@ -18,11 +18,12 @@ inline std::string shortest_decimal(double x) {
   return std::string(text, end);
 }
 
-/// Throws std::invalid_argument unless t_max lies in (0, 1] and toi_width and min_separation
-/// are finite and >= 0; the message names the value given.
+/// Throws std::invalid_argument unless t_max lies in [0, 1] (0: the state at t = 0 alone,
+/// held_at_start.hpp) and toi_width and min_separation are finite and >= 0; the message names
+/// the value given.
 inline void check_ccd_options(const CcdOptions& o) {
-  if (!(o.t_max > 0.0 && o.t_max <= 1.0))
-    throw std::invalid_argument("exactccd: t_max must lie in (0, 1], got " +
+  if (!(o.t_max >= 0.0 && o.t_max <= 1.0))
+    throw std::invalid_argument("exactccd: t_max must lie in [0, 1], got " +
                                 shortest_decimal(o.t_max));
   if (!(o.toi_width >= 0.0) || !std::isfinite(o.toi_width))
     throw std::invalid_argument("exactccd: toi_width must be finite and >= 0, got " +

@@ -12,9 +12,6 @@
 // the library; scaling a query and its delta by the same power of two keeps the claim.
 #include "corpus/min_separation_families.hpp"
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/mpq_class.h>
-#include <CGAL/squared_distance_3.h>
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -51,7 +48,7 @@ using exactccd::Mode;
 using exactccd::QueryType;
 using exactccd::RationalQuery;
 using exactccd::test::expect_answer;
-using Kernel = CGAL::Simple_cartesian<mpq_class>;
+using exactccd::test::cgal_squared_distance_at;
 
 // Four groups per family: every sub-kind of every builder (at most three) appears, and a
 // contact at t = 0 or 1 now and then.
@@ -105,34 +102,6 @@ CcdOptions options(double delta, Mode mode) {
   o.min_separation = delta;
   o.mode = mode;
   return o;
-}
-
-// ---- CGAL's exact squared distances, degenerate primitives as the point sets they are -------
-
-Kernel::Point_3 at(const RationalQuery& q, int vertex, const mpq_class& t) {
-  const exactccd::RationalPoint &a = q.points[vertex], &b = q.points[vertex + 4];
-  const mpq_class s = 1 - t;
-  return {mpq_class(s * a.x + t * b.x), mpq_class(s * a.y + t * b.y),
-          mpq_class(s * a.z + t * b.z)};
-}
-
-mpq_class point_segment(const Kernel::Point_3& p, const Kernel::Point_3& a,
-                        const Kernel::Point_3& b) {
-  if (a == b) return CGAL::squared_distance(p, a);
-  return CGAL::squared_distance(p, Kernel::Segment_3(a, b));
-}
-
-mpq_class squared_distance_at(const RationalQuery& q, const mpq_class& t) {
-  const Kernel::Point_3 x0 = at(q, 0, t), x1 = at(q, 1, t), x2 = at(q, 2, t), x3 = at(q, 3, t);
-  if (q.type == QueryType::vertex_face) {
-    if (!CGAL::collinear(x1, x2, x3))
-      return CGAL::squared_distance(x0, Kernel::Triangle_3(x1, x2, x3));
-    return std::min({point_segment(x0, x1, x2), point_segment(x0, x2, x3),
-                     point_segment(x0, x3, x1)});
-  }
-  if (x0 == x1) return point_segment(x0, x2, x3);
-  if (x2 == x3) return point_segment(x2, x0, x1);
-  return CGAL::squared_distance(Kernel::Segment_3(x0, x1), Kernel::Segment_3(x2, x3));
 }
 
 // ------------------------------------------------------------------------------------ tests
@@ -209,15 +178,15 @@ TEST(MinSeparationFamilies, ConstructionsConfirmedWithCgalAtRationalTimes) {
       const fam::Member& m = f.family.members[i];
       const RationalQuery q = rational(f.family.type, m.points);
       if (m.collides) {
-        EXPECT_EQ(squared_distance_at(q, m.toi), delta2);
+        EXPECT_EQ(cgal_squared_distance_at(q, m.toi), delta2);
         for (int j = 0; j < 16 && sgn(m.toi) > 0; ++j)
-          EXPECT_GT(squared_distance_at(q, mpq_class(m.toi * j / 16)), delta2)
+          EXPECT_GT(cgal_squared_distance_at(q, mpq_class(m.toi * j / 16)), delta2)
               << "within delta at t* " << j << "/16 < t* = " << m.toi;
       } else {
         ASSERT_GE(m.partner, 0);
         const mpq_class& tc = f.family.members[static_cast<std::size_t>(m.partner)].toi;
         for (const mpq_class& t : {tc, mpq_class(0), mpq_class(1)})
-          EXPECT_GT(squared_distance_at(q, t), delta2) << "within delta at " << t;
+          EXPECT_GT(cgal_squared_distance_at(q, t), delta2) << "within delta at " << t;
       }
     }
   }

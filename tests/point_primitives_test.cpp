@@ -562,8 +562,8 @@ TEST(PointPrimitives, BadInputThrows) {
   EXPECT_NE(message_of([&] { point_edge_ccd_2d({o2, Vector2d(nan, 0), x2, o2, o2, x2}); })
                 .find("e0_t0"),
             std::string::npos);
-  // Options outside their domain.
-  for (const double t_max : {0.0, -1.0, 1.5, nan}) {
+  // Options outside their domain (t_max = 0, the state at the start, is inside it).
+  for (const double t_max : {-0x1p-1074, -1.0, 1.5, nan}) {
     CcdOptions bad;
     bad.t_max = t_max;
     EXPECT_THROW(point_edge_ccd({o, o, x, o, o, x}, bad), std::invalid_argument) << t_max;

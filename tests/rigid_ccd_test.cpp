@@ -491,8 +491,10 @@ TEST(RigidCcd, BadInputThrowsClearly) {
   CcdOptions separated;  // a minimum separation must be finite and >= 0
   separated.min_separation = -1e-3;
   EXPECT_THROW(vertex_face_ccd(q, separated), std::invalid_argument);
-  CcdOptions bad_t;
-  bad_t.t_max = 0;
+  CcdOptions bad_t;  // t_max = 0 is the state at the start (t_max_zero_test); beyond [0, 1] not
+  bad_t.t_max = -0x1p-1074;
+  EXPECT_THROW(vertex_face_ccd(q, bad_t), std::invalid_argument);
+  bad_t.t_max = 0x1.0000000000001p0;
   EXPECT_THROW(vertex_face_ccd(q, bad_t), std::invalid_argument);
   EXPECT_THROW(RigidMotion::turn(Vector3d::Zero(), Vector3d::Zero(), 1.0), std::invalid_argument);
   EXPECT_THROW(RigidMotion::turn(Vector3d::Zero(), Vector3d::UnitZ(), 3.5), std::invalid_argument);

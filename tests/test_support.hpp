@@ -7,7 +7,9 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/gmpxx.h>
 #include <CGAL/intersections.h>
+#include <CGAL/squared_distance_3.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -176,6 +178,26 @@ inline bool cgal_contact_at(const RationalQuery& q, const mpq_class& t) {
   for (int i = 0; i < 4; ++i) x[i] = cgal_point(position_at(q, i, t));
   if (q.type == QueryType::vertex_face) return cgal_point_in_triangle(x[0], x[1], x[2], x[3]);
   return cgal_segments_meet(x[0], x[1], x[2], x[3]);
+}
+
+/// The squared Euclidean distance between the query's closed primitives at the rational time t
+/// (degenerate primitives as the point sets they are: a collinear triangle as its edges, a
+/// zero-length segment as its point).
+inline mpq_class cgal_squared_distance_at(const RationalQuery& q, const mpq_class& t) {
+  std::array<CgalPoint, 4> x;
+  for (int i = 0; i < 4; ++i) x[i] = cgal_point(position_at(q, i, t));
+  const auto point_segment = [](const CgalPoint& p, const CgalPoint& a, const CgalPoint& b) {
+    return a == b ? CGAL::squared_distance(p, a) : CGAL::squared_distance(p, CgalSegment(a, b));
+  };
+  if (q.type == QueryType::vertex_face) {
+    if (!CGAL::collinear(x[1], x[2], x[3]))
+      return CGAL::squared_distance(x[0], CgalTriangle(x[1], x[2], x[3]));
+    return std::min({point_segment(x[0], x[1], x[2]), point_segment(x[0], x[2], x[3]),
+                     point_segment(x[0], x[3], x[1])});
+  }
+  if (x[0] == x[1]) return point_segment(x[0], x[2], x[3]);
+  if (x[2] == x[3]) return point_segment(x[2], x[0], x[1]);
+  return CGAL::squared_distance(CgalSegment(x[0], x[1]), CgalSegment(x[2], x[3]));
 }
 
 /// Sign of the coplanarity determinant of the query's four points at time t (CGAL orientation

@@ -116,9 +116,10 @@ def vertex_face_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
 
     vertex_face_ccd(p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1) with 3-vectors, or
     vertex_face_ccd(points) with one (8, 3) array in that row order.
-    t_max in (0, 1]; toi_width >= 0 (0: the tightest pair of doubles around the exact time);
-    mode "filtered" (certified; "default", its old name, is accepted too), "exact" (the rational
-    path only) or "float_only" (uncertified, for comparison). min_separation: delta >= 0,
+    t_max in [0, 1] (0: the state at t = 0 alone, a contact there at [0, 0]); toi_width >= 0
+    (0: the tightest pair of doubles around the exact time); mode "filtered" (certified;
+    "default", its old name, is accepted too), "exact" (the rational path only) or "float_only"
+    (uncertified, for comparison). min_separation: delta >= 0,
     finite; collides iff the vertex comes within Euclidean distance delta of the triangle, the
     TOI the earliest such time (0: contact).
     Raises ValueError for non-finite coordinates or options outside their domain.

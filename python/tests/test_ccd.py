@@ -185,3 +185,19 @@ def test_mode_names_and_the_old_name_default(sample_data):
         message = str(error.value)
         for name in ("float_only", "filtered", "exact", "default"):
             assert f'"{name}"' in message, message
+
+
+def test_t_max_zero_is_the_state_at_the_start():
+    # A vertex on the triangle at t = 0 leaving it, one 2^-80 above it arriving later, and the
+    # same in a batch and with a minimum separation that reaches across the gap.
+    touching = np.array([[0.25, 0.25, 0], [0, 0, 0], [1, 0, 0], [0, 1, 0],
+                         [0.25, 0.25, 1], [0, 0, 0], [1, 0, 0], [0, 1, 0]], float)
+    above = touching.copy()
+    above[0, 2], above[4, 2] = 2.0 ** -80, -1.0
+    r = exactccd.vertex_face_ccd(touching, t_max=0.0)
+    assert r.collides and r.toi_lo == 0.0 and r.toi_hi == 0.0
+    assert not exactccd.vertex_face_ccd(above, t_max=0.0).collides
+    assert exactccd.vertex_face_ccd(above).collides  # it does arrive within the step
+    assert exactccd.vertex_face_ccd(above, t_max=0.0, min_separation=2.0 ** -80).collides
+    batch = exactccd.vertex_face_ccd_batch(np.stack([touching, above]), t_max=0.0)
+    assert list(batch.collides) == [True, False] and batch.toi_hi[0] == 0.0

@@ -136,8 +136,8 @@ def test_wrapped_methods_still_work():
 
 
 @pytest.mark.parametrize("options, shown", [
-    (dict(t_max=1e308), "t_max must lie in (0, 1], got 1e+308"),
-    (dict(t_max=-1e-300), "t_max must lie in (0, 1], got -1e-300"),
+    (dict(t_max=1e308), "t_max must lie in [0, 1], got 1e+308"),
+    (dict(t_max=-1e-300), "t_max must lie in [0, 1], got -1e-300"),
     (dict(toi_width=-1e-300), "toi_width must be finite and >= 0, got -1e-300"),
     (dict(min_separation=float("inf")), "min_separation must be finite and >= 0, got inf"),
 ])

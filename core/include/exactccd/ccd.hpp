@@ -16,7 +16,7 @@ namespace exactccd {
 
 /// Vertex p against the closed triangle (a, b, c), over [0, options.t_max] (\ref semantics).
 /// \param query any finite coordinates (degenerate triangles included).
-/// \param options t_max in (0, 1], toi_width finite and >= 0, any mode.
+/// \param options t_max in [0, 1] (0: the state at t = 0), toi_width finite and >= 0, any mode.
 /// \return the verdict and the TOI enclosure; +infinity TOIs without contact.
 /// \throws std::invalid_argument for a non-finite coordinate (the message names it) or options
 ///         outside their domain.
@@ -26,7 +26,7 @@ EXACTCCD_API CcdResult vertex_face_ccd(const VertexFaceQuery& query,
 /// Closed segment [ea0, ea1] against the closed segment [eb0, eb1], over [0, options.t_max]
 /// (\ref semantics).
 /// \param query any finite coordinates (zero-length segments included).
-/// \param options t_max in (0, 1], toi_width finite and >= 0, any mode.
+/// \param options t_max in [0, 1] (0: the state at t = 0), toi_width finite and >= 0, any mode.
 /// \return the verdict and the TOI enclosure; +infinity TOIs without contact.
 /// \throws std::invalid_argument for a non-finite coordinate (the message names it) or options
 ///         outside their domain.
@@ -37,7 +37,7 @@ EXACTCCD_API CcdResult edge_edge_ccd(const EdgeEdgeQuery& query, const CcdOption
 /// segment [p, p] against [e0, e1], which has the same contact set and hence the same verdict
 /// and TOI (\ref point_primitives). Throws and returns as edge_edge_ccd.
 /// \param query any finite coordinates (a zero-length segment included).
-/// \param options t_max in (0, 1], toi_width finite and >= 0, any mode.
+/// \param options t_max in [0, 1] (0: the state at t = 0), toi_width finite and >= 0, any mode.
 /// \return the verdict and the TOI enclosure; +infinity TOIs without contact.
 /// \throws std::invalid_argument for a non-finite coordinate or options outside their domain.
 EXACTCCD_API CcdResult point_edge_ccd(const PointEdgeQuery& query, const CcdOptions& options = {});
@@ -45,7 +45,7 @@ EXACTCCD_API CcdResult point_edge_ccd(const PointEdgeQuery& query, const CcdOpti
 /// Point p against point q in 3D, over [0, options.t_max]: contact when p(t) == q(t). Exactly
 /// edge_edge_ccd of the zero-length segments [p, p] and [q, q] (\ref point_primitives).
 /// \param query any finite coordinates.
-/// \param options t_max in (0, 1], toi_width finite and >= 0, any mode.
+/// \param options t_max in [0, 1] (0: the state at t = 0), toi_width finite and >= 0, any mode.
 /// \return the verdict and the TOI enclosure; +infinity TOIs without contact.
 /// \throws std::invalid_argument for a non-finite coordinate or options outside their domain.
 EXACTCCD_API CcdResult point_point_ccd(const PointPointQuery& query,
@@ -55,7 +55,7 @@ EXACTCCD_API CcdResult point_point_ccd(const PointPointQuery& query,
 /// point_edge_ccd of the query embedded in the plane z = 0 (exactly: the embedding adds a zero
 /// coordinate and rounds nothing), which has the same contact set (\ref point_primitives).
 /// \param query any finite coordinates (a zero-length segment included).
-/// \param options t_max in (0, 1], toi_width finite and >= 0, any mode.
+/// \param options t_max in [0, 1] (0: the state at t = 0), toi_width finite and >= 0, any mode.
 /// \return the verdict and the TOI enclosure; +infinity TOIs without contact.
 /// \throws std::invalid_argument for a non-finite coordinate or options outside their domain.
 EXACTCCD_API CcdResult point_edge_ccd_2d(const PointEdgeQuery2d& query,

@@ -31,8 +31,8 @@ struct RationalQuery {
 /// Decides the query with the exact path (exact/): exact for every input (\ref semantics),
 /// with options.min_separation as the minimum separation (0: contact).
 /// \param query any rational coordinates (canonical mpq_class values).
-/// \param options t_max in (0, 1] and toi_width finite and >= 0; the mode is ignored (always
-///        the exact path).
+/// \param options t_max in [0, 1] (0: the state at t = 0) and toi_width finite and >= 0; the
+///        mode is ignored (always the exact path).
 /// \return the verdict and the TOI enclosure (doubles around the exact t*); +infinity TOIs
 ///         without contact.
 /// \throws std::invalid_argument for options outside their domain (see CcdOptions).
@@ -44,8 +44,8 @@ EXACTCCD_API CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& o
 /// options.min_separation must be left at 0 (a non-zero one is refused, never ignored).
 /// \param query any rational coordinates (canonical mpq_class values).
 /// \param min_separation delta >= 0; 0 is contact, as exact_ccd(query, options) decides it.
-/// \param options t_max in (0, 1] and toi_width finite and >= 0; min_separation 0; the mode is
-///        ignored.
+/// \param options t_max in [0, 1] (0: the state at t = 0) and toi_width finite and >= 0;
+///        min_separation 0; the mode is ignored.
 /// \return the verdict and the TOI enclosure; +infinity TOIs when never within delta.
 /// \throws std::invalid_argument for a negative delta, a non-zero options.min_separation
 ///         ("exactccd: give the minimum separation once: options.min_separation or the

@@ -108,9 +108,10 @@ struct RigidCcdResult {
 /// Exact for every finite input: rotation axes through the primitives, zero rotation,
 /// coplanar-throughout and degenerate primitives included.
 /// \param query finite positions and motions.
-/// \param options t_max in (0, 1], toi_width finite and >= 0; Mode::filtered (culling and
-///        interval filters, then the exact path), Mode::exact, or Mode::float_only (the
-///        uncertified double test, for comparison only: the rigid coplanarity polynomial's
+/// \param options t_max in [0, 1] (0: the state at t = 0), toi_width finite and >= 0;
+///        Mode::filtered (culling and interval filters, then the exact path), Mode::exact, or
+///        Mode::float_only (the uncertified double test, for comparison only: the rigid
+///        coplanarity polynomial's
 ///        roots in [0, t_max] found in double arithmetic, the inclusion test at each in doubles;
 ///        it misses contacts and reports false ones; toi_lo == toi_hi, the root, and
 ///        decided_by == Stage::float_only). min_separation must be 0.

@@ -122,7 +122,8 @@ inline constexpr double kNoContactToi = std::numeric_limits<double>::infinity();
 /// Options of one query's test. Every CCD function throws std::invalid_argument when they lie
 /// outside their domain.
 struct CcdOptions {
-  /// End of the time interval [0, t_max]; must lie in (0, 1].
+  /// End of the time interval [0, t_max]; must lie in [0, 1]. 0 asks for the state at t = 0
+  /// alone: a contact (or within min_separation) there, with TOI [0, 0], or none.
   double t_max = 1.0;
   /// Largest acceptable toi_hi - toi_lo. 0 (the default) asks for the tightest pair of
   /// doubles around the exact first contact time t*: toi_lo == toi_hi == t* when t* is a
