@@ -1,4 +1,4 @@
-// Point-edge and point-point CCD: thin reductions to edge_edge_ccd, whose degenerate (zero-length)
+// Point-edge and point-point CCD, in 3D and in the plane: thin reductions to edge_edge_ccd, whose degenerate (zero-length)
 // segments are the points they are. Every coordinate is copied, never computed, so the reduced
 // query has exactly the original motion and hence the same contact set, verdict and TOI.
 // PROOF: proofs/api_reductions.md#point-primitives
@@ -56,6 +56,16 @@ CcdResult point_edge_ccd_2d(const PointEdgeQuery2d& q, const CcdOptions& options
   return point_edge_ccd({in_plane_z0(q.p_t0), in_plane_z0(q.e0_t0), in_plane_z0(q.e1_t0),
                          in_plane_z0(q.p_t1), in_plane_z0(q.e0_t1), in_plane_z0(q.e1_t1)},
                         options);
+}
+
+CcdResult point_point_ccd_2d(const PointPointQuery2d& q, const CcdOptions& options) {
+  require_finite(q.p_t0, "p_t0");
+  require_finite(q.q_t0, "q_t0");
+  require_finite(q.p_t1, "p_t1");
+  require_finite(q.q_t1, "q_t1");
+  return point_point_ccd(
+      {in_plane_z0(q.p_t0), in_plane_z0(q.q_t0), in_plane_z0(q.p_t1), in_plane_z0(q.q_t1)},
+      options);
 }
 
 }  // namespace exactccd

@@ -313,6 +313,31 @@ TEST(PointPrimitives, PointEdge2dIsTheEmbeddedQuery) {
   }
 }
 
+TEST(PointPrimitives, PointPoint2dIsTheEmbeddedQuery) {
+  PointQueries gen(test_seed("2d point-point embedding"));
+  const std::vector<CcdOptions> grid = option_grid();
+  const auto xy = [](const Vector3d& v) { return Vector2d(v.x(), v.y()); };
+  std::size_t contacts = 0;
+  for (std::size_t i = 0; i < query_count(); ++i) {
+    const PointPointQuery q3 = gen.point_point();
+    const PointPointQuery2d q{xy(q3.p_t0), xy(q3.q_t0), xy(q3.p_t1), xy(q3.q_t1)};
+    const PointPointQuery in_z0{z0(q.p_t0), z0(q.q_t0), z0(q.p_t1), z0(q.q_t1)};
+    for (const CcdOptions& o : grid) {
+      const CcdResult got = point_point_ccd_2d(q, o), want = point_point_ccd(in_z0, o);
+      ASSERT_TRUE(same(got, want)) << "point_point_ccd_2d " << describe(got)
+                                   << " != point_point_ccd in z = 0 " << describe(want)
+                                   << describe(in_z0);
+      if (o.mode == Mode::filtered && got.collides) ++contacts;
+    }
+    // The per-axis closed form, independently of the library.
+    const std::optional<mpq_class> t = point_point_first_contact(in_z0, 1.0);
+    const CcdResult r = point_point_ccd_2d(q);
+    ASSERT_EQ(r.collides, t.has_value()) << describe(in_z0);
+    if (t) ASSERT_TRUE(tightest_pair_failure(r, *t).empty()) << describe(in_z0);
+  }
+  EXPECT_GT(contacts, query_count() / 8);
+}
+
 // ---- Independent checks ------------------------------------------------------------------------
 
 TEST(PointPrimitives, PointEdgeAgreesWithDegenerateTriangle) {
@@ -562,6 +587,8 @@ TEST(PointPrimitives, BadInputThrows) {
   EXPECT_NE(message_of([&] { point_edge_ccd_2d({o2, Vector2d(nan, 0), x2, o2, o2, x2}); })
                 .find("e0_t0"),
             std::string::npos);
+  EXPECT_NE(message_of([&] { point_point_ccd_2d({o2, Vector2d(0, nan), o2, x2}); }).find("q_t0"),
+            std::string::npos);
   // Options outside their domain (t_max = 0, the state at the start, is inside it).
   for (const double t_max : {-0x1p-1074, -1.0, 1.5, nan}) {
     CcdOptions bad;
@@ -569,6 +596,7 @@ TEST(PointPrimitives, BadInputThrows) {
     EXPECT_THROW(point_edge_ccd({o, o, x, o, o, x}, bad), std::invalid_argument) << t_max;
     EXPECT_THROW(point_point_ccd({o, x, o, x}, bad), std::invalid_argument) << t_max;
     EXPECT_THROW(point_edge_ccd_2d({o2, o2, x2, o2, o2, x2}, bad), std::invalid_argument);
+    EXPECT_THROW(point_point_ccd_2d({o2, x2, o2, x2}, bad), std::invalid_argument);
   }
   for (const double width : {-1.0, kInf, nan}) {
     CcdOptions bad;

@@ -89,8 +89,10 @@ def _options(function, t_max, toi_width, mode, min_separation):
 __all__ = [
     "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES",
     "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene",
-    "SceneContact", "ScenePair", "SceneResult", "SceneStats", "edge_edge_ccd", "edge_edge_ccd_batch", "exact_ccd",
-    "find_query_files", "query_type_from_path", "read_query_file", "read_query_file_exact",
+    "SceneContact", "ScenePair", "SceneResult", "SceneStats", "edge_edge_ccd",
+    "edge_edge_ccd_batch", "exact_ccd",
+    "find_query_files", "point_edge_ccd", "point_edge_ccd_batch", "point_point_ccd",
+    "point_point_ccd_batch", "query_type_from_path", "read_query_file", "read_query_file_exact",
     "rigid_edge_edge_ccd", "rigid_vertex_face_ccd", "vertex_face_ccd", "vertex_face_ccd_batch",
     "write_query_file",
 ]
@@ -141,6 +143,77 @@ def edge_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
         *_options("edge_edge_ccd", t_max, toi_width, mode, min_separation))
 
 
+_POINT_EDGE_ROWS = ("p_t0", "e0_t0", "e1_t0", "p_t1", "e0_t1", "e1_t1")
+_POINT_POINT_ROWS = ("p_t0", "q_t0", "p_t1", "q_t1")
+# The edge-edge query each point query is (proofs/api_reductions.md#point-primitives): a point
+# is the zero-length segment [p, p]; rows copied, never computed.
+_POINT_EDGE_AS_EDGE_EDGE = [0, 0, 1, 2, 3, 3, 4, 5]
+_POINT_POINT_AS_EDGE_EDGE = [0, 0, 1, 1, 2, 2, 3, 3]
+
+
+def _in_space(function, array, names, leading):
+    """The points as float64 in 3D: (..., k, 3) as given, (..., k, 2) embedded in z = 0
+    (appending the double 0 rounds nothing); non-finite coordinates named."""
+    k = len(names)
+    if array.ndim != leading + 2 or array.shape[-2] != k or array.shape[-1] not in (2, 3):
+        want = "(N, " if leading else "("
+        raise ValueError(f"{function}(): the points {', '.join(names)} must have shape "
+                         f"{want}{k}, 3) or {want}{k}, 2), not {array.shape}")
+    finite = np.isfinite(array).all(axis=-1)
+    if not finite.all():
+        where = np.argwhere(~finite)[0]
+        query = f"query {where[0]}: " if leading else ""
+        raise ValueError(f"{query}exactccd: non-finite coordinate in {names[where[-1]]}")
+    if array.shape[-1] == 2:
+        array = np.concatenate([array, np.zeros(array.shape[:-1] + (1,))], axis=-1)
+    return array
+
+
+def _point_query(function, points, names):
+    if len(points) == 1:
+        array = np.asarray(points[0], dtype=np.float64)
+    elif len(points) == len(names):
+        shapes = {np.shape(p) for p in points}
+        if len(shapes) != 1:
+            raise ValueError(f"{function}(): the points {', '.join(names)} must all be 3-vectors "
+                             f"or all 2-vectors")
+        array = np.array([np.asarray(p, dtype=np.float64) for p in points])
+    else:
+        raise TypeError(f"{function}(): expected the {len(names)} points {', '.join(names)} or "
+                        f"one ({len(names)}, 3) or ({len(names)}, 2) array, got {len(points)} "
+                        f"arguments")
+    return _in_space(function, array, names, 0)
+
+
+def point_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
+                   mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
+    """Point p against the closed segment [e0, e1], in 3D or in the plane, over [0, t_max].
+
+    point_edge_ccd(p_t0, e0_t0, e1_t0, p_t1, e0_t1, e1_t1) with 3-vectors or 2-vectors, or one
+    (6, 3) or (6, 2) array in that row order; a 2D query is decided in the plane z = 0. Options
+    as vertex_face_ccd. The edge-edge query of the segment [p, p] against [e0, e1], which has
+    the same contact set (C++: point_edge_ccd, point_edge_ccd_2d).
+    """
+    rows = _point_query("point_edge_ccd", points, _POINT_EDGE_ROWS)
+    return _exactccd._edge_edge_ccd(
+        rows[_POINT_EDGE_AS_EDGE_EDGE],
+        *_options("point_edge_ccd", t_max, toi_width, mode, min_separation))
+
+
+def point_point_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
+                    mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
+    """Points p and q, in 3D or in the plane, over [0, t_max]: they meet (or come within
+    min_separation) at some t.
+
+    point_point_ccd(p_t0, q_t0, p_t1, q_t1) with 3-vectors or 2-vectors, or one (4, 3) or (4, 2)
+    array. Options as vertex_face_ccd (C++: point_point_ccd, point_point_ccd_2d).
+    """
+    rows = _point_query("point_point_ccd", points, _POINT_POINT_ROWS)
+    return _exactccd._edge_edge_ccd(
+        rows[_POINT_POINT_AS_EDGE_EDGE],
+        *_options("point_point_ccd", t_max, toi_width, mode, min_separation))
+
+
 class BatchResult(NamedTuple):
     """Results of a batch, one entry per query: stage holds codes into STAGE_NAMES."""
     collides: np.ndarray  # bool
@@ -181,3 +254,25 @@ def _batch(function, type, queries, t_max, toi_width, mode, threads, min_separat
     threads = _arguments.count_or_none(function, "threads", threads)
     return BatchResult(*_exactccd._ccd_batch(type, queries, t_max, toi_width, mode, threads,
                                              min_separation))
+
+
+def point_edge_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
+                         mode: str = "filtered", threads: Optional[int] = None,
+                         min_separation: float = 0.0) -> BatchResult:
+    """Decides N point-edge queries: an (N, 6, 3) or (N, 6, 2) array, rows p, e0, e1 at t0 then
+    at t1. As vertex_face_ccd_batch; results equal one point_edge_ccd call per query."""
+    array = _in_space("point_edge_ccd_batch", np.asarray(queries, dtype=np.float64),
+                      _POINT_EDGE_ROWS, 1)
+    return _batch("point_edge_ccd_batch", "edge-edge", array[:, _POINT_EDGE_AS_EDGE_EDGE], t_max,
+                  toi_width, mode, threads, min_separation)
+
+
+def point_point_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
+                          mode: str = "filtered", threads: Optional[int] = None,
+                          min_separation: float = 0.0) -> BatchResult:
+    """Decides N point-point queries: an (N, 4, 3) or (N, 4, 2) array, rows p, q at t0 then at
+    t1. As vertex_face_ccd_batch."""
+    array = _in_space("point_point_ccd_batch", np.asarray(queries, dtype=np.float64),
+                      _POINT_POINT_ROWS, 1)
+    return _batch("point_point_ccd_batch", "edge-edge", array[:, _POINT_POINT_AS_EDGE_EDGE],
+                  t_max, toi_width, mode, threads, min_separation)

@@ -61,4 +61,14 @@ EXACTCCD_API CcdResult point_point_ccd(const PointPointQuery& query,
 EXACTCCD_API CcdResult point_edge_ccd_2d(const PointEdgeQuery2d& query,
                                          const CcdOptions& options = {});
 
+/// Points p and q in the plane, over [0, options.t_max]: the 3D point_point_ccd of the query
+/// embedded in the plane z = 0 (exactly, as point_edge_ccd_2d), the same contact set
+/// (\ref point_primitives).
+/// \param query any finite coordinates.
+/// \param options t_max in [0, 1] (0: the state at t = 0), toi_width finite and >= 0, any mode.
+/// \return the verdict and the TOI enclosure; +infinity TOIs without contact.
+/// \throws std::invalid_argument for a non-finite coordinate or options outside their domain.
+EXACTCCD_API CcdResult point_point_ccd_2d(const PointPointQuery2d& query,
+                                          const CcdOptions& options = {});
+
 }  // namespace exactccd

@@ -69,6 +69,14 @@ struct PointPointQuery {
   Eigen::Vector3d q_t1;  ///< point q at t = 1
 };
 
+/// Points p and q in the plane (point_point_ccd_2d). Any finite coordinates.
+struct PointPointQuery2d {
+  Eigen::Vector2d p_t0;  ///< point p at t = 0
+  Eigen::Vector2d q_t0;  ///< point q at t = 0
+  Eigen::Vector2d p_t1;  ///< point p at t = 1
+  Eigen::Vector2d q_t1;  ///< point q at t = 1
+};
+
 /// Point p against the closed segment [e0, e1] in the plane (point_edge_ccd_2d). Any finite
 /// coordinates; a zero-length segment is the point it is.
 struct PointEdgeQuery2d {
