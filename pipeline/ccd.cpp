@@ -90,11 +90,11 @@ CcdResult exact_ccd(const RationalQuery& query, const CcdOptions& options) {
       nearest;  // the TOI's conversions to doubles compare doubles
   check_ccd_options(options);
   const mpq_class delta(options.min_separation);
-  if (options.t_max == 0.0)
-    return pipeline::decided_at_start(query, options, [&](const auto& q, const auto& o) {
-      return exact_with_separation(q, delta, o);
-    });
-  return exact_with_separation(query, delta, options);
+  const auto decide = [&](const RationalQuery& q, const CcdOptions& o) {
+    return exact_with_separation(q, delta, o);
+  };
+  if (options.t_max == 0.0) return pipeline::decided_at_start(query, options, decide);
+  return pipeline::with_start_flag(decide(query, options), query, options, decide);
 }
 
 CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
@@ -107,11 +107,11 @@ CcdResult exact_ccd(const RationalQuery& query, const mpq_class& min_separation,
         "argument, not both");
   if (sgn(min_separation) < 0)
     throw std::invalid_argument("exactccd: min_separation must be >= 0");
-  if (options.t_max == 0.0)
-    return pipeline::decided_at_start(query, options, [&](const auto& q, const auto& o) {
-      return exact_with_separation(q, min_separation, o);
-    });
-  return exact_with_separation(query, min_separation, options);
+  const auto decide = [&](const RationalQuery& q, const CcdOptions& o) {
+    return exact_with_separation(q, min_separation, o);
+  };
+  if (options.t_max == 0.0) return pipeline::decided_at_start(query, options, decide);
+  return pipeline::with_start_flag(decide(query, options), query, options, decide);
 }
 
 namespace {
@@ -127,7 +127,7 @@ CcdResult linear_ccd(const Query& query, const CcdOptions& options) {
                                 : pipeline::certified_ccd<pipeline::LinearContact<Query>>(q, o);
   };
   if (options.t_max == 0.0) return pipeline::decided_at_start(query, options, decide);
-  return decide(query, options);
+  return pipeline::with_start_flag(decide(query, options), query, options, decide);
 }
 
 }  // namespace

@@ -45,12 +45,31 @@ inline predicates::DoubleRigidQuery held_at_start(predicates::DoubleRigidQuery q
 
 /// `decide(query, options)` answers the held query over [0, 1], read as the answer over [0, 0]:
 /// a contact lies at t = 0 exactly.
+/// Out of line and cold: the callers' fast path (every query with t_max > 0) stays as small as
+/// it was.
 template <class Query, class Decide>
-CcdResult decided_at_start(const Query& query, const CcdOptions& options, Decide&& decide) {
+[[gnu::noinline, gnu::cold]] CcdResult decided_at_start(const Query& query,
+                                                        const CcdOptions& options,
+                                                        Decide&& decide) {
   CcdOptions whole = options;
   whole.t_max = 1.0;
   CcdResult r = decide(held_at_start(query), whole);
   if (r.collides) r.toi_lo = r.toi_hi = 0.0;
+  r.starts_within = r.collides;
+  return r;
+}
+
+
+/// r, the answer over [0, t_max], with CcdResult::starts_within: t* = 0. Free in all but one
+/// case: no contact or toi_lo > 0 gives t* > 0 (or none), toi_hi = 0 gives t* = 0; only
+/// toi_lo = 0 < toi_hi (a wide toi_width, or t* below the least subnormal) asks the held
+/// query. PROOF: proofs/api_reductions.md#t-max-zero
+template <class Query, class Decide>
+CcdResult with_start_flag(CcdResult r, const Query& query, const CcdOptions& options,
+                          Decide&& decide) {
+  // Resting contact (t* = 0, [0, 0]) is common in simulations: decided inline.
+  if (r.collides && r.toi_lo == 0.0)
+    r.starts_within = r.toi_hi == 0.0 || decided_at_start(query, options, decide).collides;
   return r;
 }
 

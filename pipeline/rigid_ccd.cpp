@@ -182,7 +182,7 @@ RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
                                 : pipeline::certified_ccd<pipeline::RigidContact>(query, o);
   };
   if (options.t_max == 0.0) return with_time(pipeline::decided_at_start(q, options, decide), q);
-  return with_time(decide(q, options), q);
+  return with_time(pipeline::with_start_flag(decide(q, options), q, options, decide), q);
 }
 
 }  // namespace

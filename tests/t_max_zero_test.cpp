@@ -98,6 +98,40 @@ TEST(TMaxZero, LinearQueriesAnswerTheStateAtTheStart) {
   EXPECT_GT(apart, 300);
 }
 
+// CcdResult::starts_within over the whole step is the state at t = 0 too, whatever toi_width:
+// with a wide width an enclosure [0, w] does not say whether t* = 0, and the held query decides.
+TEST(TMaxZero, StartsWithinIsTheStateAtTheStart) {
+  std::mt19937_64 rng(test_seed("starts_within"));
+  int within = 0, near_start_only = 0;
+  for (int n = 0; n < 300; ++n) {
+    const QueryType type = n % 2 ? QueryType::edge_edge : QueryType::vertex_face;
+    const RationalQuery q = query_near_start(rng, type, (n / 2) % 4);
+    for (const double delta : {0.0, 1e-3})
+      for (const double width : {0.0, 0.25}) {
+        SCOPED_TRACE(describe(q) + " delta " + std::to_string(delta) + " width " +
+                     std::to_string(width));
+        const bool truth = cgal_within_at_start(q, delta);
+        within += truth;
+        CcdOptions o;
+        o.min_separation = delta;
+        o.toi_width = width;
+        for (const Mode mode : {Mode::filtered, Mode::exact}) {
+          o.mode = mode;
+          const CcdResult r = double_api_ccd(q, o);
+          EXPECT_EQ(r.starts_within, truth);
+          if (r.collides && r.toi_lo == 0.0 && r.toi_hi > 0.0 && !truth) ++near_start_only;
+        }
+        EXPECT_EQ(exact_ccd(q, o).starts_within, truth);
+        o.t_max = 0.0;
+        EXPECT_EQ(double_api_ccd(q, o).starts_within, truth);
+      }
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(within, 200);
+  // The case only the held query decides: an enclosure from 0 of a contact after the start.
+  EXPECT_GT(near_start_only, 0);
+}
+
 TEST(TMaxZero, PointQueriesAnswerTheStateAtTheStart) {
   const Vector3d p(0.5, 0, 0), e0(0, 0, 0), e1(1, 0, 0), away(0, 0, 1);
   CcdOptions o = at_start(Mode::filtered, 0.0);
@@ -138,6 +172,7 @@ TEST(TMaxZero, RigidQueriesAnswerTheStateAtTheStart) {
                                                    SideMotion::of({})},
                                 o);
         expect_state_at_start(r.ccd, truth);
+        EXPECT_EQ(r.ccd.starts_within, truth);
         if (truth && r.has_time) EXPECT_EQ(r.time_lo, 0.0);
       }
     }

@@ -37,6 +37,8 @@ void bind_ccd(py::module_& m) {
       .def_readonly("collides", &CcdResult::collides)
       .def_readonly("toi_lo", &CcdResult::toi_lo)
       .def_readonly("toi_hi", &CcdResult::toi_hi)
+      .def_readonly("starts_within", &CcdResult::starts_within,
+                    "The primitives already meet (are within min_separation) at t = 0: exact.")
       .def_property_readonly("stage", [](const CcdResult& r) { return to_string(r.decided_by); },
                              "The name of the stage that decided the query (STAGE_NAMES).")
       .def_property_readonly(
@@ -47,7 +49,8 @@ void bind_ccd(py::module_& m) {
            [](const CcdResult& a, const CcdResult& b) {
              // TOIs are doubles in [0, t_max] or +infinity, never NaN: == compares them.
              return a.collides == b.collides && a.decided_by == b.decided_by &&
-                    a.toi_lo == b.toi_lo && a.toi_hi == b.toi_hi;
+                    a.toi_lo == b.toi_lo && a.toi_hi == b.toi_hi &&
+                    a.starts_within == b.starts_within;
            })
       .def("__bool__", [](const CcdResult& r) { return r.collides; });
 

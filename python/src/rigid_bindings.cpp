@@ -81,6 +81,9 @@ void bind_rigid(py::module_& m) {
       .def_property_readonly("collides", [](const RigidCcdResult& r) { return r.ccd.collides; })
       .def_property_readonly("toi_lo", [](const RigidCcdResult& r) { return r.ccd.toi_lo; })
       .def_property_readonly("toi_hi", [](const RigidCcdResult& r) { return r.ccd.toi_hi; })
+      .def_property_readonly("starts_within",
+                             [](const RigidCcdResult& r) { return r.ccd.starts_within; },
+                             "The primitives already meet (are within min_separation) at s = 0.")
       .def_property_readonly("stage",
                              [](const RigidCcdResult& r) { return to_string(r.ccd.decided_by); })
       .def_readonly("has_time", &RigidCcdResult::has_time)

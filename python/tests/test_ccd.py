@@ -195,7 +195,10 @@ def test_t_max_zero_is_the_state_at_the_start():
     above = touching.copy()
     above[0, 2], above[4, 2] = 2.0 ** -80, -1.0
     r = exactccd.vertex_face_ccd(touching, t_max=0.0)
-    assert r.collides and r.toi_lo == 0.0 and r.toi_hi == 0.0
+    assert r.collides and r.toi_lo == 0.0 and r.toi_hi == 0.0 and r.starts_within
+    assert exactccd.vertex_face_ccd(touching, toi_width=0.5).starts_within
+    late = exactccd.vertex_face_ccd(above, toi_width=1.0)  # [0, w] encloses a later contact
+    assert late.collides and not late.starts_within
     assert not exactccd.vertex_face_ccd(above, t_max=0.0).collides
     assert exactccd.vertex_face_ccd(above).collides  # it does arrive within the step
     assert exactccd.vertex_face_ccd(above, t_max=0.0, min_separation=2.0 ** -80).collides

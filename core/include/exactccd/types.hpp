@@ -159,6 +159,10 @@ struct CcdResult {
   double toi_hi = kNoContactToi;
   /// The stage that decided (statistics only: the answer does not depend on it).
   Stage decided_by = Stage::exact;
+  /// True iff the primitives already meet (with min_separation > 0: are within it) at t = 0,
+  /// i.e. t* = 0: exact in the certified modes, whatever toi_width (a barrier method treats
+  /// such a pair as already in contact, not as a contact within the step).
+  bool starts_within = false;
 };
 
 }  // namespace exactccd
