@@ -76,7 +76,7 @@ def test_the_command_gives_the_same_contact(cli, tmp_path):
          "motion": {"pivot": [0, 0, 0], "cayley": [0, 0, -0.5]}},
         {"kind": "static", "positions": positions.tolist(), "triangles": faces.tolist()}]}))
     done = run([cli, "rigid", "--json", scene_file])
-    assert done.returncode == 1, done.stderr
+    assert done.returncode == 0, done.stderr  # a contact is an answer, not a disagreement
     contact = json.loads(done.stdout)["steps"][0]["contact"]
     first = cube_and_wall(7, [0, 0, -0.5]).earliest_contact().contact
     assert (contact["s_lo"], contact["s_hi"]) == (first.toi_lo, first.toi_hi)
