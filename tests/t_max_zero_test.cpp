@@ -215,6 +215,24 @@ TEST(TMaxZero, SceneAnswersTheStateAtTheStart) {
   ASSERT_TRUE(std::any_of(step.contacts.begin(), step.contacts.end(), [&](const SceneContact& c) {
     return c.pair.first_mesh == sliding || c.pair.second_mesh == sliding;
   }));
+  // Over the whole step, SceneContact::starts_within is the state at the start as well, in
+  // find_contacts and earliest_contact (which decides its contacts again with the caller's
+  // options) alike; with a wide toi_width too.
+  std::size_t started = 0;
+  for (const double width : {0.0, 0.5}) {
+    whole_step.ccd.toi_width = width;
+    for (const SceneContact& c : scene.find_contacts(whole_step).contacts) {
+      const RationalQuery q = c.pair.type == QueryType::vertex_face
+                                  ? to_rational(scene.vertex_face_query(c.pair))
+                                  : to_rational(scene.edge_edge_query(c.pair));
+      EXPECT_EQ(c.starts_within, cgal_within_at_start(q, 0.0)) << describe(q);
+      started += c.starts_within;
+    }
+    const EarliestContact first = scene.earliest_contact(whole_step);
+    EXPECT_TRUE(first.contact.starts_within);  // resting contact: the earliest is at t = 0
+  }
+  EXPECT_GT(started, 0u);
+  whole_step.ccd.toi_width = 0.0;
   for (const double delta : {0.0, 1e-12}) {
     SCOPED_TRACE(delta);
     SceneOptions o;

@@ -189,6 +189,8 @@ void bind_scene(py::module_& m) {
                     "body; for a rigid body, pure rotations of one rate or no rotation).")
       .def_readonly("time_lo", &SceneContact::time_lo)
       .def_readonly("time_hi", &SceneContact::time_hi)
+      .def_readonly("starts_within", &SceneContact::starts_within,
+                    "The pair already meets (is within min_separation) at the start: exact.")
       .def("__repr__", &contact_repr);
 
   py::class_<SceneStats>(m, "SceneStats")

@@ -154,6 +154,9 @@ struct SceneContact {
   bool has_time = false;
   double time_lo = kNoContactToi;  ///< lower end of the contact time (see has_time)
   double time_hi = kNoContactToi;  ///< upper end of the contact time (see has_time)
+  /// The pair already meets (is within SceneOptions::min_separation) at the start of the step:
+  /// its CcdResult::starts_within, exact.
+  bool starts_within = false;
 };
 
 /// Work counts of one call (for statistics and benchmarks).
