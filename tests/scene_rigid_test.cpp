@@ -112,7 +112,8 @@ RigidReference brute_force(const Bodies& bodies, const CcdOptions& ccd, bool sel
       ++r.rigid_fixed;
     else
       ++r.rigid_deformable;
-    if (c.collides) r.contacts.push_back({p, c.toi_lo, c.toi_hi, has_time, time_lo, time_hi});
+    if (c.collides)
+      r.contacts.push_back({p, c.toi_lo, c.toi_hi, has_time, c.starts_within, time_lo, time_hi});
   };
   for (MeshId a = 0; a < n; ++a)
     for (std::int32_t v = 0; v < bodies[a].start.rows(); ++v)

@@ -428,7 +428,7 @@ struct Decision {
   double time_lo = kNoContactToi, time_hi = kNoContactToi;
 
   SceneContact contact(const ScenePair& p) const {
-    return {p, ccd.toi_lo, ccd.toi_hi, has_time, time_lo, time_hi, ccd.starts_within};
+    return {p, ccd.toi_lo, ccd.toi_hi, has_time, ccd.starts_within, time_lo, time_hi};
   }
 };
 

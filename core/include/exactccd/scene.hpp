@@ -152,11 +152,11 @@ struct SceneContact {
   /// (time = s), and RigidCcdResult::has_time for a pair involving one (pure rotations of one
   /// common rate, or no rotation).
   bool has_time = false;
+  /// The pair already meets (is within SceneOptions::min_separation) at the start of the step:
+  /// its CcdResult::starts_within, exact. (Beside has_time: the struct stays 64 bytes.)
+  bool starts_within = false;
   double time_lo = kNoContactToi;  ///< lower end of the contact time (see has_time)
   double time_hi = kNoContactToi;  ///< upper end of the contact time (see has_time)
-  /// The pair already meets (is within SceneOptions::min_separation) at the start of the step:
-  /// its CcdResult::starts_within, exact.
-  bool starts_within = false;
 };
 
 /// Work counts of one call (for statistics and benchmarks).
