@@ -7,7 +7,7 @@
 //   bytes 193-200 t_max, a double
 //   bytes 201-208 toi_width, a double
 //
-// Properties (ccd.hpp, types.hpp): non-finite coordinates, t_max outside (0, 1] and a negative
+// Properties (ccd.hpp, types.hpp): non-finite coordinates, t_max outside [0, 1] and a negative
 // or non-finite toi_width throw std::invalid_argument in every mode; otherwise the default
 // path equals the exact path (fuzz_support.hpp, check_default_equals_exact).
 #include <cstddef>

@@ -102,12 +102,12 @@ inline std::string describe(QueryType type, const Points& v, const CcdOptions& o
 inline std::string describe(const CcdResult& r) { return test::describe_result(r); }
 
 /// Whether the API rejects the options or the coordinates with std::invalid_argument, as
-/// ccd.hpp says it must for non-finite coordinates, t_max outside (0, 1], and a negative or
-/// non-finite toi_width.
+/// ccd.hpp says it must for non-finite coordinates, t_max outside [0, 1] (0 is the state at
+/// t = 0), and a negative or non-finite toi_width.
 inline bool invalid_input(const Points& v, const CcdOptions& o) {
   for (const Eigen::Vector3d& p : v)
     if (!p.allFinite()) return true;
-  return !(o.t_max > 0.0 && o.t_max <= 1.0) || !(o.toi_width >= 0.0) ||
+  return !(o.t_max >= 0.0 && o.t_max <= 1.0) || !(o.toi_width >= 0.0) ||
          !std::isfinite(o.toi_width);
 }
 

@@ -93,7 +93,8 @@ def main():
     v = doubles_of(rows_of(QUERIES[1][1], QUERIES[1][2]))
     write("ccd_api", "bad_nan_coordinate.bin", api_input(0, [float("nan")] + v[1:]))
     write("ccd_api", "bad_infinite_coordinate.bin", api_input(0, v[:5] + [float("inf")] + v[6:]))
-    write("ccd_api", "bad_t_max_zero.bin", api_input(0, v, t_max=0.0))
+    write("ccd_api", "t_max_zero.bin", api_input(0, v, t_max=0.0))  # the state at t = 0
+    write("ccd_api", "bad_t_max_negative.bin", api_input(0, v, t_max=-2.0 ** -1074))
     write("ccd_api", "bad_t_max_above_one.bin", api_input(0, v, t_max=1.5))
     write("ccd_api", "bad_negative_width.bin", api_input(0, v, width=-1e-9))
     write("ccd_api", "subnormal_coordinates.bin",
