@@ -122,12 +122,9 @@ CcdResult linear_ccd(const Query& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
   if (!predicates::all_finite(query)) to_rational(query);  // throws, naming the coordinate
-  const auto decide = [](const Query& q, const CcdOptions& o) {
-    return o.min_separation > 0 ? pipeline::certified_ccd<pipeline::LinearSeparation<Query>>(q, o)
-                                : pipeline::certified_ccd<pipeline::LinearContact<Query>>(q, o);
-  };
-  if (options.t_max == 0.0) return pipeline::decided_at_start(query, options, decide);
-  return pipeline::with_start_flag(decide(query, options), query, options, decide);
+  if (options.min_separation > 0)
+    return pipeline::certified_ccd<pipeline::LinearSeparation<Query>>(query, options);
+  return pipeline::certified_ccd<pipeline::LinearContact<Query>>(query, options);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "exactccd/types.hpp"
 #include "filters/filter_outcome.hpp"
+#include "pipeline/held_at_start.hpp"
 
 namespace exactccd::pipeline {
 
@@ -37,7 +38,8 @@ inline Stage stage_of(const FilterOutcome& f) {
 ///   after_filter(q, o, f, stage) -> CcdResult   the exact path from what f certified.
 /// Options are validated and the FP state set by the caller (the public entry points).
 template <class Problem>
-CcdResult certified_ccd(const typename Problem::Query& query, const CcdOptions& options) {
+CcdResult certified_ccd_over_step(const typename Problem::Query& query,
+                                  const CcdOptions& options) {
   switch (options.mode) {
     case Mode::float_only: return Problem::float_only(query, options);
     case Mode::exact: return Problem::exact(query, options);
@@ -65,6 +67,17 @@ CcdResult certified_ccd(const typename Problem::Query& query, const CcdOptions& 
   r.toi_hi = f.toi_hi;
   if (!f.toi_final) std::tie(r.toi_lo, r.toi_hi) = Problem::tighten(stage, r.toi_lo, r.toi_hi, options);
   return r;
+}
+
+/// The instance's answer with the state at the start (held_at_start.hpp): t_max = 0 asks for
+/// it alone, and every answer says whether t* = 0 (CcdResult::starts_within).
+template <class Problem>
+CcdResult certified_ccd(const typename Problem::Query& query, const CcdOptions& options) {
+  const auto decide = [](const typename Problem::Query& q, const CcdOptions& o) {
+    return certified_ccd_over_step<Problem>(q, o);
+  };
+  if (options.t_max == 0.0) return decided_at_start(query, options, decide);
+  return with_start_flag(decide(query, options), query, options, decide);
 }
 
 }  // namespace exactccd::pipeline

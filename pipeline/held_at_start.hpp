@@ -1,7 +1,8 @@
 // t_max = 0 asks for the state at t = 0 alone (a barrier method's shrinking step reaches it).
-// Every entry point answers it as the same query with every point held at its t = 0 position,
-// decided over [0, 1]: nothing moves, so the primitives meet (or come within delta) at some t in
-// [0, 1] iff they do at t = 0, and then the earliest such t is 0 exactly. The held query copies
+// The one pipeline (dispatch.hpp, certified_ccd) and the rational exact_ccd answer it as the
+// same query with every point held at its t = 0 position, decided over [0, 1]: nothing moves, so
+// the primitives meet (or come within delta) at some t in [0, 1] iff they do at t = 0, and then
+// the earliest such t is 0 exactly. The held query copies
 // coordinates, never computes them, so it is exactly that query.
 // PROOF: proofs/api_reductions.md#t-max-zero
 #pragma once
@@ -58,7 +59,6 @@ template <class Query, class Decide>
   r.starts_within = r.collides;
   return r;
 }
-
 
 /// r, the answer over [0, t_max], with CcdResult::starts_within: t* = 0. Free in all but one
 /// case: no contact or toi_lo > 0 gives t* > 0 (or none), toi_hi = 0 gives t* = 0; only

@@ -1,5 +1,5 @@
-// Point-edge and point-point CCD, in 3D and in the plane: thin reductions to edge_edge_ccd, whose degenerate (zero-length)
-// segments are the points they are. Every coordinate is copied, never computed, so the reduced
+// Point-edge and point-point CCD, in 3D and in the plane: thin reductions to edge_edge_ccd,
+// whose degenerate (zero-length) segments are the points they are. Every coordinate is copied, never computed, so the reduced
 // query has exactly the original motion and hence the same contact set, verdict and TOI.
 // PROOF: proofs/api_reductions.md#point-primitives
 #include "exactccd/ccd.hpp"

@@ -19,7 +19,6 @@
 #include "exact/arithmetic/rational.hpp"
 #include "pipeline/ccd_options_check.hpp"
 #include "pipeline/dispatch.hpp"
-#include "pipeline/held_at_start.hpp"
 #include "pipeline/rigid_problems.hpp"
 
 namespace exactccd {
@@ -177,12 +176,9 @@ RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
   const predicates::DoubleRigidQuery q = checked_query(query);
-  const auto decide = [](const predicates::DoubleRigidQuery& query, const CcdOptions& o) {
-    return o.min_separation > 0 ? pipeline::certified_ccd<pipeline::RigidSeparation>(query, o)
-                                : pipeline::certified_ccd<pipeline::RigidContact>(query, o);
-  };
-  if (options.t_max == 0.0) return with_time(pipeline::decided_at_start(q, options, decide), q);
-  return with_time(pipeline::with_start_flag(decide(q, options), q, options, decide), q);
+  if (options.min_separation > 0)
+    return with_time(pipeline::certified_ccd<pipeline::RigidSeparation>(q, options), q);
+  return with_time(pipeline::certified_ccd<pipeline::RigidContact>(q, options), q);
 }
 
 }  // namespace

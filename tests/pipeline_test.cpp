@@ -35,6 +35,10 @@ struct FakeQuery {
   double value = 0.0;
 };
 
+/// The fake query has no motion to hold: the state at its start is itself (held_at_start.hpp,
+/// found by argument-dependent lookup).
+FakeQuery held_at_start(FakeQuery q) { return q; }
+
 struct FakeStage {
   int tightened = 0;
 };
