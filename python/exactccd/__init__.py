@@ -50,8 +50,11 @@ from ._exactccd import (
     exact_ccd,
     find_query_files,
     query_type_from_path,
+    StepResult,
     rigid_edge_edge_ccd,
+    rigid_edge_edge_collision_free_step,
     rigid_vertex_face_ccd,
+    rigid_vertex_face_collision_free_step,
 )
 from .query_files import (
     QueryData,
@@ -62,7 +65,7 @@ from .query_files import (
 
 for _type in (CcdResult, EarliestContact, InputError, RigidCcdResult, RigidMotion, Scene,
               SceneContact, ScenePair, SceneResult,
-              SceneStats):
+              SceneStats, StepResult):
     _type.__module__ = __name__
 
 # Arguments of the wrong type: one line naming the public function, not pybind11's listing.
@@ -77,6 +80,10 @@ query_type_from_path = _arguments.one_line_type_errors(query_type_from_path,
 rigid_edge_edge_ccd = _arguments.one_line_type_errors(rigid_edge_edge_ccd, "rigid_edge_edge_ccd")
 rigid_vertex_face_ccd = _arguments.one_line_type_errors(rigid_vertex_face_ccd,
                                                         "rigid_vertex_face_ccd")
+rigid_edge_edge_collision_free_step = _arguments.one_line_type_errors(
+    rigid_edge_edge_collision_free_step, "rigid_edge_edge_collision_free_step")
+rigid_vertex_face_collision_free_step = _arguments.one_line_type_errors(
+    rigid_vertex_face_collision_free_step, "rigid_vertex_face_collision_free_step")
 
 
 def _options(function, t_max, toi_width, mode, min_separation):
@@ -89,12 +96,14 @@ def _options(function, t_max, toi_width, mode, min_separation):
 __all__ = [
     "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES",
     "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene",
-    "SceneContact", "ScenePair", "SceneResult", "SceneStats", "edge_edge_ccd",
-    "edge_edge_ccd_batch", "exact_ccd",
-    "find_query_files", "point_edge_ccd", "point_edge_ccd_batch", "point_point_ccd",
-    "point_point_ccd_batch", "query_type_from_path", "read_query_file", "read_query_file_exact",
-    "rigid_edge_edge_ccd", "rigid_vertex_face_ccd", "vertex_face_ccd", "vertex_face_ccd_batch",
-    "write_query_file",
+    "SceneContact", "ScenePair", "SceneResult", "SceneStats", "StepResult", "edge_edge_ccd",
+    "edge_edge_ccd_batch", "edge_edge_collision_free_step", "exact_ccd",
+    "find_query_files", "point_edge_ccd", "point_edge_ccd_batch",
+    "point_edge_collision_free_step", "point_point_ccd", "point_point_ccd_batch",
+    "point_point_collision_free_step", "query_type_from_path", "read_query_file",
+    "read_query_file_exact", "rigid_edge_edge_ccd", "rigid_edge_edge_collision_free_step",
+    "rigid_vertex_face_ccd", "rigid_vertex_face_collision_free_step", "vertex_face_ccd",
+    "vertex_face_ccd_batch", "vertex_face_collision_free_step", "write_query_file",
 ]
 
 
@@ -212,6 +221,60 @@ def point_point_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
     return _exactccd._edge_edge_ccd(
         rows[_POINT_POINT_AS_EDGE_EDGE],
         *_options("point_point_ccd", t_max, toi_width, mode, min_separation))
+
+
+def _step_options(function, t_max, min_separation, conservative_rescaling):
+    """The step's options, type-checked (their domains are checked by the library)."""
+    return (_arguments.real(function, "t_max", t_max),
+            _arguments.real(function, "min_separation", min_separation),
+            _arguments.real(function, "conservative_rescaling", conservative_rescaling))
+
+
+def vertex_face_collision_free_step(*points, t_max: float = 1.0, min_separation: float = 0.0,
+                                    conservative_rescaling: float = 0.8) -> StepResult:
+    """The collision-free step of a barrier method: a certified time `step` in [0, t_max] such
+    that the vertex stays farther than min_separation from the triangle, and at least
+    `effective_separation` = delta + (1 - s)(d0 - delta) from it, on all of [0, step] (d0 the
+    distance at t = 0, s = conservative_rescaling in (0, 1], as ipc-toolkit's). Points as
+    vertex_face_ccd. `limited`: the pair comes within effective_separation before t_max;
+    `starts_within` (exact): within min_separation at t = 0, step 0.
+    """
+    function = "vertex_face_collision_free_step"
+    return _exactccd._collision_free_step(
+        _points(points, _VERTEX_FACE_ROWS), "vf",
+        *_step_options(function, t_max, min_separation, conservative_rescaling))
+
+
+def edge_edge_collision_free_step(*points, t_max: float = 1.0, min_separation: float = 0.0,
+                                  conservative_rescaling: float = 0.8) -> StepResult:
+    """The collision-free step of two segments; points as edge_edge_ccd, the rest as
+    vertex_face_collision_free_step."""
+    function = "edge_edge_collision_free_step"
+    return _exactccd._collision_free_step(
+        _points(points, _EDGE_EDGE_ROWS), "ee",
+        *_step_options(function, t_max, min_separation, conservative_rescaling))
+
+
+def point_edge_collision_free_step(*points, t_max: float = 1.0, min_separation: float = 0.0,
+                                   conservative_rescaling: float = 0.8) -> StepResult:
+    """The collision-free step of a point and a segment, in 3D or in the plane; points as
+    point_edge_ccd, the rest as vertex_face_collision_free_step."""
+    function = "point_edge_collision_free_step"
+    rows = _point_query(function, points, _POINT_EDGE_ROWS)
+    return _exactccd._collision_free_step(
+        rows[_POINT_EDGE_AS_EDGE_EDGE], "ee",
+        *_step_options(function, t_max, min_separation, conservative_rescaling))
+
+
+def point_point_collision_free_step(*points, t_max: float = 1.0, min_separation: float = 0.0,
+                                    conservative_rescaling: float = 0.8) -> StepResult:
+    """The collision-free step of two points, in 3D or in the plane; points as
+    point_point_ccd, the rest as vertex_face_collision_free_step."""
+    function = "point_point_collision_free_step"
+    rows = _point_query(function, points, _POINT_POINT_ROWS)
+    return _exactccd._collision_free_step(
+        rows[_POINT_POINT_AS_EDGE_EDGE], "ee",
+        *_step_options(function, t_max, min_separation, conservative_rescaling))
 
 
 class BatchResult(NamedTuple):

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "exactccd/rational_query.hpp"
+#include "exactccd/rigid.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::python {
@@ -53,6 +54,10 @@ inline QueryPoints points_of(const double* data) {
   return points;
 }
 
+/// A rigid query side's motion: a RigidMotion, or a (vertices, 3) array of end positions
+/// (straight lines); ValueError naming `what` otherwise.
+SideMotion side_motion(const py::handle& motion, int vertices, const char* what);
+
 /// The stage names in code order (to_string(Stage) for codes 0, 1, ... until "unknown").
 const std::vector<std::string>& stage_names();
 
@@ -63,5 +68,6 @@ void bind_query_files(py::module_& m);
 void bind_scene(py::module_& m);
 void bind_oracle(py::module_& m);
 void bind_rigid(py::module_& m);
+void bind_step(py::module_& m);
 
 }  // namespace exactccd::python

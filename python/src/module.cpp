@@ -16,4 +16,5 @@ PYBIND11_MODULE(_exactccd, m) {
   python::bind_scene(m);
   python::bind_oracle(m);
   python::bind_rigid(m);
+  python::bind_step(m);
 }

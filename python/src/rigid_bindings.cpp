@@ -9,9 +9,6 @@
 
 namespace exactccd::python {
 
-namespace {
-
-/// A side's motion: a RigidMotion, or an (n, 3) array of end positions (straight lines).
 SideMotion side_motion(const py::handle& motion, int vertices, const char* what) {
   if (py::isinstance<RigidMotion>(motion)) return SideMotion::of(motion.cast<RigidMotion>());
   const DoubleArray ends = as_double_array(motion, {vertices, 3}, what);
@@ -22,6 +19,8 @@ SideMotion side_motion(const py::handle& motion, int vertices, const char* what)
                                          ends.data()[3 * i + 2]);
   return side;
 }
+
+namespace {
 
 /// A motion's vector, refused at once when not finite (a NaN motion would fail only when used).
 Eigen::Vector3d finite_vector_of(const py::handle& object, const char* what) {

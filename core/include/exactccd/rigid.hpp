@@ -114,10 +114,10 @@ struct RigidCcdResult {
 ///        coplanarity polynomial's
 ///        roots in [0, t_max] found in double arithmetic, the inclusion test at each in doubles;
 ///        it misses contacts and reports false ones; toi_lo == toi_hi, the root, and
-///        decided_by == Stage::float_only). min_separation must be 0.
+///        decided_by == Stage::float_only); min_separation delta >= 0 (the first s at which the
+///        primitives come within Euclidean distance delta, exactly).
 /// \return the verdict, the TOI enclosure in s, and in time when defined.
-/// \throws std::invalid_argument for non-finite input, a non-zero min_separation or options
-///         outside their domain.
+/// \throws std::invalid_argument for non-finite input or options outside their domain.
 EXACTCCD_API RigidCcdResult vertex_face_ccd(const RigidVertexFaceQuery& query,
                                             const CcdOptions& options = {});
 

@@ -1,0 +1,165 @@
+// The collision-free step (step.hpp): one minimum-separation query of the one pipeline at an
+// effective separation delta' between delta and the start's distance. The distance at t = 0 is
+// only estimated in doubles; the query itself certifies the choice (it reports whether the pair
+// starts within delta'), and a wrong estimate only lowers delta' towards delta.
+// PROOF: proofs/api_reductions.md#collision-free-step
+#include "exactccd/step.hpp"
+
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "core/float_only/tolerance_ccd.hpp"
+#include "core/predicates/fp_environment.hpp"
+#include "exactccd/ccd.hpp"
+#include "pipeline/ccd_options_check.hpp"
+
+namespace exactccd {
+
+namespace {
+
+void check_step_options(const StepOptions& o) {
+  if (!(o.t_max >= 0.0 && o.t_max <= 1.0)) throw_bad_option("t_max must lie in [0, 1]", o.t_max);
+  if (!(o.min_separation >= 0.0) || !std::isfinite(o.min_separation))
+    throw_bad_option("min_separation must be finite and >= 0", o.min_separation);
+  if (!(o.conservative_rescaling > 0.0 && o.conservative_rescaling <= 1.0))
+    throw_bad_option("conservative_rescaling must lie in (0, 1]", o.conservative_rescaling);
+}
+
+/// The step from the certified answer `r` of the query at separation `effective`.
+StepResult step_of(const CcdResult& r, double effective, const StepOptions& o) {
+  StepResult out;
+  out.effective_separation = effective;
+  if (!r.collides) {
+    out.step = o.t_max;
+    return out;
+  }
+  out.limited = true;
+  if (r.starts_within) {  // only reached at effective == delta
+    out.step = 0.0;
+    out.starts_within = true;
+    return out;
+  }
+  out.step = r.toi_lo;
+  // At delta itself toi_lo may be t* (the distance there is delta): one double earlier is
+  // strictly before it. Above delta, the distance at t* is delta' > delta already.
+  if (effective == o.min_separation && r.toi_lo == r.toi_hi)
+    out.step = std::nextafter(r.toi_lo, 0.0);
+  return out;
+}
+
+/// The step, given the distance at t = 0 estimated in doubles and `decide`, the certified
+/// query at given options.
+template <class Decide>
+StepResult collision_free(double start_distance, const StepOptions& o, Decide&& decide) {
+  check_step_options(o);
+  const double delta = o.min_separation;
+  double excess = (1.0 - o.conservative_rescaling) * (start_distance - delta);
+  if (!(excess > 0.0)) excess = 0.0;  // also NaN: no estimate, no margin
+  if (excess > std::numeric_limits<double>::max()) excess = std::numeric_limits<double>::max();
+  while (!std::isfinite(delta + excess)) excess *= 0.5;
+  CcdOptions options;
+  options.t_max = o.t_max;
+  // Lower delta' towards delta, each time by a squared factor (2, 4, 16, 256, ...), so that
+  // even an estimate wrong by a factor 2^2000 costs a dozen queries.
+  double factor = 2.0;
+  for (;;) {
+    const double effective = delta + excess;
+    options.min_separation = effective;
+    const CcdResult r = decide(options);
+    if (!r.starts_within || effective == delta) return step_of(r, effective, o);
+    excess /= factor;
+    factor = factor > 1e150 ? std::numeric_limits<double>::infinity() : factor * factor;
+  }
+}
+
+Eigen::Vector3d in_plane_z0(const Eigen::Vector2d& v) { return {v.x(), v.y(), 0.0}; }
+
+/// The distance estimates: plain doubles, rounded to nearest (nothing relies on them).
+double start_distance(const VertexFaceQuery& q) {
+  const predicates::RoundToNearestGuard nearest;
+  return methods::point_triangle_distance(q.p_t0, q.a_t0, q.b_t0, q.c_t0);
+}
+double start_distance(const EdgeEdgeQuery& q) {
+  const predicates::RoundToNearestGuard nearest;
+  return methods::segment_segment_distance(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0);
+}
+double start_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& e0,
+                      const Eigen::Vector3d& e1) {
+  const predicates::RoundToNearestGuard nearest;
+  return methods::point_segment_distance(p, e0, e1);
+}
+double start_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
+  const predicates::RoundToNearestGuard nearest;
+  return (p - q).norm();
+}
+double start_distance(const RigidVertexFaceQuery& q) {
+  const predicates::RoundToNearestGuard nearest;
+  return methods::point_triangle_distance(q.p, q.a, q.b, q.c);
+}
+double start_distance(const RigidEdgeEdgeQuery& q) {
+  const predicates::RoundToNearestGuard nearest;
+  return methods::segment_segment_distance(q.ea0, q.ea1, q.eb0, q.eb1);
+}
+
+/// The certified query of each kind (the public entry points: each validates and owns the
+/// FP state).
+CcdResult ccd_of(const VertexFaceQuery& q, const CcdOptions& c) { return vertex_face_ccd(q, c); }
+CcdResult ccd_of(const EdgeEdgeQuery& q, const CcdOptions& c) { return edge_edge_ccd(q, c); }
+CcdResult ccd_of(const PointEdgeQuery& q, const CcdOptions& c) { return point_edge_ccd(q, c); }
+CcdResult ccd_of(const PointPointQuery& q, const CcdOptions& c) { return point_point_ccd(q, c); }
+CcdResult ccd_of(const PointEdgeQuery2d& q, const CcdOptions& c) {
+  return point_edge_ccd_2d(q, c);
+}
+CcdResult ccd_of(const PointPointQuery2d& q, const CcdOptions& c) {
+  return point_point_ccd_2d(q, c);
+}
+CcdResult ccd_of(const RigidVertexFaceQuery& q, const CcdOptions& c) {
+  return vertex_face_ccd(q, c).ccd;
+}
+CcdResult ccd_of(const RigidEdgeEdgeQuery& q, const CcdOptions& c) {
+  return edge_edge_ccd(q, c).ccd;
+}
+
+/// The step of a query whose CCD function returns a CcdResult.
+template <class Query>
+StepResult step_of_query(const Query& q, double start, const StepOptions& o) {
+  return collision_free(start, o, [&](const CcdOptions& c) { return ccd_of(q, c); });
+}
+
+}  // namespace
+
+StepResult collision_free_step(const VertexFaceQuery& q, const StepOptions& o) {
+  return step_of_query(q, start_distance(q), o);
+}
+
+StepResult collision_free_step(const EdgeEdgeQuery& q, const StepOptions& o) {
+  return step_of_query(q, start_distance(q), o);
+}
+
+StepResult collision_free_step(const PointEdgeQuery& q, const StepOptions& o) {
+  return step_of_query(q, start_distance(q.p_t0, q.e0_t0, q.e1_t0), o);
+}
+
+StepResult collision_free_step(const PointPointQuery& q, const StepOptions& o) {
+  return step_of_query(q, start_distance(q.p_t0, q.q_t0), o);
+}
+
+StepResult collision_free_step(const PointEdgeQuery2d& q, const StepOptions& o) {
+  return step_of_query(
+      q, start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.e0_t0), in_plane_z0(q.e1_t0)), o);
+}
+
+StepResult collision_free_step(const PointPointQuery2d& q, const StepOptions& o) {
+  return step_of_query(q, start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.q_t0)), o);
+}
+
+StepResult collision_free_step(const RigidVertexFaceQuery& q, const StepOptions& o) {
+  return step_of_query(q, start_distance(q), o);
+}
+
+StepResult collision_free_step(const RigidEdgeEdgeQuery& q, const StepOptions& o) {
+  return step_of_query(q, start_distance(q), o);
+}
+
+}  // namespace exactccd
