@@ -5,6 +5,7 @@
 // PROOF: proofs/api_reductions.md#collision-free-step
 #include "exactccd/step.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -24,39 +25,48 @@ void check_step_options(const StepOptions& o) {
     throw_bad_option("min_separation must be finite and >= 0", o.min_separation);
   if (!(o.conservative_rescaling > 0.0 && o.conservative_rescaling <= 1.0))
     throw_bad_option("conservative_rescaling must lie in (0, 1]", o.conservative_rescaling);
+  if (!(o.max_margin >= 0.0))
+    throw_bad_option("max_margin must be >= 0 (+infinity: no cap)", o.max_margin);
 }
 
-/// The step from the certified answer `r` of the query at separation `effective`.
-StepResult step_of(const CcdResult& r, double effective, const StepOptions& o) {
+/// The step from `limit`, the certified answer at separation `effective` (delta'), or, when
+/// given, from `robust`, the answer at delta' + slack (which does not start within it).
+StepResult step_of(const CcdResult& limit, const CcdResult* robust, double effective,
+                   const StepOptions& o) {
   StepResult out;
   out.effective_separation = effective;
-  if (!r.collides) {
+  if (!limit.collides) {
     out.step = o.t_max;
     return out;
   }
   out.limited = true;
-  if (r.starts_within) {  // only reached at effective == delta
+  if (limit.starts_within) {  // only reached at effective == delta
     out.step = 0.0;
     out.starts_within = true;
     return out;
   }
-  out.step = r.toi_lo;
+  if (robust) {  // the distance is >= delta' + slack before robust->toi_lo
+    out.step = robust->toi_lo;
+    return out;
+  }
+  out.step = limit.toi_lo;
   // At delta itself toi_lo may be t* (the distance there is delta): one double earlier is
   // strictly before it. Above delta, the distance at t* is delta' > delta already.
-  if (effective == o.min_separation && r.toi_lo == r.toi_hi)
-    out.step = std::nextafter(r.toi_lo, 0.0);
+  if (effective == o.min_separation && limit.toi_lo == limit.toi_hi)
+    out.step = std::nextafter(limit.toi_lo, 0.0);
   return out;
 }
 
-/// The step, given the distance at t = 0 estimated in doubles and `decide`, the certified
-/// query at given options.
+/// The step, given the distance at t = 0 estimated in doubles, the rounding slack and
+/// `decide`, the certified query at given options.
 template <class Decide>
-StepResult collision_free(double start_distance, const StepOptions& o, Decide&& decide) {
+StepResult collision_free(double start_distance, double slack, const StepOptions& o,
+                          Decide&& decide) {
   check_step_options(o);
   const double delta = o.min_separation;
   double excess = (1.0 - o.conservative_rescaling) * (start_distance - delta);
   if (!(excess > 0.0)) excess = 0.0;  // also NaN: no estimate, no margin
-  if (excess > std::numeric_limits<double>::max()) excess = std::numeric_limits<double>::max();
+  excess = std::min({excess, o.max_margin, std::numeric_limits<double>::max()});
   while (!std::isfinite(delta + excess)) excess *= 0.5;
   CcdOptions options;
   options.t_max = o.t_max;
@@ -67,10 +77,32 @@ StepResult collision_free(double start_distance, const StepOptions& o, Decide&& 
     const double effective = delta + excess;
     options.min_separation = effective;
     const CcdResult r = decide(options);
-    if (!r.starts_within || effective == delta) return step_of(r, effective, o);
-    excess /= factor;
-    factor = factor > 1e150 ? std::numeric_limits<double>::infinity() : factor * factor;
+    if (r.starts_within && effective != delta) {
+      excess /= factor;
+      factor = factor > 1e150 ? std::numeric_limits<double>::infinity() : factor * factor;
+      continue;
+    }
+    // Limited: step where the distance is still delta' + slack, so that the caller's rounded
+    // positions there stay beyond delta' (one more query, for limited pairs only).
+    if (r.collides && !r.starts_within && slack > 0) {
+      options.min_separation = effective + slack;
+      if (std::isfinite(options.min_separation)) {
+        const CcdResult robust = decide(options);
+        if (!robust.starts_within) return step_of(r, &robust, effective, o);
+      }
+    }
+    return step_of(r, nullptr, effective, o);
   }
+}
+
+/// The rounding slack of a linear query whose largest |coordinate| is `largest`: twice a bound
+/// on how far rounding the positions at a time t to doubles, by x0 + t (x1 - x0) or
+/// (1 - t) x0 + t x1, can move the distance (proofs/api_reductions.md#collision-free-step).
+double rounding_slack(double largest) { return std::ldexp(largest, -46) + std::ldexp(1.0, -1070); }
+
+template <class... Vectors>
+double largest_coordinate(const Vectors&... v) {
+  return std::max({v.cwiseAbs().maxCoeff()...});
 }
 
 Eigen::Vector3d in_plane_z0(const Eigen::Vector2d& v) { return {v.x(), v.y(), 0.0}; }
@@ -123,43 +155,56 @@ CcdResult ccd_of(const RigidEdgeEdgeQuery& q, const CcdOptions& c) {
 
 /// The step of a query whose CCD function returns a CcdResult.
 template <class Query>
-StepResult step_of_query(const Query& q, double start, const StepOptions& o) {
-  return collision_free(start, o, [&](const CcdOptions& c) { return ccd_of(q, c); });
+StepResult step_of_query(const Query& q, double start, double slack, const StepOptions& o) {
+  return collision_free(start, slack, o, [&](const CcdOptions& c) { return ccd_of(q, c); });
 }
 
 }  // namespace
 
 StepResult collision_free_step(const VertexFaceQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q), o);
+  return step_of_query(q, start_distance(q),
+                       rounding_slack(largest_coordinate(q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1,
+                                                         q.a_t1, q.b_t1, q.c_t1)),
+                       o);
 }
 
 StepResult collision_free_step(const EdgeEdgeQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q), o);
+  return step_of_query(q, start_distance(q),
+                       rounding_slack(largest_coordinate(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0,
+                                                         q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1)),
+                       o);
 }
 
 StepResult collision_free_step(const PointEdgeQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q.p_t0, q.e0_t0, q.e1_t0), o);
+  return step_of_query(
+      q, start_distance(q.p_t0, q.e0_t0, q.e1_t0),
+      rounding_slack(largest_coordinate(q.p_t0, q.e0_t0, q.e1_t0, q.p_t1, q.e0_t1, q.e1_t1)), o);
 }
 
 StepResult collision_free_step(const PointPointQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q.p_t0, q.q_t0), o);
+  return step_of_query(q, start_distance(q.p_t0, q.q_t0),
+                       rounding_slack(largest_coordinate(q.p_t0, q.q_t0, q.p_t1, q.q_t1)), o);
 }
 
 StepResult collision_free_step(const PointEdgeQuery2d& q, const StepOptions& o) {
   return step_of_query(
-      q, start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.e0_t0), in_plane_z0(q.e1_t0)), o);
+      q, start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.e0_t0), in_plane_z0(q.e1_t0)),
+      rounding_slack(largest_coordinate(q.p_t0, q.e0_t0, q.e1_t0, q.p_t1, q.e0_t1, q.e1_t1)), o);
 }
 
 StepResult collision_free_step(const PointPointQuery2d& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.q_t0)), o);
+  return step_of_query(q, start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.q_t0)),
+                       rounding_slack(largest_coordinate(q.p_t0, q.q_t0, q.p_t1, q.q_t1)), o);
 }
 
+// Rigid positions are formed by the rigid motion's rational formula, whose rounding the slack
+// above does not bound: no slack.
 StepResult collision_free_step(const RigidVertexFaceQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q), o);
+  return step_of_query(q, start_distance(q), 0.0, o);
 }
 
 StepResult collision_free_step(const RigidEdgeEdgeQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q), o);
+  return step_of_query(q, start_distance(q), 0.0, o);
 }
 
 }  // namespace exactccd

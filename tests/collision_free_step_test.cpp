@@ -175,6 +175,55 @@ TEST(CollisionFreeStep, RepeatedStepsNeverReachContact) {
   }
 }
 
+// ipc-toolkit's "Repeated CCD", as its test runs it: step to the returned time, form the
+// positions there in doubles as x0 + step (x1 - x0), and ask again over the motion from the
+// start to them. The rounding slack keeps that second motion beyond delta': not limited, step 1.
+TEST(CollisionFreeStep, AskingAgainUpToTheRoundedStepIsNotLimited) {
+  std::mt19937_64 rng(test_seed("collision_free_step_repeat"));
+  int repeated = 0;
+  for (int n = 0; n < 200; ++n) {
+    const QueryType type = n % 2 ? QueryType::edge_edge : QueryType::vertex_face;
+    const RationalQuery q = approaching_query(rng, type);
+    StepOptions o;
+    o.min_separation = n % 3 == 0 ? 1e-4 : 0.0;
+    o.conservative_rescaling = n % 4 == 0 ? 1.0 : 0.8;
+    const StepResult r = step_of(q, o);
+    if (!r.limited || r.starts_within) continue;
+    RationalQuery again = q;
+    for (int i = 0; i < 4; ++i) {
+      const Vector3d x0 = to_vector(q.points[i]), x1 = to_vector(q.points[4 + i]);
+      const Vector3d xt = (x1 - x0) * r.step + x0;
+      again.points[4 + i] = {mpq_class(xt.x()), mpq_class(xt.y()), mpq_class(xt.z())};
+    }
+    SCOPED_TRACE(describe(q) + " step " + std::to_string(r.step));
+    const StepResult second = step_of(again, o);
+    EXPECT_FALSE(second.limited);
+    EXPECT_EQ(second.step, 1.0);
+    EXPECT_EQ(second.effective_separation, r.effective_separation);
+    ++repeated;
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(repeated, 80);
+}
+
+// max_margin caps the margin (ipc-toolkit's Tight Inclusion caps it at 1e-4): points 1 apart
+// meeting at t = 1/2 step to 0.4 by the rule (s = 0.8 keeps 0.2 of the gap), to just before
+// 1/2 - 5e-5 with the cap.
+TEST(CollisionFreeStep, MaxMarginCapsTheMargin) {
+  const PointPointQuery q{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(2, 0, 0),
+                          Vector3d(1, 0, 0)};
+  StepResult r = collision_free_step(q);
+  EXPECT_TRUE(r.limited);
+  EXPECT_NEAR(r.step, 0.4, 1e-12);
+  EXPECT_LT(r.step, 0.4);
+  StepOptions o;
+  o.max_margin = 1e-4;
+  r = collision_free_step(q, o);
+  EXPECT_EQ(r.effective_separation, 1e-4);
+  EXPECT_NEAR(r.step, 0.5 - 0.5e-4, 1e-12);
+  EXPECT_LT(r.step, 0.5 - 0.5e-4);
+}
+
 TEST(CollisionFreeStep, PointKindsAreTheirEdgeEdgeQueries) {
   std::mt19937_64 rng(test_seed("collision_free_step_points"));
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -298,6 +347,11 @@ TEST(CollisionFreeStep, OptionsOutsideTheirDomainAreErrors) {
   o.conservative_rescaling = 1.5;
   EXPECT_EQ(error_of(o), "exactccd: conservative_rescaling must lie in (0, 1], got 1.5");
   o.conservative_rescaling = std::nan("");
+  EXPECT_NE(error_of(o), "");
+  o = {};
+  o.max_margin = -1;
+  EXPECT_EQ(error_of(o), "exactccd: max_margin must be >= 0 (+infinity: no cap), got -1");
+  o.max_margin = std::nan("");
   EXPECT_NE(error_of(o), "");
   o = {};
   o.t_max = 2;

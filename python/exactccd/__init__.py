@@ -223,58 +223,64 @@ def point_point_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
         *_options("point_point_ccd", t_max, toi_width, mode, min_separation))
 
 
-def _step_options(function, t_max, min_separation, conservative_rescaling):
+def _step_options(function, t_max, min_separation, conservative_rescaling, max_margin):
     """The step's options, type-checked (their domains are checked by the library)."""
     return (_arguments.real(function, "t_max", t_max),
             _arguments.real(function, "min_separation", min_separation),
-            _arguments.real(function, "conservative_rescaling", conservative_rescaling))
+            _arguments.real(function, "conservative_rescaling", conservative_rescaling),
+            _arguments.real(function, "max_margin", max_margin))
 
 
 def vertex_face_collision_free_step(*points, t_max: float = 1.0, min_separation: float = 0.0,
-                                    conservative_rescaling: float = 0.8) -> StepResult:
+                                    conservative_rescaling: float = 0.8,
+                                    max_margin: float = float("inf")) -> StepResult:
     """The collision-free step of a barrier method: a certified time `step` in [0, t_max] such
     that the vertex stays farther than min_separation from the triangle, and at least
     `effective_separation` = delta + (1 - s)(d0 - delta) from it, on all of [0, step] (d0 the
-    distance at t = 0, s = conservative_rescaling in (0, 1], as ipc-toolkit's). Points as
+    distance at t = 0, s = conservative_rescaling in (0, 1], as ipc-toolkit's; max_margin caps
+    the margin (1 - s)(d0 - delta), as ipc-toolkit's Tight Inclusion does at 1e-4). Points as
     vertex_face_ccd. `limited`: the pair comes within effective_separation before t_max;
     `starts_within` (exact): within min_separation at t = 0, step 0.
     """
     function = "vertex_face_collision_free_step"
     return _exactccd._collision_free_step(
         _points(points, _VERTEX_FACE_ROWS), "vf",
-        *_step_options(function, t_max, min_separation, conservative_rescaling))
+        *_step_options(function, t_max, min_separation, conservative_rescaling, max_margin))
 
 
 def edge_edge_collision_free_step(*points, t_max: float = 1.0, min_separation: float = 0.0,
-                                  conservative_rescaling: float = 0.8) -> StepResult:
+                                  conservative_rescaling: float = 0.8,
+                                  max_margin: float = float("inf")) -> StepResult:
     """The collision-free step of two segments; points as edge_edge_ccd, the rest as
     vertex_face_collision_free_step."""
     function = "edge_edge_collision_free_step"
     return _exactccd._collision_free_step(
         _points(points, _EDGE_EDGE_ROWS), "ee",
-        *_step_options(function, t_max, min_separation, conservative_rescaling))
+        *_step_options(function, t_max, min_separation, conservative_rescaling, max_margin))
 
 
 def point_edge_collision_free_step(*points, t_max: float = 1.0, min_separation: float = 0.0,
-                                   conservative_rescaling: float = 0.8) -> StepResult:
+                                   conservative_rescaling: float = 0.8,
+                                  max_margin: float = float("inf")) -> StepResult:
     """The collision-free step of a point and a segment, in 3D or in the plane; points as
     point_edge_ccd, the rest as vertex_face_collision_free_step."""
     function = "point_edge_collision_free_step"
     rows = _point_query(function, points, _POINT_EDGE_ROWS)
     return _exactccd._collision_free_step(
         rows[_POINT_EDGE_AS_EDGE_EDGE], "ee",
-        *_step_options(function, t_max, min_separation, conservative_rescaling))
+        *_step_options(function, t_max, min_separation, conservative_rescaling, max_margin))
 
 
 def point_point_collision_free_step(*points, t_max: float = 1.0, min_separation: float = 0.0,
-                                    conservative_rescaling: float = 0.8) -> StepResult:
+                                    conservative_rescaling: float = 0.8,
+                                    max_margin: float = float("inf")) -> StepResult:
     """The collision-free step of two points, in 3D or in the plane; points as
     point_point_ccd, the rest as vertex_face_collision_free_step."""
     function = "point_point_collision_free_step"
     rows = _point_query(function, points, _POINT_POINT_ROWS)
     return _exactccd._collision_free_step(
         rows[_POINT_POINT_AS_EDGE_EDGE], "ee",
-        *_step_options(function, t_max, min_separation, conservative_rescaling))
+        *_step_options(function, t_max, min_separation, conservative_rescaling, max_margin))
 
 
 class BatchResult(NamedTuple):

@@ -116,3 +116,14 @@ def test_bad_options_and_points_are_clear_errors():
     points[1, 0] = np.nan
     with pytest.raises(ValueError, match="non-finite coordinate in a_t0"):
         exactccd.vertex_face_collision_free_step(points)
+
+
+def test_max_margin_caps_the_margin_as_tight_inclusion_does():
+    # Points 1 apart meeting at t = 1/2: 0.4 by the rule, just before 0.5 - 5e-5 with the cap.
+    args = ((0, 0, 0), (1, 0, 0), (2, 0, 0), (1, 0, 0))
+    assert exactccd.point_point_collision_free_step(*args).step == pytest.approx(0.4, abs=1e-12)
+    r = exactccd.point_point_collision_free_step(*args, max_margin=1e-4)
+    assert r.effective_separation == 1e-4
+    assert r.step == pytest.approx(0.5 - 0.5e-4, abs=1e-12) and r.step < 0.5 - 0.5e-4
+    with pytest.raises(ValueError, match="max_margin must be >= 0"):
+        exactccd.point_point_collision_free_step(*args, max_margin=-1.0)

@@ -11,6 +11,8 @@
 /// conservative rescaling (\ref collision_free_step "the step").
 #pragma once
 
+#include <limits>
+
 #include "exactccd/export.hpp"
 #include "exactccd/rigid.hpp"
 #include "exactccd/types.hpp"
@@ -25,27 +27,38 @@ struct StepOptions {
   /// delta >= 0, finite: the distance the primitives must keep (0: they must not touch).
   double min_separation = 0.0;
   /// s in (0, 1]: the step keeps the fraction 1 - s of the start's gap d0 - delta as a margin
-  /// (ipc-toolkit's conservative_rescaling; its default 0.8 keeps 20 %). 1 keeps no margin
-  /// beyond the exact answer: the step is then strictly before the first time within delta.
+  /// (ipc-toolkit's conservative_rescaling; its default 0.8 keeps 20 %). 1 keeps no margin: the
+  /// step is then before the first time within delta.
   double conservative_rescaling = 0.8;
+  /// The largest margin kept, an absolute distance >= 0 (+infinity, the default: no cap, as
+  /// ipc-toolkit's interface states the rule; its Tight Inclusion narrow phase caps the margin
+  /// at 1e-4, which gives longer steps when the start's gap is large).
+  double max_margin = std::numeric_limits<double>::infinity();
 };
 
 /// The answer of collision_free_step. Certified in every field.
 struct StepResult {
   /// A time in [0, t_max] up to which the motion is safe: the distance between the closed
   /// primitives is > min_separation, and >= effective_separation, at every t in [0, step]
-  /// (step = 0 when starts_within).
+  /// (step = 0 when starts_within). When limited, for linear queries, it is moreover >=
+  /// effective_separation + eta there (unless the start itself is within that), eta = 2^-46
+  /// times the largest |coordinate| of the query plus 2^-1070: the caller's rounding of the
+  /// positions at `step` (x0 + step (x1 - x0) or (1 - step) x0 + step x1 in doubles) moves the
+  /// distance by less than eta / 2, so the straight motion from the start to the rounded
+  /// positions stays beyond effective_separation, and asking again over it is not limited
+  /// (ipc-toolkit's "Repeated CCD").
   double step = 1.0;
   /// True iff the primitives come within effective_separation at some t in [0, t_max] (then
-  /// step is a certified lower bound of the first such time); false: step = t_max.
+  /// step is before the first such time); false: step = t_max.
   bool limited = false;
   /// True iff the distance at t = 0 is <= min_separation (exact): the pair is already in
   /// contact, step = 0 and limited = true.
   bool starts_within = false;
-  /// delta' in [min_separation, d0): delta + (1 - s)(d0 - delta) for d0 estimated in doubles,
-  /// lowered towards delta until the primitives certifiably do not start within it. Equal to
-  /// min_separation only when no double between delta and d0 was found (or s = 1, or
-  /// starts_within); then the distance is still > delta on [0, step].
+  /// delta' in [min_separation, d0): delta + min((1 - s)(d0 - delta), max_margin) for d0 the
+  /// distance at t = 0 estimated in doubles, lowered towards delta until the primitives
+  /// certifiably do not start within it. Equal to min_separation when s = 1, when no double
+  /// between delta and d0 was found, or when starts_within; then the distance is still
+  /// > delta on [0, step].
   double effective_separation = 0.0;
 };
 
