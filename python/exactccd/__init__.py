@@ -37,6 +37,7 @@ from ._exactccd import (
     MODE_NAMES,
     STAGE_NAMES,
     CcdResult,
+    ContactGeometry,
     __version__,
     EarliestContact,
     InputError,
@@ -63,7 +64,7 @@ from .query_files import (
     write_query_file,
 )
 
-for _type in (CcdResult, EarliestContact, InputError, RigidCcdResult, RigidMotion, Scene,
+for _type in (CcdResult, ContactGeometry, EarliestContact, InputError, RigidCcdResult, RigidMotion, Scene,
               SceneContact, ScenePair, SceneResult,
               SceneStats, StepResult):
     _type.__module__ = __name__
@@ -86,6 +87,46 @@ rigid_vertex_face_collision_free_step = _arguments.one_line_type_errors(
     rigid_vertex_face_collision_free_step, "rigid_vertex_face_collision_free_step")
 
 
+CcdResult.contact = property(
+    lambda self: self.__dict__.get("contact"),
+    doc="The contact geometry (ContactGeometry) when asked for with contact=True and the query "
+        "collides; None otherwise.")
+
+
+def _with_contact(function, result, rows, type, contact, mode, min_separation, keep=None):
+    """result, with its contact geometry attached when asked for (contact=True) and it collides.
+    keep: the rows of the edge-edge parameters that the point kinds report."""
+    if not contact:
+        return result
+    if _exactccd._mode_name(mode) == "float_only":
+        raise ValueError(f"{function}(): contact=True needs a certified mode (\"filtered\" or "
+                         f"\"exact\"): float_only's time of impact is not an enclosure")
+    if min_separation != 0:
+        raise ValueError(f"{function}(): contact=True gives the geometry of contact "
+                         f"(min_separation=0); got min_separation={min_separation!r}")
+    if result.collides:
+        geometry = _exactccd._contact_geometry(rows, type, result)
+        result.__dict__["contact"] = geometry if keep is None else _PointContact(geometry, keep)
+    return result
+
+
+class _PointContact:
+    """The contact geometry of a point query: the edge-edge geometry with only the segment's
+    parameter (point-edge) or none (point-point)."""
+
+    def __init__(self, geometry, keep):
+        self._geometry, self._keep = geometry, keep
+
+    parameters = property(lambda self: self._geometry.parameters[self._keep])
+    normal = property(lambda self: self._geometry.normal)
+    point = property(lambda self: self._geometry.point)
+    kind = property(lambda self: self._geometry.kind)
+    normal_oriented = property(lambda self: self._geometry.normal_oriented)
+
+    def __repr__(self):
+        return repr(self._geometry)
+
+
 def _options(function, t_max, toi_width, mode, min_separation):
     """The options, type-checked (their domains are checked by the library)."""
     return (_arguments.real(function, "t_max", t_max),
@@ -94,7 +135,7 @@ def _options(function, t_max, toi_width, mode, min_separation):
             _arguments.real(function, "min_separation", min_separation))
 
 __all__ = [
-    "__version__", "BatchResult", "CcdResult", "EarliestContact", "InputError", "MODE_NAMES",
+    "__version__", "BatchResult", "CcdResult", "ContactGeometry", "EarliestContact", "InputError", "MODE_NAMES",
     "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene",
     "SceneContact", "ScenePair", "SceneResult", "SceneStats", "StepResult", "edge_edge_ccd",
     "edge_edge_ccd_batch", "edge_edge_collision_free_step", "exact_ccd",
@@ -122,7 +163,8 @@ _EDGE_EDGE_ROWS = ("ea0_t0", "ea1_t0", "eb0_t0", "eb1_t0", "ea0_t1", "ea1_t1", "
 
 
 def vertex_face_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
-                    mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
+                    mode: str = "filtered", min_separation: float = 0.0,
+                    contact: bool = False) -> CcdResult:
     """Vertex p against the closed triangle (a, b, c), over [0, t_max].
 
     vertex_face_ccd(p_t0, a_t0, b_t0, c_t0, p_t1, a_t1, b_t1, c_t1) with 3-vectors, or
@@ -132,24 +174,30 @@ def vertex_face_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
     "default", its old name, is accepted too), "exact" (the rational path only) or "float_only"
     (uncertified, for comparison). min_separation: delta >= 0,
     finite; collides iff the vertex comes within Euclidean distance delta of the triangle, the
-    TOI the earliest such time (0: contact).
+    TOI the earliest such time (0: contact). contact=True: a colliding result's `contact` is the
+    certified contact geometry at the exact time of impact (ContactGeometry: barycentric
+    coordinates as `parameters`, `normal`, `point`, `kind`); certified modes, min_separation 0.
     Raises ValueError for non-finite coordinates or options outside their domain.
     """
-    return _exactccd._vertex_face_ccd(
-        _points(points, _VERTEX_FACE_ROWS),
-        *_options("vertex_face_ccd", t_max, toi_width, mode, min_separation))
+    rows = _points(points, _VERTEX_FACE_ROWS)
+    options = _options("vertex_face_ccd", t_max, toi_width, mode, min_separation)
+    return _with_contact("vertex_face_ccd", _exactccd._vertex_face_ccd(rows, *options), rows,
+                         "vf", contact, options[2], options[3])
 
 
 def edge_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
-                  mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
+                  mode: str = "filtered", min_separation: float = 0.0,
+                  contact: bool = False) -> CcdResult:
     """Closed segment [ea0, ea1] against the closed segment [eb0, eb1], over [0, t_max].
 
     edge_edge_ccd(ea0_t0, ea1_t0, eb0_t0, eb1_t0, ea0_t1, ea1_t1, eb0_t1, eb1_t1) or
-    edge_edge_ccd(points) with one (8, 3) array; options as vertex_face_ccd.
+    edge_edge_ccd(points) with one (8, 3) array; options as vertex_face_ccd (contact=True: the
+    parameter on each edge as `parameters`, the normal from edge b towards edge a).
     """
-    return _exactccd._edge_edge_ccd(
-        _points(points, _EDGE_EDGE_ROWS),
-        *_options("edge_edge_ccd", t_max, toi_width, mode, min_separation))
+    rows = _points(points, _EDGE_EDGE_ROWS)
+    options = _options("edge_edge_ccd", t_max, toi_width, mode, min_separation)
+    return _with_contact("edge_edge_ccd", _exactccd._edge_edge_ccd(rows, *options), rows, "ee",
+                         contact, options[2], options[3])
 
 
 _POINT_EDGE_ROWS = ("p_t0", "e0_t0", "e1_t0", "p_t1", "e0_t1", "e1_t1")
@@ -195,7 +243,8 @@ def _point_query(function, points, names):
 
 
 def point_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
-                   mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
+                   mode: str = "filtered", min_separation: float = 0.0,
+                   contact: bool = False) -> CcdResult:
     """Point p against the closed segment [e0, e1], in 3D or in the plane, over [0, t_max].
 
     point_edge_ccd(p_t0, e0_t0, e1_t0, p_t1, e0_t1, e1_t1) with 3-vectors or 2-vectors, or one
@@ -203,24 +252,25 @@ def point_edge_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
     as vertex_face_ccd. The edge-edge query of the segment [p, p] against [e0, e1], which has
     the same contact set (C++: point_edge_ccd, point_edge_ccd_2d).
     """
-    rows = _point_query("point_edge_ccd", points, _POINT_EDGE_ROWS)
-    return _exactccd._edge_edge_ccd(
-        rows[_POINT_EDGE_AS_EDGE_EDGE],
-        *_options("point_edge_ccd", t_max, toi_width, mode, min_separation))
+    rows = _point_query("point_edge_ccd", points, _POINT_EDGE_ROWS)[_POINT_EDGE_AS_EDGE_EDGE]
+    options = _options("point_edge_ccd", t_max, toi_width, mode, min_separation)
+    return _with_contact("point_edge_ccd", _exactccd._edge_edge_ccd(rows, *options), rows, "ee",
+                         contact, options[2], options[3], keep=slice(1, 2))
 
 
 def point_point_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
-                    mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
+                    mode: str = "filtered", min_separation: float = 0.0,
+                    contact: bool = False) -> CcdResult:
     """Points p and q, in 3D or in the plane, over [0, t_max]: they meet (or come within
     min_separation) at some t.
 
     point_point_ccd(p_t0, q_t0, p_t1, q_t1) with 3-vectors or 2-vectors, or one (4, 3) or (4, 2)
     array. Options as vertex_face_ccd (C++: point_point_ccd, point_point_ccd_2d).
     """
-    rows = _point_query("point_point_ccd", points, _POINT_POINT_ROWS)
-    return _exactccd._edge_edge_ccd(
-        rows[_POINT_POINT_AS_EDGE_EDGE],
-        *_options("point_point_ccd", t_max, toi_width, mode, min_separation))
+    rows = _point_query("point_point_ccd", points, _POINT_POINT_ROWS)[_POINT_POINT_AS_EDGE_EDGE]
+    options = _options("point_point_ccd", t_max, toi_width, mode, min_separation)
+    return _with_contact("point_point_ccd", _exactccd._edge_edge_ccd(rows, *options), rows, "ee",
+                         contact, options[2], options[3], keep=slice(0, 0))
 
 
 def _step_options(function, t_max, min_separation, conservative_rescaling, max_margin):

@@ -5,6 +5,7 @@
 
 #include "bindings.hpp"
 #include "exactccd/ccd.hpp"
+#include "exactccd/contact.hpp"
 
 namespace exactccd::python {
 
@@ -27,13 +28,69 @@ CcdResult decide_points(const py::handle& points, double t_max, double toi_width
   return decide(p, options);
 }
 
+/// k enclosures as a (k, 2) array of [lo, hi].
+py::array_t<double> enclosures(const Enclosure* e, int k) {
+  py::array_t<double> out({k, 2});
+  auto v = out.mutable_unchecked<2>();
+  for (int i = 0; i < k; ++i) {
+    v(i, 0) = e[i].lo;
+    v(i, 1) = e[i].hi;
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_ccd(py::module_& m) {
+  py::class_<ContactGeometry>(m, "ContactGeometry",
+                              "The contact geometry at the exact earliest contact time t*, every "
+                              "field a certified enclosure (C++: exactccd::contact_geometry).")
+      .def_property_readonly(
+          "parameters",
+          [](const ContactGeometry& g) {
+            return enclosures(g.parameters.data(), g.parameter_count);
+          },
+          "(k, 2) array of [lo, hi]: vertex-face the barycentric coordinates of the contact "
+          "point with respect to (a, b, c); edge-edge the parameter on each edge (0 at ea0, eb0).")
+      .def_property_readonly(
+          "normal", [](const ContactGeometry& g) { return enclosures(g.normal.data(), 3); },
+          "(3, 2) array of [lo, hi]: the unit normal from the face (edge b) towards the vertex "
+          "(edge a) just before contact when normal_oriented; otherwise the unoriented direction "
+          "or [-1, 1].")
+      .def_property_readonly(
+          "point", [](const ContactGeometry& g) { return enclosures(g.point.data(), 3); },
+          "(3, 2) array of [lo, hi]: the contact point in space.")
+      .def_property_readonly("kind", [](const ContactGeometry& g) { return to_string(g.kind); },
+                             "\"point\", \"at_start\" or \"unresolved\" (ContactKind).")
+      .def_readonly("normal_oriented", &ContactGeometry::normal_oriented)
+      .def("__repr__", [](const ContactGeometry& g) {
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "ContactGeometry(kind='%s', normal_oriented=%s, normal=[[%.17g, %.17g], "
+                      "[%.17g, %.17g], [%.17g, %.17g]])",
+                      to_string(g.kind), g.normal_oriented ? "True" : "False", g.normal[0].lo,
+                      g.normal[0].hi, g.normal[1].lo, g.normal[1].hi, g.normal[2].lo,
+                      g.normal[2].hi);
+        return std::string(text);
+      });
+  m.def(
+      "_contact_geometry",
+      [](const py::handle& points, const std::string& type, const CcdResult& result) {
+        const DoubleArray array = as_double_array(points, {8, 3}, "the query's points");
+        const QueryPoints p = points_of(array.data());
+        if (parse_query_type(type) == QueryType::vertex_face)
+          return contact_geometry(
+              VertexFaceQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, result);
+        return contact_geometry(EdgeEdgeQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]},
+                                result);
+      },
+      py::arg("points"), py::arg("type"), py::arg("result"));
+
   py::class_<CcdResult>(m, "CcdResult",
                         "The result of one query: collides, [toi_lo, toi_hi] (the certified "
                         "enclosure of the earliest contact time when collides) and the stage "
-                        "that decided it.")
+                        "that decided it.",
+                        py::dynamic_attr())
       .def_readonly("collides", &CcdResult::collides)
       .def_readonly("toi_lo", &CcdResult::toi_lo)
       .def_readonly("toi_hi", &CcdResult::toi_hi)

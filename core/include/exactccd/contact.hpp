@@ -1,0 +1,94 @@
+/// \file
+/// Where and which way: the contact geometry of a colliding query at its exact earliest contact
+/// time t*, as certified enclosures (\ref contact_geometry "contact geometry").
+///
+/// A simulator that finds a contact must respond to it, and the configuration is at its most
+/// degenerate exactly there (the distance is zero), so recomputing the contact point and normal
+/// in plain doubles at toi_lo loses the guarantee at the last step. contact_geometry() encloses
+/// them instead, by interval arithmetic with directed rounding over the certified enclosure
+/// [toi_lo, toi_hi] of t*: every interval contains the true value at t*.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "exactccd/export.hpp"
+#include "exactccd/types.hpp"
+
+namespace exactccd {
+
+/// A closed interval [lo, hi] of doubles that contains a real number.
+struct Enclosure {
+  double lo = 0.0;  ///< lower end
+  double hi = 0.0;  ///< upper end
+};
+
+/// What the enclosures of a ContactGeometry say.
+enum class ContactKind : std::uint8_t {
+  /// The contact set at t* is one point, whose parameters are unique; every enclosure is certified
+  /// and the normal is oriented as documented (ContactGeometry::normal).
+  point,
+  /// The primitives already touch at t = 0 (t* = 0): "just before t*" does not exist, so the
+  /// normal is not oriented by the approach; the parameters and the point are as for `point`,
+  /// and the normal is the unoriented direction (ContactGeometry::normal).
+  at_start,
+  /// The enclosures over [toi_lo, toi_hi] do not separate the configuration from a degenerate
+  /// one (a triangle degenerate or nearly so at t*, parallel or nearly parallel edges, a
+  /// tangential approach whose side is not certain, a point against a segment in 3D, whose
+  /// normal the rules leave undefined). Every enclosure is still certified, but parameters may
+  /// be the whole [0, 1] and the normal the whole [-1, 1]^3; normal_oriented says which.
+  unresolved,
+};
+
+/// The kind's name: "point", "at_start" or "unresolved" (a static string). Never throws.
+/// \param kind a contact kind.
+/// \return its name.
+EXACTCCD_API const char* to_string(ContactKind kind) noexcept;
+
+/// The contact geometry of a colliding query at t*, every field a certified enclosure.
+struct ContactGeometry {
+  /// See ContactKind.
+  ContactKind kind = ContactKind::unresolved;
+  /// Vertex-face: the barycentric coordinates of the contact point with respect to (a, b, c)
+  /// (3 of them, each in [0, 1]). Edge-edge: the parameter on edge a (0 at ea0, 1 at ea1), then
+  /// on edge b (0 at eb0); a zero-length edge (a point) has parameter [0, 0].
+  std::array<Enclosure, 3> parameters{};
+  /// How many of `parameters` are used: 3 (vertex-face) or 2 (edge-edge).
+  int parameter_count = 0;
+  /// The contact point in space at t* (vertex-face: the vertex; edge-edge: the point where the
+  /// edges meet).
+  std::array<Enclosure, 3> point{};
+  /// The unit contact normal, pointing from the face (edge b) towards the vertex (edge a) just
+  /// before t*: vertex-face the triangle's normal at t*, edge-edge the normalised cross product
+  /// of the edges at t*, each oriented towards the side the vertex (edge a) came from; a point
+  /// against a point: the direction from q to p just before t* (minus their relative velocity);
+  /// a point against a segment in the plane z = 0: the in-plane perpendicular of the segment,
+  /// towards the side the point came from. When !normal_oriented it is the unoriented
+  /// direction (vertex-face: along (b - a) x (c - a), edge-edge: along (ea1 - ea0) x
+  /// (eb1 - eb0)) if that is certified, else [-1, 1]^3.
+  std::array<Enclosure, 3> normal{{{-1.0, 1.0}, {-1.0, 1.0}, {-1.0, 1.0}}};
+  /// True when `normal` is the oriented normal described above.
+  bool normal_oriented = false;
+};
+
+/// The contact geometry of vertex p against the triangle (a, b, c) at the exact earliest
+/// contact time t* that `result` encloses (\ref contact_geometry).
+/// \param query the query that was decided.
+/// \param result its certified answer (vertex_face_ccd with min_separation 0, any toi_width).
+/// \return the enclosures at t*.
+/// \throws std::invalid_argument for a non-finite coordinate, or when `result` does not collide
+///         or its enclosure is not in [0, 1].
+EXACTCCD_API ContactGeometry contact_geometry(const VertexFaceQuery& query,
+                                              const CcdResult& result);
+
+/// The contact geometry of the segments [ea0, ea1] and [eb0, eb1] at t* (zero-length segments
+/// are points: point-edge and point-point contact); as for vertex-face.
+/// \param query the query that was decided.
+/// \param result its certified answer (edge_edge_ccd, point_edge_ccd, point_point_ccd or their 2D
+///        forms embedded in z = 0, with min_separation 0).
+/// \return the enclosures at t*.
+/// \throws std::invalid_argument as for vertex-face.
+EXACTCCD_API ContactGeometry contact_geometry(const EdgeEdgeQuery& query,
+                                              const CcdResult& result);
+
+}  // namespace exactccd

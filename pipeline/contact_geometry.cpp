@@ -1,0 +1,281 @@
+// The contact geometry at t* (exactccd/contact.hpp): interval arithmetic with upward rounding
+// (CGAL::Interval_nt) over the certified enclosure T = [toi_lo, toi_hi] of t*. Every quantity is
+// a rational function of the positions at t, so its interval over T contains its value at t*.
+// PROOF: proofs/contact_geometry.md#enclosures
+#include "exactccd/contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "core/predicates/coplanarity_cubic.hpp"
+#include "core/predicates/interval.hpp"
+
+namespace exactccd {
+
+namespace {
+
+using predicates::FixedPoly;
+using predicates::Interval;
+using predicates::MovingPoint;
+using IVec = predicates::Vec3<Interval>;
+
+/// The 8 points of a query in the benchmark's row order.
+using Points = std::array<Eigen::Vector3d, 8>;
+
+void check_input(const Points& x, const CcdResult& r) {
+  for (const auto& v : x)
+    if (!v.allFinite())
+      throw std::invalid_argument("exactccd: contact_geometry: non-finite coordinate");
+  if (!r.collides)
+    throw std::invalid_argument("exactccd: contact_geometry needs a colliding result");
+  if (!(r.toi_lo >= 0.0 && r.toi_lo <= r.toi_hi && r.toi_hi <= 1.0))
+    throw std::invalid_argument("exactccd: contact_geometry: the result's TOI enclosure is not "
+                                "in [0, 1]");
+}
+
+/// Every coordinate scaled by the power of two 2^-e that brings the largest to [0.5, 1), when no
+/// non-zero coordinate then falls below the normal range (so the scaling is exact). Barycentric
+/// coordinates, segment parameters and unit normals do not change; the point scales back by 2^e.
+int scale_exactly(Points& x) {
+  double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+  for (const auto& v : x)
+    for (int i = 0; i < 3; ++i) {
+      const double a = std::abs(v[i]);
+      largest = std::max(largest, a);
+      if (a > 0) smallest = std::min(smallest, a);
+    }
+  if (largest == 0.0) return 0;
+  const int e = std::ilogb(largest) + 1;
+  if (std::ilogb(smallest) - e < std::numeric_limits<double>::min_exponent - 1) return 0;
+  for (auto& v : x)
+    for (int i = 0; i < 3; ++i) v[i] = std::ldexp(v[i], -e);
+  return e;
+}
+
+Interval at(const FixedPoly<Interval, 1>& x, const Interval& t) { return x.c[0] + t * x.c[1]; }
+
+IVec at(const MovingPoint<Interval>& x, const Interval& t) {
+  return {at(x.x, t), at(x.y, t), at(x.z, t)};
+}
+
+/// g'(t) over t, by Horner's rule on the derivative's coefficients.
+Interval derivative_at(const FixedPoly<Interval, 3>& g, const Interval& t) {
+  return g.c[1] + t * (2 * g.c[2] + t * (3 * g.c[3]));
+}
+
+/// +1 (-1) when g, which vanishes at t* in t, is certainly positive (negative) just before t*:
+/// g'(t*) lies in g'(t), so a certain sign of g'(t) is -sign(g) just before. 0: not certain.
+int side_just_before(const Interval& derivative) {
+  if (derivative.sup() < 0) return 1;
+  if (derivative.inf() > 0) return -1;
+  return 0;
+}
+
+/// x, known to lie in [lo, hi] at t*, intersected with it. An empty intersection would
+/// contradict the proof: a bug, never an answer.
+Enclosure within(const Interval& x, double lo, double hi) {
+  const Enclosure e{std::max(x.inf(), lo), std::min(x.sup(), hi)};
+  if (!(e.lo <= e.hi)) throw std::logic_error("exactccd: contact_geometry: empty enclosure");
+  return e;
+}
+
+/// The enclosure of a point, scaled back by 2^e. Exact unless a bound becomes subnormal; then
+/// ldexp rounds upward (the guard's mode), so the lower bound is scaled negated.
+std::array<Enclosure, 3> point_of(const IVec& p, int e) {
+  std::array<Enclosure, 3> out;
+  for (int i = 0; i < 3; ++i)
+    out[i] = {-std::ldexp(-p[i].inf(), e), std::ldexp(p[i].sup(), e)};
+  return out;
+}
+
+/// The unit vector side * v / |v| when |v| is certainly positive (else false).
+bool unit_normal(const IVec& v, int side, std::array<Enclosure, 3>* out) {
+  const Interval vv = predicates::dot(v, v);
+  if (!(vv.inf() > 0)) return false;
+  const Interval length = CGAL::sqrt(vv);
+  for (int i = 0; i < 3; ++i) (*out)[i] = within(v[i] * double(side) / length, -1.0, 1.0);
+  return true;
+}
+
+/// The box hull of a segment's enclosures: the segment's points, each in it, lie in it.
+IVec hull(const IVec& a, const IVec& b) {
+  IVec h;
+  Interval* c[3] = {&h.x, &h.y, &h.z};
+  for (int i = 0; i < 3; ++i)
+    *c[i] = Interval(std::min(a[i].inf(), b[i].inf()), std::max(a[i].sup(), b[i].sup()));
+  return h;
+}
+
+IVec intersect(const IVec& a, const IVec& b) {
+  IVec h;
+  Interval* c[3] = {&h.x, &h.y, &h.z};
+  for (int i = 0; i < 3; ++i) {
+    const Enclosure e = within(a[i], b[i].inf(), b[i].sup());
+    *c[i] = Interval(e.lo, e.hi);
+  }
+  return h;
+}
+
+/// T: [0, 0] when the primitives touch at the start (t* = 0, exact), else the TOI enclosure.
+Interval time_of(const CcdResult& r) {
+  return r.starts_within ? Interval(0.0) : Interval(r.toi_lo, r.toi_hi);
+}
+
+ContactGeometry vertex_face(Points x, const CcdResult& r) {
+  check_input(x, r);
+  const predicates::RoundingGuard upward;
+  const int e = scale_exactly(x);
+  const Interval t = time_of(r);
+  const auto p = predicates::moving_point<Interval>(x[0], x[4]),
+             a = predicates::moving_point<Interval>(x[1], x[5]),
+             b = predicates::moving_point<Interval>(x[2], x[6]),
+             c = predicates::moving_point<Interval>(x[3], x[7]);
+  const IVec P = at(p, t), A = at(a, t), B = at(b, t), C = at(c, t);
+  ContactGeometry g;
+  g.parameter_count = 3;
+  g.point = point_of(P, e);  // the contact point is the vertex
+  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 1}};
+  const IVec n = predicates::cross(B - A, C - A);
+  const Interval nn = predicates::dot(n, n);
+  if (!(nn.inf() > 0)) return g;  // degenerate or nearly: unresolved
+  // p(t*) lies in the triangle's plane, where these are its barycentric coordinates.
+  g.parameters[0] = within(predicates::dot(n, predicates::cross(B - P, C - P)) / nn, 0.0, 1.0);
+  g.parameters[1] = within(predicates::dot(n, predicates::cross(C - P, A - P)) / nn, 0.0, 1.0);
+  g.parameters[2] = within(predicates::dot(n, predicates::cross(A - P, B - P)) / nn, 0.0, 1.0);
+  if (r.starts_within) {
+    unit_normal(n, 1, &g.normal);
+    g.kind = ContactKind::at_start;
+    return g;
+  }
+  // det[b - a, c - a, p - a] = (p - a) . n: positive when p is on n's side.
+  const int side = side_just_before(
+      derivative_at(predicates::vertex_face_coplanarity_cubic(p, a, b, c), t));
+  g.normal_oriented = side != 0 && unit_normal(n, side, &g.normal);
+  if (!g.normal_oriented) unit_normal(n, 1, &g.normal);
+  g.kind = g.normal_oriented ? ContactKind::point : ContactKind::unresolved;
+  return g;
+}
+
+/// A point (edge `point_edge`, zero-length throughout) against the segment [s0, s1].
+ContactGeometry point_segment(const MovingPoint<Interval>& q, const MovingPoint<Interval>& s0,
+                              const MovingPoint<Interval>& s1, bool point_is_a, bool in_plane,
+                              const CcdResult& r, const Interval& t, int e) {
+  const IVec Q = at(q, t), S0 = at(s0, t), S1 = at(s1, t);
+  ContactGeometry g;
+  g.parameter_count = 2;
+  g.point = point_of(Q, e);
+  const IVec d = S1 - S0;
+  const Interval dd = predicates::dot(d, d);
+  const Enclosure on_segment =
+      dd.inf() > 0 ? within(predicates::dot(Q - S0, d) / dd, 0.0, 1.0) : Enclosure{0, 1};
+  g.parameters[point_is_a ? 0 : 1] = {0.0, 0.0};
+  g.parameters[point_is_a ? 1 : 0] = on_segment;
+  const bool resolved = dd.inf() > 0;
+  if (r.starts_within) {
+    g.kind = resolved ? ContactKind::at_start : ContactKind::unresolved;
+    return g;
+  }
+  if (!in_plane || !resolved) return g;  // 3D: the normal is not defined by the rules
+  // In z = 0: h(t) = (q - s0) . perp(d), perp(d) = (-d_y, d_x), vanishes at t* (q on the
+  // segment); its side just before t* orients the perpendicular from the segment to the point.
+  const IVec perp{-d.y, d.x, Interval(0.0)};
+  // h'(t) by the product rule: (q' - s0') . perp(d) + (q - s0) . perp(d').
+  const IVec dq{q.x.c[1] - s0.x.c[1], q.y.c[1] - s0.y.c[1], Interval(0.0)};
+  const IVec dd_dt{s1.x.c[1] - s0.x.c[1], s1.y.c[1] - s0.y.c[1], Interval(0.0)};
+  const IVec perp_dt{-dd_dt.y, dd_dt.x, Interval(0.0)};
+  const Interval h_dt = predicates::dot(dq, perp) + predicates::dot(Q - S0, perp_dt);
+  const int side = side_just_before(h_dt) * (point_is_a ? 1 : -1);
+  g.normal_oriented = side != 0 && unit_normal(perp, side, &g.normal);
+  g.kind = g.normal_oriented ? ContactKind::point : ContactKind::unresolved;
+  return g;
+}
+
+ContactGeometry edge_edge(Points x, const CcdResult& r) {
+  check_input(x, r);
+  const predicates::RoundingGuard upward;
+  const bool in_plane =
+      std::all_of(x.begin(), x.end(), [](const Eigen::Vector3d& v) { return v.z() == 0.0; });
+  const bool a_is_point = x[0] == x[1] && x[4] == x[5];
+  const bool b_is_point = x[2] == x[3] && x[6] == x[7];
+  const int e = scale_exactly(x);
+  const Interval t = time_of(r);
+  const auto a0 = predicates::moving_point<Interval>(x[0], x[4]),
+             a1 = predicates::moving_point<Interval>(x[1], x[5]),
+             b0 = predicates::moving_point<Interval>(x[2], x[6]),
+             b1 = predicates::moving_point<Interval>(x[3], x[7]);
+  if (a_is_point && b_is_point) {
+    // p(t) - q(t) = (t - t*) v, v the relative velocity: from q towards p before t* is -v.
+    ContactGeometry g;
+    g.parameter_count = 2;
+    g.parameters = {Enclosure{0, 0}, Enclosure{0, 0}, Enclosure{0, 0}};
+    g.point = point_of(at(a0, t), e);
+    if (r.starts_within) {
+      g.kind = ContactKind::at_start;
+      return g;
+    }
+    const IVec v{a0.x.c[1] - b0.x.c[1], a0.y.c[1] - b0.y.c[1], a0.z.c[1] - b0.z.c[1]};
+    g.normal_oriented = unit_normal(v, -1, &g.normal);
+    g.kind = g.normal_oriented ? ContactKind::point : ContactKind::unresolved;
+    return g;
+  }
+  if (a_is_point) return point_segment(a0, b0, b1, true, in_plane, r, t, e);
+  if (b_is_point) return point_segment(b0, a0, a1, false, in_plane, r, t, e);
+  const IVec A0 = at(a0, t), A1 = at(a1, t), B0 = at(b0, t), B1 = at(b1, t);
+  ContactGeometry g;
+  g.parameter_count = 2;
+  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 0}};
+  const IVec da = A1 - A0, db = B1 - B0, m = predicates::cross(da, db);
+  const Interval mm = predicates::dot(m, m);
+  if (!(mm.inf() > 0)) {  // parallel or nearly: the point lies on both segments
+    g.point = point_of(intersect(hull(A0, A1), hull(B0, B1)), e);
+    return g;
+  }
+  // a0 + s da = b0 + u db at t*: crossing with db and with da isolates s and u.
+  const IVec w = B0 - A0;
+  const Interval s = predicates::dot(predicates::cross(w, db), m) / mm;
+  const Interval u = predicates::dot(predicates::cross(w, da), m) / mm;
+  g.parameters[0] = within(s, 0.0, 1.0);
+  g.parameters[1] = within(u, 0.0, 1.0);
+  const Interval sc(g.parameters[0].lo, g.parameters[0].hi),
+      uc(g.parameters[1].lo, g.parameters[1].hi);
+  const IVec on_a{A0.x + sc * da.x, A0.y + sc * da.y, A0.z + sc * da.z};
+  const IVec on_b{B0.x + uc * db.x, B0.y + uc * db.y, B0.z + uc * db.z};
+  g.point = point_of(intersect(on_a, on_b), e);
+  if (r.starts_within) {
+    unit_normal(m, 1, &g.normal);
+    g.kind = ContactKind::at_start;
+    return g;
+  }
+  // det[a1 - a0, b0 - a0, b1 - a0] = (a0 - b0) . m: positive when edge a is on m's side.
+  const int side = side_just_before(
+      derivative_at(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), t));
+  g.normal_oriented = side != 0 && unit_normal(m, side, &g.normal);
+  if (!g.normal_oriented) unit_normal(m, 1, &g.normal);
+  g.kind = g.normal_oriented ? ContactKind::point : ContactKind::unresolved;
+  return g;
+}
+
+}  // namespace
+
+const char* to_string(ContactKind kind) noexcept {
+  switch (kind) {
+    case ContactKind::point: return "point";
+    case ContactKind::at_start: return "at_start";
+    case ContactKind::unresolved: return "unresolved";
+  }
+  return "unknown";
+}
+
+ContactGeometry contact_geometry(const VertexFaceQuery& q, const CcdResult& r) {
+  return vertex_face({q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1, q.c_t1}, r);
+}
+
+ContactGeometry contact_geometry(const EdgeEdgeQuery& q, const CcdResult& r) {
+  return edge_edge({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1},
+                   r);
+}
+
+}  // namespace exactccd

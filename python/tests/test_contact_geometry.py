@@ -1,0 +1,90 @@
+"""The contact geometry in Python (contact=True; C++: exactccd::contact_geometry): known
+contacts, the enclosures against exact rational evaluation at the ends of the TOI enclosure
+(clamped to [0, 1]: proofs/contact_geometry.md#test-criterion), every kind, and bad input."""
+
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import exactccd
+
+
+def test_vertex_falling_on_a_triangle():
+    a, b, c = (0, 0, 0), (1, 0, 0), (0, 1, 0)
+    r = exactccd.vertex_face_ccd((0.25, 0.5, 1), a, b, c, (0.25, 0.5, -1), a, b, c, contact=True)
+    g = r.contact
+    assert g.kind == "point" and g.normal_oriented
+    assert g.parameters.shape == (3, 2) and g.normal.shape == (3, 2) and g.point.shape == (3, 2)
+    assert g.parameters.tolist() == [[0.25, 0.25], [0.25, 0.25], [0.5, 0.5]]
+    assert g.normal.tolist() == [[0, 0], [0, 0], [1, 1]]
+    # From below the normal points down; without contact=True there is none.
+    r = exactccd.vertex_face_ccd((0.25, 0.5, -1), a, b, c, (0.25, 0.5, 1), a, b, c, contact=True)
+    assert r.contact.normal[2].tolist() == [-1, -1]
+    assert exactccd.vertex_face_ccd((0.25, 0.5, -1), a, b, c, (0.25, 0.5, 1), a, b, c).contact \
+        is None
+
+
+def test_edges_and_points():
+    r = exactccd.edge_edge_ccd((-1, 0, 1), (1, 0, 1), (0, -0.5, 0), (0, 1.5, 0),
+                               (-1, 0, -1), (1, 0, -1), (0, -0.5, 0), (0, 1.5, 0), contact=True)
+    assert r.contact.kind == "point"
+    assert r.contact.parameters.tolist() == [[0.5, 0.5], [0.25, 0.25]]
+    assert r.contact.normal[2].tolist() == [1, 1]
+    # Point against a segment in the plane: the segment's parameter only, the normal +y.
+    r = exactccd.point_edge_ccd((0.25, 1), (0, 0), (1, 0), (0.25, -1), (0, 0), (1, 0),
+                                contact=True)
+    assert r.contact.parameters.tolist() == [[0.25, 0.25]]
+    assert r.contact.normal[1].tolist() == [1, 1] and r.contact.kind == "point"
+    # Two points: no parameters, the normal from q towards p before contact.
+    r = exactccd.point_point_ccd((0, 0, 0), (1, 0, 0), (4, 0, 0), (1, 0, 0), contact=True)
+    assert r.contact.parameters.shape == (0, 2)
+    assert r.contact.normal[0].tolist() == [-1, -1]
+    # No contact: no geometry.
+    assert exactccd.point_point_ccd((0, 1, 0), (1, 0, 0), (4, 1, 0), (1, 0, 0),
+                                    contact=True).contact is None
+
+
+def _exact_barycentric(points, t):
+    """The barycentric coordinates of the vertex's projection at the rational t, exactly."""
+    t = Fraction(t)
+    x = [[(1 - t) * Fraction(points[i][k]) + t * Fraction(points[i + 4][k]) for k in range(3)]
+         for i in range(4)]
+    sub = lambda u, v: [u[k] - v[k] for k in range(3)]
+    cross = lambda u, v: [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                          u[0] * v[1] - u[1] * v[0]]
+    dot = lambda u, v: sum(u[k] * v[k] for k in range(3))
+    p, a, b, c = x
+    n = cross(sub(b, a), sub(c, a))
+    nn = dot(n, n)
+    return [dot(n, cross(sub(b, p), sub(c, p))) / nn, dot(n, cross(sub(c, p), sub(a, p))) / nn,
+            dot(n, cross(sub(a, p), sub(b, p))) / nn]
+
+
+def test_barycentric_enclosures_hold_exactly_on_random_crossings():
+    rng = np.random.default_rng(5)
+    checked = 0
+    for _ in range(100):
+        points = np.array([[0.2, 0.2, 0.5], [0, 0, 0], [1, 0, 0], [0, 1, 0],
+                           [0.3, 0.2, -0.5], [0, 0, 0], [1, 0, 0], [0, 1, 0]])
+        points += rng.uniform(-0.1, 0.1, (8, 3))
+        r = exactccd.vertex_face_ccd(points, contact=True)
+        if not r.collides or r.contact.kind != "point":
+            continue
+        for t in (r.toi_lo, r.toi_hi):
+            for value, (lo, hi) in zip(_exact_barycentric(points, t), r.contact.parameters):
+                clamped = min(max(value, Fraction(0)), Fraction(1))
+                assert Fraction(lo) <= clamped <= Fraction(hi)
+        assert r.contact.normal[2][0] > 0.5  # from above: up
+        checked += 1
+    assert checked > 80
+
+
+def test_contact_needs_a_certified_contact_query():
+    a, b, c = (0, 0, 0), (1, 0, 0), (0, 1, 0)
+    args = ((0.25, 0.5, 1), a, b, c, (0.25, 0.5, -1), a, b, c)
+    with pytest.raises(ValueError, match="certified mode"):
+        exactccd.vertex_face_ccd(*args, mode="float_only", contact=True)
+    with pytest.raises(ValueError, match="min_separation=0"):
+        exactccd.vertex_face_ccd(*args, min_separation=0.1, contact=True)
+    assert exactccd.vertex_face_ccd(*args, mode="exact", contact=True).contact.kind == "point"

@@ -1,0 +1,334 @@
+// The contact geometry at t* (exactccd/contact.hpp, proofs/contact_geometry.md#enclosures),
+// against exact rational evaluation, which shares no code with the library: at rational times
+// t of [toi_lo, toi_hi] (both ends and the midpoint) the barycentric coordinates and segment
+// parameters, clamped to [0, 1], lie in their enclosures (this holds for every t of the
+// enclosure of t*, t* included: proofs/contact_geometry.md#test-criterion); the normal's
+// direction at t lies in the normal's box; an oriented normal points to the side that CGAL's
+// orientation gives at toi_lo (where toi_lo < t*); the vertex at t lies in the point's box.
+// Queries: the sample queries (every colliding one in the subset), constructed contacts with a
+// known normal, degenerate ones, and bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "exactccd/ccd.hpp"
+#include "exactccd/contact.hpp"
+#include "exactccd/rational_query.hpp"
+#include "tests/test_support.hpp"
+
+namespace exactccd::test {
+namespace {
+
+using Eigen::Vector3d;
+
+struct RationalVector {
+  mpq_class x, y, z;
+};
+
+RationalVector minus(const RationalPoint& a, const RationalPoint& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+RationalVector cross(const RationalVector& a, const RationalVector& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+mpq_class dot(const RationalVector& a, const RationalVector& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+bool contains(const Enclosure& e, const mpq_class& x) {
+  return mpq_class(e.lo) <= x && x <= mpq_class(e.hi);
+}
+
+mpq_class clamp01(const mpq_class& x) { return x < 0 ? mpq_class(0) : (x > 1 ? mpq_class(1) : x); }
+
+/// lo sqrt(N) <= v <= hi sqrt(N), exactly (N > 0): the unit vector's component v / sqrt(N) lies
+/// in [lo, hi].
+bool unit_component_in(const mpq_class& v, const mpq_class& N, const Enclosure& e) {
+  const auto at_least = [&](double lo) {  // lo sqrt(N) <= v
+    const mpq_class l(lo);
+    if (l <= 0 && v >= 0) return true;
+    if (l >= 0 && v < 0) return false;
+    return l >= 0 ? l * l * N <= v * v : l * l * N >= v * v;
+  };
+  const auto at_most = [&](double hi) {  // v <= hi sqrt(N)
+    const mpq_class h(hi);
+    if (h >= 0 && v <= 0) return true;
+    if (h <= 0 && v > 0) return false;
+    return h >= 0 ? v * v <= h * h * N : v * v >= h * h * N;
+  };
+  return at_least(e.lo) && at_most(e.hi);
+}
+
+/// The normal's unoriented direction at t (vertex-face (b - a) x (c - a), edge-edge
+/// (a1 - a0) x (b1 - b0)), exactly.
+RationalVector direction_at(const RationalQuery& q, const mpq_class& t) {
+  std::array<RationalPoint, 4> x;
+  for (int i = 0; i < 4; ++i) x[i] = position_at(q, i, t);
+  if (q.type == QueryType::vertex_face) return cross(minus(x[2], x[1]), minus(x[3], x[1]));
+  return cross(minus(x[1], x[0]), minus(x[3], x[2]));
+}
+
+/// The parameters at t, exactly (the projection's barycentric coordinates; the lines' closest
+/// parameters), or false where the direction vanishes.
+bool parameters_at(const RationalQuery& q, const mpq_class& t, std::array<mpq_class, 3>* out) {
+  std::array<RationalPoint, 4> x;
+  for (int i = 0; i < 4; ++i) x[i] = position_at(q, i, t);
+  const RationalVector n = direction_at(q, t);
+  const mpq_class nn = dot(n, n);
+  if (nn == 0) return false;
+  if (q.type == QueryType::vertex_face) {
+    (*out)[0] = dot(n, cross(minus(x[2], x[0]), minus(x[3], x[0]))) / nn;
+    (*out)[1] = dot(n, cross(minus(x[3], x[0]), minus(x[1], x[0]))) / nn;
+    (*out)[2] = dot(n, cross(minus(x[1], x[0]), minus(x[2], x[0]))) / nn;
+  } else {
+    const RationalVector w = minus(x[2], x[0]), da = minus(x[1], x[0]), db = minus(x[3], x[2]);
+    (*out)[0] = dot(cross(w, db), n) / nn;
+    (*out)[1] = dot(cross(w, da), n) / nn;
+  }
+  return true;
+}
+
+ContactGeometry geometry_of(const RationalQuery& q, const CcdResult& r) {
+  std::array<Vector3d, 8> v;
+  for (int i = 0; i < 8; ++i) v[i] = to_vector(q.points[i]);
+  if (q.type == QueryType::vertex_face)
+    return contact_geometry(VertexFaceQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}, r);
+  return contact_geometry(EdgeEdgeQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]}, r);
+}
+
+/// Every promise of `g` for the colliding query q with answer r, checked exactly.
+void expect_enclosures(const RationalQuery& q, const CcdResult& r, const ContactGeometry& g) {
+  const mpq_class lo(r.toi_lo), hi(r.toi_hi);
+  const std::vector<mpq_class> times =
+      r.starts_within ? std::vector<mpq_class>{mpq_class(0)}
+                      : std::vector<mpq_class>{lo, hi, mpq_class((lo + hi) / 2)};
+  EXPECT_EQ(g.parameter_count, q.type == QueryType::vertex_face ? 3 : 2);
+  for (const mpq_class& t : times) {
+    SCOPED_TRACE("t = " + std::to_string(t.get_d()));
+    if (q.type == QueryType::vertex_face) {  // the vertex is the contact point
+      const RationalPoint p = position_at(q, 0, t);
+      EXPECT_TRUE(contains(g.point[0], p.x) && contains(g.point[1], p.y) &&
+                  contains(g.point[2], p.z));
+    }
+    if (g.kind == ContactKind::unresolved) continue;
+    std::array<mpq_class, 3> param;
+    ASSERT_TRUE(parameters_at(q, t, &param)) << "a resolved kind with a vanishing direction";
+    for (int i = 0; i < g.parameter_count; ++i)
+      EXPECT_TRUE(contains(g.parameters[i], clamp01(param[i])))
+          << "parameter " << i << " " << param[i].get_d() << " not in [" << g.parameters[i].lo
+          << ", " << g.parameters[i].hi << "]";
+    RationalVector n = direction_at(q, t);
+    const mpq_class nn = dot(n, n);
+    if (g.normal_oriented) {
+      // The side just before t*: CGAL's orientation at toi_lo, when toi_lo < t* (there the
+      // determinant is not 0; the enclosure's monotone determinant has this sign on [lo, t*)).
+      const int side = cgal_coplanarity_sign_at(q, lo);
+      if (side != 0 && !r.starts_within) {
+        if (side < 0) n = {-n.x, -n.y, -n.z};
+        EXPECT_TRUE(unit_component_in(n.x, nn, g.normal[0]) &&
+                    unit_component_in(n.y, nn, g.normal[1]) &&
+                    unit_component_in(n.z, nn, g.normal[2]))
+            << "oriented normal";
+      }
+    } else if (g.kind == ContactKind::at_start) {
+      EXPECT_TRUE(unit_component_in(n.x, nn, g.normal[0]) &&
+                  unit_component_in(n.y, nn, g.normal[1]) &&
+                  unit_component_in(n.z, nn, g.normal[2]))
+          << "unoriented normal";
+    }
+  }
+}
+
+TEST(ContactGeometry, EnclosesTheExactGeometryOnTheSampleQueries) {
+  int colliding = 0, resolved = 0;
+  for (const SampleQuery& s : scaled_sample_queries()) {
+    if (!s.truth || !all_coordinates_are_doubles(s.query)) continue;
+    const CcdResult r = double_api_ccd(s.query);
+    ASSERT_TRUE(r.collides) << s.file << ":" << s.line;
+    SCOPED_TRACE(s.file + ":" + std::to_string(s.line));
+    const ContactGeometry g = geometry_of(s.query, r);
+    ++colliding;
+    resolved += g.kind == ContactKind::point;
+    expect_enclosures(s.query, r, g);
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(colliding, 100);
+  // The sample queries are mostly degenerate by design; still, many resolve to a point.
+  EXPECT_GT(resolved, colliding / 10);
+}
+
+/// A vertex (or a segment) crossing a triangle (or a segment) at a random time: every
+/// enclosure against exact evaluation, and the normal's side against the motion.
+TEST(ContactGeometry, EnclosesTheExactGeometryOnCrossingQueries) {
+  std::mt19937_64 rng(test_seed("contact_geometry"));
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int resolved = 0;
+  for (int n = 0; n < 400; ++n) {
+    const bool vf = n % 2 == 0;
+    std::array<Vector3d, 8> x;
+    const auto v = [&] { return Vector3d(u(rng), u(rng), u(rng)); };
+    if (vf) {
+      x = {Vector3d(0.2, 0.2, 0.5) + 0.1 * v(), Vector3d(0, 0, 0) + 0.1 * v(),
+           Vector3d(1, 0, 0) + 0.1 * v(), Vector3d(0, 1, 0) + 0.1 * v(),
+           Vector3d(0.3, 0.2, -0.5) + 0.1 * v(), Vector3d(0, 0, 0) + 0.1 * v(),
+           Vector3d(1, 0, 0) + 0.1 * v(), Vector3d(0, 1, 0) + 0.1 * v()};
+    } else {
+      x = {Vector3d(-1, 0, 0.5) + 0.1 * v(), Vector3d(1, 0, 0.5) + 0.1 * v(),
+           Vector3d(0, -1, 0) + 0.1 * v(), Vector3d(0, 1, 0) + 0.1 * v(),
+           Vector3d(-1, 0, -0.5) + 0.1 * v(), Vector3d(1, 0, -0.5) + 0.1 * v(),
+           Vector3d(0, -1, 0) + 0.1 * v(), Vector3d(0, 1, 0) + 0.1 * v()};
+    }
+    if (n % 4 >= 2)  // the other direction: from below
+      for (auto& p : x) p.z() = -p.z();
+    RationalQuery q{vf ? QueryType::vertex_face : QueryType::edge_edge, {}};
+    for (int i = 0; i < 8; ++i)
+      q.points[i] = {mpq_class(x[i].x()), mpq_class(x[i].y()), mpq_class(x[i].z())};
+    const CcdResult r = double_api_ccd(q);
+    if (!r.collides) continue;
+    SCOPED_TRACE(describe(q));
+    const ContactGeometry g = geometry_of(q, r);
+    expect_enclosures(q, r, g);
+    if (g.kind == ContactKind::point) {
+      ++resolved;
+      // From above the normal points up (towards where the vertex / edge a came from).
+      const double up = n % 4 >= 2 ? -1.0 : 1.0;
+      EXPECT_GT(g.normal[2].lo * up, 0.5);
+      // Tight where well conditioned: a few units in the last place.
+      for (int i = 0; i < g.parameter_count; ++i)
+        EXPECT_LT(g.parameters[i].hi - g.parameters[i].lo, 1e-13);
+    }
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(resolved, 300);
+}
+
+TEST(ContactGeometry, KnownContacts) {
+  const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  // The vertex falls on (0.25, 0.5) at t = 1/2: barycentric (0.25, 0.25, 0.5), normal +z.
+  const VertexFaceQuery fall{Vector3d(0.25, 0.5, 1), a, b, c, Vector3d(0.25, 0.5, -1), a, b, c};
+  const CcdResult r = vertex_face_ccd(fall);
+  ASSERT_TRUE(r.collides);
+  ContactGeometry g = contact_geometry(fall, r);
+  EXPECT_EQ(g.kind, ContactKind::point);
+  EXPECT_TRUE(g.normal_oriented);
+  EXPECT_EQ(g.parameters[0].lo, 0.25);
+  EXPECT_EQ(g.parameters[0].hi, 0.25);
+  EXPECT_EQ(g.parameters[2].lo, 0.5);
+  EXPECT_EQ(g.normal[2].lo, 1.0);
+  EXPECT_EQ(g.point[2].lo, 0.0);
+  EXPECT_EQ(g.point[2].hi, 0.0);
+  // The same from below: normal -z.
+  const VertexFaceQuery rise{Vector3d(0.25, 0.5, -1), a, b, c, Vector3d(0.25, 0.5, 1), a, b, c};
+  g = contact_geometry(rise, vertex_face_ccd(rise));
+  EXPECT_EQ(g.normal[2].hi, -1.0);
+  // Edge a falls across edge b at t = 1/2: parameters (0.5, 0.25), normal +z (a x b = +z, and a
+  // comes from above).
+  const EdgeEdgeQuery cross_fall{Vector3d(-1, 0, 1), Vector3d(1, 0, 1),  Vector3d(0, -0.5, 0),
+                                 Vector3d(0, 1.5, 0), Vector3d(-1, 0, -1), Vector3d(1, 0, -1),
+                                 Vector3d(0, -0.5, 0), Vector3d(0, 1.5, 0)};
+  g = contact_geometry(cross_fall, edge_edge_ccd(cross_fall));
+  EXPECT_EQ(g.kind, ContactKind::point);
+  EXPECT_EQ(g.parameters[0].lo, 0.5);
+  EXPECT_EQ(g.parameters[1].hi, 0.25);
+  EXPECT_EQ(g.normal[2].lo, 1.0);
+  EXPECT_EQ(g.point[0].lo, 0.0);
+  EXPECT_EQ(g.point[1].hi, 0.0);
+}
+
+TEST(ContactGeometry, PointKinds) {
+  // Point-point: p from (0,0,0) to (4,0,0), q at (1,0,0): meet at 1/4, normal from q to p
+  // before contact = -x.
+  const Vector3d p0(0, 0, 0), p1(4, 0, 0), q(1, 0, 0);
+  const PointPointQuery pp{p0, q, p1, q};
+  ContactGeometry g = contact_geometry(EdgeEdgeQuery{p0, p0, q, q, p1, p1, q, q},
+                                       point_point_ccd(pp));
+  EXPECT_EQ(g.kind, ContactKind::point);
+  EXPECT_EQ(g.normal[0].lo, -1.0);
+  EXPECT_EQ(g.normal[0].hi, -1.0);
+  EXPECT_EQ(g.point[0].lo, 1.0);
+  // Point-edge in the plane: p falls from y = 1 onto [(0,0), (1,0)] at x = 0.25: parameter
+  // 0.25 on the segment, normal +y.
+  const Vector3d e0(0, 0, 0), e1(1, 0, 0), pa(0.25, 1, 0), pb(0.25, -1, 0);
+  g = contact_geometry(EdgeEdgeQuery{pa, pa, e0, e1, pb, pb, e0, e1},
+                       point_edge_ccd(PointEdgeQuery{pa, e0, e1, pb, e0, e1}));
+  EXPECT_EQ(g.kind, ContactKind::point);
+  EXPECT_EQ(g.parameters[0].hi, 0.0);
+  EXPECT_EQ(g.parameters[1].lo, 0.25);
+  EXPECT_EQ(g.normal[1].lo, 1.0);
+  // The point as edge b: the normal points from b (the point) to a (the segment): -y.
+  g = contact_geometry(EdgeEdgeQuery{e0, e1, pa, pa, e0, e1, pb, pb},
+                       edge_edge_ccd(EdgeEdgeQuery{e0, e1, pa, pa, e0, e1, pb, pb}));
+  EXPECT_EQ(g.kind, ContactKind::point);
+  EXPECT_EQ(g.parameters[0].lo, 0.25);
+  EXPECT_EQ(g.normal[1].hi, -1.0);
+  // In 3D the point-edge normal is not defined by the rules: unresolved, parameters still.
+  const Vector3d pc(0.25, 1, 1), pd(0.25, -1, -1);
+  g = contact_geometry(EdgeEdgeQuery{pc, pc, e0, e1, pd, pd, e0, e1},
+                       point_edge_ccd(PointEdgeQuery{pc, e0, e1, pd, e0, e1}));
+  EXPECT_EQ(g.kind, ContactKind::unresolved);
+  EXPECT_FALSE(g.normal_oriented);
+  EXPECT_EQ(g.parameters[1].lo, 0.25);
+}
+
+TEST(ContactGeometry, DegenerateAndStartingContacts) {
+  const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  // Touching at the start: at_start, the unoriented normal (b - a) x (c - a) = +z.
+  const VertexFaceQuery start{Vector3d(0.25, 0.25, 0), a, b, c, Vector3d(0.25, 0.25, -1), a, b, c};
+  ContactGeometry g = contact_geometry(start, vertex_face_ccd(start));
+  EXPECT_EQ(g.kind, ContactKind::at_start);
+  EXPECT_FALSE(g.normal_oriented);
+  EXPECT_EQ(g.normal[2].lo, 1.0);
+  EXPECT_EQ(g.parameters[1].lo, 0.25);
+  // A triangle degenerate throughout (a segment): unresolved, the vertex still the point.
+  const Vector3d d(2, 0, 0);
+  const VertexFaceQuery flat{Vector3d(0.5, 1, 0), a, b, d, Vector3d(0.5, -1, 0), a, b, d};
+  g = contact_geometry(flat, vertex_face_ccd(flat));
+  EXPECT_EQ(g.kind, ContactKind::unresolved);
+  EXPECT_EQ(g.point[0].lo, 0.5);
+  EXPECT_EQ(g.point[1].lo, 0.0);
+  // Overlapping parallel edges sliding along each other: unresolved, the point in both hulls.
+  const EdgeEdgeQuery slide{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(2, 0, 0),
+                            Vector3d(3, 0, 0), Vector3d(2, 0, 0), Vector3d(3, 0, 0),
+                            Vector3d(0.5, 0, 0), Vector3d(1.5, 0, 0)};
+  const CcdResult r = edge_edge_ccd(slide);
+  ASSERT_TRUE(r.collides);
+  g = contact_geometry(slide, r);
+  EXPECT_EQ(g.kind, ContactKind::unresolved);
+  EXPECT_LE(g.point[1].lo, 0.0);
+  EXPECT_GE(g.point[1].hi, 0.0);
+}
+
+TEST(ContactGeometry, HugeAndTinyCoordinatesAreScaledExactly) {
+  for (const double scale : {0x1p-1000, 0x1p+1000}) {
+    const Vector3d a(0, 0, 0), b = Vector3d(1, 0, 0) * scale, c = Vector3d(0, 1, 0) * scale;
+    const VertexFaceQuery fall{Vector3d(0.25, 0.5, 1) * scale, a, b, c,
+                               Vector3d(0.25, 0.5, -1) * scale, a, b, c};
+    const ContactGeometry g = contact_geometry(fall, vertex_face_ccd(fall));
+    EXPECT_EQ(g.kind, ContactKind::point);
+    EXPECT_EQ(g.parameters[2].lo, 0.5);
+    EXPECT_EQ(g.parameters[2].hi, 0.5);
+    EXPECT_EQ(g.normal[2].lo, 1.0);
+    EXPECT_EQ(g.point[1].lo, 0.5 * scale);
+  }
+}
+
+TEST(ContactGeometry, BadInputIsAnError) {
+  const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), p(0.25, 0.25, 1);
+  const VertexFaceQuery apart{p, a, b, c, p, a, b, c};
+  const CcdResult none = vertex_face_ccd(apart);
+  EXPECT_THROW(contact_geometry(apart, none), std::invalid_argument);
+  CcdResult forged;
+  forged.collides = true;
+  forged.toi_lo = 0.5;
+  forged.toi_hi = 0.25;
+  EXPECT_THROW(contact_geometry(apart, forged), std::invalid_argument);
+  const VertexFaceQuery nan{Vector3d(std::nan(""), 0, 0), a, b, c, p, a, b, c};
+  forged.toi_hi = 0.75;
+  EXPECT_THROW(contact_geometry(nan, forged), std::invalid_argument);
+  EXPECT_STREQ(to_string(ContactKind::at_start), "at_start");
+}
+
+}  // namespace
+}  // namespace exactccd::test
