@@ -21,6 +21,8 @@
 #include <system_error>
 
 #include "exactccd/ccd.hpp"
+#include "exactccd/contact.hpp"
+#include "exactccd/step.hpp"
 #include "../result_text.hpp"
 
 namespace exactccd::fuzz {
@@ -157,6 +159,35 @@ inline bool check_default_equals_exact(QueryType type, const Points& v, const Cc
     constexpr double inf = std::numeric_limits<double>::infinity();
     require(exact.toi_lo == inf && exact.toi_hi == inf,
             "no contact but a finite TOI: " + describe(exact) + " on " + where);
+  }
+  if (exact.collides) {
+    // The contact geometry: computed without an error (an empty enclosure would contradict
+    // its proof and throws std::logic_error), parameters in [0, 1], the normal in [-1, 1].
+    const ContactGeometry g =
+        type == QueryType::vertex_face
+            ? contact_geometry(VertexFaceQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]},
+                               exact)
+            : contact_geometry(EdgeEdgeQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]},
+                               exact);
+    for (int i = 0; i < g.parameter_count; ++i)
+      require(0.0 <= g.parameters[i].lo && g.parameters[i].hi <= 1.0,
+              "contact parameter outside [0, 1] on " + where);
+    for (const Enclosure& e : g.normal)
+      require(-1.0 <= e.lo && e.lo <= e.hi && e.hi <= 1.0, "normal outside [-1, 1] on " + where);
+  }
+  {
+    // The collision-free step: in [0, t_max], and limited whenever the pair collides.
+    StepOptions step_options;
+    step_options.t_max = options.t_max;
+    const StepResult step =
+        type == QueryType::vertex_face
+            ? collision_free_step(VertexFaceQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]},
+                                  step_options)
+            : collision_free_step(EdgeEdgeQuery{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]},
+                                  step_options);
+    require(0.0 <= step.step && step.step <= options.t_max, "step outside [0, t_max] on " + where);
+    require(!exact.collides || step.limited, "a colliding pair's step is not limited on " + where);
+    require(step.starts_within == exact.starts_within, "starts_within differs on " + where);
   }
   if (options.toi_width > 0.0) {
     for (Mode mode : {Mode::filtered, Mode::exact}) {
