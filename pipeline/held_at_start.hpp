@@ -29,6 +29,13 @@ inline EdgeEdgeQuery held_at_start(EdgeEdgeQuery q) {
   return q;
 }
 
+inline PointPlaneQuery held_at_start(PointPlaneQuery q) {
+  q.p_t1 = q.p_t0;
+  q.origin_t1 = q.origin_t0;
+  q.normal_t1 = q.normal_t0;
+  return q;
+}
+
 inline RationalQuery held_at_start(RationalQuery q) {
   for (int i = 0; i < 4; ++i) q.points[4 + i] = q.points[i];
   return q;

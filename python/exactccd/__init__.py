@@ -135,12 +135,12 @@ def _options(function, t_max, toi_width, mode, min_separation):
             _arguments.real(function, "min_separation", min_separation))
 
 __all__ = [
-    "__version__", "BatchResult", "CcdResult", "ContactGeometry", "EarliestContact", "InputError", "MODE_NAMES",
+    "BatchResult", "CcdResult", "ContactGeometry", "EarliestContact", "InputError", "MODE_NAMES",
     "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene",
-    "SceneContact", "ScenePair", "SceneResult", "SceneStats", "StepResult", "edge_edge_ccd",
-    "edge_edge_ccd_batch", "edge_edge_collision_free_step", "exact_ccd",
-    "find_query_files", "point_edge_ccd", "point_edge_ccd_batch",
-    "point_edge_collision_free_step", "point_point_ccd", "point_point_ccd_batch",
+    "SceneContact", "ScenePair", "SceneResult", "SceneStats", "StepResult", "__version__",
+    "edge_edge_ccd", "edge_edge_ccd_batch", "edge_edge_collision_free_step", "exact_ccd",
+    "find_query_files", "point_edge_ccd", "point_edge_ccd_batch", "point_edge_collision_free_step",
+    "point_plane_ccd", "point_point_ccd", "point_point_ccd_batch",
     "point_point_collision_free_step", "query_type_from_path", "read_query_file",
     "read_query_file_exact", "rigid_edge_edge_ccd", "rigid_edge_edge_collision_free_step",
     "rigid_vertex_face_ccd", "rigid_vertex_face_collision_free_step", "vertex_face_ccd",
@@ -331,6 +331,31 @@ def point_point_collision_free_step(*points, t_max: float = 1.0, min_separation:
     return _exactccd._collision_free_step(
         rows[_POINT_POINT_AS_EDGE_EDGE], "ee",
         *_step_options(function, t_max, min_separation, conservative_rescaling, max_margin))
+
+
+_POINT_PLANE_ROWS = ("p_t0", "origin_t0", "normal_t0", "p_t1", "origin_t1", "normal_t1")
+
+
+def point_plane_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
+                    mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
+    """Point p against the plane through `origin` with normal `normal`, each moving linearly,
+    over [0, t_max]: contact when p(t) is on the plane {x : (x - origin(t)) . normal(t) = 0}
+    (with min_separation delta: within distance delta of it).
+
+    point_plane_ccd(p_t0, origin_t0, normal_t0, p_t1, origin_t1, normal_t1) with 3-vectors, or
+    one (6, 3) array; a static plane repeats origin and normal. Options as vertex_face_ccd.
+    Raises ValueError for non-finite coordinates, a zero normal, or options outside their
+    domain.
+    """
+    if len(points) == 1:
+        rows = points[0]
+    elif len(points) == 6:
+        rows = [np.asarray(p, dtype=np.float64) for p in points]
+    else:
+        raise TypeError(f"point_plane_ccd(): expected the 6 points {', '.join(_POINT_PLANE_ROWS)} "
+                        f"or one (6, 3) array, got {len(points)} arguments")
+    return _exactccd._point_plane_ccd(
+        rows, *_options("point_plane_ccd", t_max, toi_width, mode, min_separation))
 
 
 class BatchResult(NamedTuple):

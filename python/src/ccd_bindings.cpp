@@ -135,6 +135,20 @@ void bind_ccd(py::module_& m) {
       },
       py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"),
       py::arg("min_separation"));
+  m.def(
+      "_point_plane_ccd",
+      [](const py::handle& points, double t_max, double toi_width, const std::string& mode,
+         double min_separation) {
+        const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
+        const DoubleArray array = as_double_array(points, {6, 3}, "the query's points");
+        const double* d = array.data();
+        const PointPlaneQuery q{row_of(d, 0), row_of(d, 1), row_of(d, 2),
+                                row_of(d, 3), row_of(d, 4), row_of(d, 5)};
+        py::gil_scoped_release release;
+        return point_plane_ccd(q, options);
+      },
+      py::arg("points"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"),
+      py::arg("min_separation"));
   m.attr("STAGE_NAMES") = py::cast(stage_names());
   // The canonical names; the functions accept "default" too, the old name of "filtered".
   m.attr("MODE_NAMES") = py::cast(std::vector<std::string>{

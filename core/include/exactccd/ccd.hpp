@@ -71,4 +71,17 @@ EXACTCCD_API CcdResult point_edge_ccd_2d(const PointEdgeQuery2d& query,
 EXACTCCD_API CcdResult point_point_ccd_2d(const PointPointQuery2d& query,
                                           const CcdOptions& options = {});
 
+/// Point p against a plane (\ref point_plane "point-plane CCD"), over [0, options.t_max]:
+/// contact when p(t) lies on the plane {x : (x - origin(t)) . normal(t) = 0}, each of p, origin
+/// and normal moving linearly (a static plane repeats them); with min_separation delta > 0,
+/// when the distance |(p - origin) . normal| / |normal| is at most delta. Exact (the polynomial
+/// (p - origin) . normal has degree <= 2, <= 1 for a static plane).
+/// \param query finite coordinates, normal_t0 and normal_t1 non-zero.
+/// \param options t_max in [0, 1] (0: the state at t = 0), toi_width finite and >= 0, any mode.
+/// \return the verdict and the TOI enclosure; +infinity TOIs without contact.
+/// \throws std::invalid_argument for a non-finite coordinate, a zero normal (the message names
+///         it) or options outside their domain.
+EXACTCCD_API CcdResult point_plane_ccd(const PointPlaneQuery& query,
+                                       const CcdOptions& options = {});
+
 }  // namespace exactccd

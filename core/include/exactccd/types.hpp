@@ -88,6 +88,19 @@ struct PointEdgeQuery2d {
   Eigen::Vector2d e1_t1;  ///< second endpoint of the segment at t = 1
 };
 
+/// Point p against the plane through `origin` with normal `normal` (not necessarily unit),
+/// both of which may move linearly too: the plane at t is {x : (x - origin(t)) . normal(t) = 0}
+/// (point_plane_ccd). A static plane repeats origin and normal at t1. Any finite coordinates
+/// and a non-zero normal at t = 0 and at t = 1.
+struct PointPlaneQuery {
+  Eigen::Vector3d p_t0;       ///< the point at t = 0
+  Eigen::Vector3d origin_t0;  ///< a point of the plane at t = 0
+  Eigen::Vector3d normal_t0;  ///< the plane's normal at t = 0
+  Eigen::Vector3d p_t1;       ///< the point at t = 1
+  Eigen::Vector3d origin_t1;  ///< a point of the plane at t = 1
+  Eigen::Vector3d normal_t1;  ///< the plane's normal at t = 1
+};
+
 /// Which path decides a query.
 enum class Mode : std::uint8_t {
   /// Certified: culling, then interval filters, then the exact path where they cannot decide.

@@ -1,0 +1,35 @@
+// PROOF: proofs/point_plane.md#reduction
+#include "exact/reference/point_plane.hpp"
+
+#include "exact/reference/earliest_contact.hpp"
+
+namespace exactccd::exact {
+
+CcdResult point_plane_ccd_exact(const PointPlanePoints& x, const CcdOptions& options) {
+  const auto moving_of = [&](int row) {
+    return moving(RationalPoint{Rational(x[row].x()), Rational(x[row].y()), Rational(x[row].z())},
+                  RationalPoint{Rational(x[row + 3].x()), Rational(x[row + 3].y()),
+                                Rational(x[row + 3].z())});
+  };
+  const auto p = moving_of(0), o = moving_of(1), n = moving_of(2);
+  const auto f_t = predicates::dot(p - o, n);  // degree <= 2
+  const Polynomial f(f_t);
+  const Rational t_max(options.t_max);
+  if (options.min_separation == 0.0) {
+    // On the plane: f(t) = 0 (f identically zero: on it throughout, the start is the TOI).
+    return make_result(
+        earliest_contact(std::vector<Polynomial>{f}, true, t_max,
+                         [&](AlgebraicTime& t) { return t.sign_of(f) == 0; }),
+        options);
+  }
+  // Within delta: g(t) = f(t)^2 - delta^2 |n(t)|^2 <= 0. The first such time is t = 0 or a
+  // root of g (g is continuous: it is positive just before its first non-positive time).
+  const Rational delta(options.min_separation);
+  const predicates::FixedPoly<Rational, 0> delta2{{Rational(delta * delta)}};
+  const Polynomial g(f_t * f_t - delta2 * predicates::dot(n, n));  // degree <= 4
+  return make_result(earliest_contact(std::vector<Polynomial>{g}, true, t_max,
+                                      [&](AlgebraicTime& t) { return t.sign_of(g) <= 0; }),
+                     options);
+}
+
+}  // namespace exactccd::exact

@@ -1,0 +1,134 @@
+// Point-plane CCD as an instance of the one pipeline (dispatch.hpp): the polynomial
+// f(t) = (p - o) . n of degree <= 2 (contact) or g = f^2 - delta^2 |n|^2 of degree <= 4
+// (minimum separation). The filter is interval arithmetic on the polynomial over [0, t_max]:
+// it certifies "no contact" when the polynomial keeps a certain sign there; everything else
+// goes to the exact path (exact/reference/point_plane.cpp).
+// PROOF: proofs/point_plane.md#reduction
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/float_only/float_only_ccd.hpp"
+#include "core/predicates/coplanarity_cubic.hpp"
+#include "core/predicates/fp_environment.hpp"
+#include "core/predicates/interval.hpp"
+#include "exact/reference/point_plane.hpp"
+#include "exactccd/ccd.hpp"
+#include "pipeline/ccd_options_check.hpp"
+#include "pipeline/dispatch.hpp"
+
+namespace exactccd {
+
+namespace pipeline {
+
+namespace {
+
+exact::PointPlanePoints rows_of(const PointPlaneQuery& q) {
+  return {q.p_t0, q.origin_t0, q.normal_t0, q.p_t1, q.origin_t1, q.normal_t1};
+}
+
+/// The polynomial's enclosure over [0, t] (t >= 0): c0 + T (c1 + T (c2 + ...)), T = [0, t].
+template <int D>
+predicates::Interval over(const predicates::FixedPoly<predicates::Interval, D>& f, double t) {
+  const predicates::Interval T(0.0, t);
+  predicates::Interval r = f.c[D];
+  for (int i = D - 1; i >= 0; --i) r = f.c[i] + T * r;
+  return r;
+}
+
+struct PointPlane {
+  using Query = PointPlaneQuery;
+  struct NoStage {};
+
+  static CcdResult exact(const Query& q, const CcdOptions& o) {
+    return exact::point_plane_ccd_exact(rows_of(q), o);
+  }
+  /// The float polynomial's roots in doubles (min_separation: its roots compared with delta in
+  /// doubles, the common practice). Uncertified.
+  static CcdResult float_only(const Query& q, const CcdOptions& o) {
+    const auto p = predicates::moving_point<double>(q.p_t0, q.p_t1),
+               org = predicates::moving_point<double>(q.origin_t0, q.origin_t1),
+               n = predicates::moving_point<double>(q.normal_t0, q.normal_t1);
+    const auto f = predicates::dot(p - org, n);
+    CcdResult r;
+    r.decided_by = Stage::float_only;
+    const auto distance_at = [&](double t) {
+      const Eigen::Vector3d nt = (1 - t) * q.normal_t0 + t * q.normal_t1;
+      const Eigen::Vector3d d = (1 - t) * (q.p_t0 - q.origin_t0) + t * (q.p_t1 - q.origin_t1);
+      return std::abs(d.dot(nt)) / nt.norm();
+    };
+    double roots[3];
+    const int count = float_only::cubic_roots({{f.c[0], f.c[1], f.c[2], 0.0}}, o.t_max, roots);
+    for (int i = 0; i < count; ++i)
+      if (o.min_separation == 0.0 || distance_at(roots[i]) <= o.min_separation) {
+        r.collides = true;
+        r.toi_lo = r.toi_hi = roots[i];
+        break;
+      }
+    if (o.min_separation > 0.0 && distance_at(0.0) <= o.min_separation) {
+      r.collides = true;
+      r.toi_lo = r.toi_hi = 0.0;
+    }
+    return r;
+  }
+  static bool culled(const Query&, const CcdOptions&) { return false; }
+  static constexpr int normalising_exponent(const Query&) { return 0; }
+  static Query scaled(const Query& q, int) { return q; }
+  static NoStage exact_stage(const Query&, const CcdOptions&) { return {}; }
+  /// No contact when the polynomial keeps a certain sign on [0, t_max] (contact: f != 0;
+  /// within delta: g > 0), by interval arithmetic with upward rounding.
+  static FilterOutcome filter(const Query& q, const CcdOptions& o, NoStage&) {
+    const predicates::RoundingGuard upward;
+    using predicates::Interval;
+    const auto p = predicates::moving_point<Interval>(q.p_t0, q.p_t1),
+               org = predicates::moving_point<Interval>(q.origin_t0, q.origin_t1),
+               n = predicates::moving_point<Interval>(q.normal_t0, q.normal_t1);
+    const auto f = predicates::dot(p - org, n);
+    FilterOutcome out;
+    bool apart;
+    if (o.min_separation == 0.0) {
+      apart = predicates::certain_strict_sign(over(f, o.t_max)) != 0;
+    } else {
+      const Interval delta(o.min_separation);
+      const predicates::FixedPoly<Interval, 0> delta2{{delta * delta}};
+      apart = over(f * f - delta2 * predicates::dot(n, n), o.t_max).inf() > 0;
+    }
+    if (apart) out.verdict = FilterOutcome::Verdict::no_contact;
+    return out;
+  }
+  static std::pair<double, double> tighten(NoStage&, double lo, double hi, const CcdOptions&) {
+    return {lo, hi};
+  }
+  static CcdResult after_filter(const Query& q, const CcdOptions& o, const FilterOutcome&,
+                                NoStage&) {
+    return exact(q, o);
+  }
+};
+
+void require_finite(const Eigen::Vector3d& x, const char* name) {
+  if (!x.allFinite())
+    throw std::invalid_argument(std::string("exactccd: non-finite coordinate in ") + name);
+}
+
+}  // namespace
+
+}  // namespace pipeline
+
+CcdResult point_plane_ccd(const PointPlaneQuery& q, const CcdOptions& options) {
+  const predicates::RoundToNearestGuard nearest;
+  check_ccd_options(options);
+  pipeline::require_finite(q.p_t0, "p_t0");
+  pipeline::require_finite(q.origin_t0, "origin_t0");
+  pipeline::require_finite(q.normal_t0, "normal_t0");
+  pipeline::require_finite(q.p_t1, "p_t1");
+  pipeline::require_finite(q.origin_t1, "origin_t1");
+  pipeline::require_finite(q.normal_t1, "normal_t1");
+  if (q.normal_t0.isZero(0.0))
+    throw std::invalid_argument("exactccd: point_plane_ccd: normal_t0 is zero: no plane");
+  if (q.normal_t1.isZero(0.0))
+    throw std::invalid_argument("exactccd: point_plane_ccd: normal_t1 is zero: no plane");
+  return pipeline::certified_ccd<pipeline::PointPlane>(q, options);
+}
+
+}  // namespace exactccd
