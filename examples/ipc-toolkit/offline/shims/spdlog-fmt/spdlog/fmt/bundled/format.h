@@ -1,0 +1,3 @@
+// Debian's spdlog uses the external fmt: map spdlog's bundled-fmt header to it.
+#pragma once
+#include <fmt/format.h>
