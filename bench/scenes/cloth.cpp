@@ -48,8 +48,11 @@
 //   whole cloth is frozen for the step (x_end <- x, which touches nothing), counted as a frozen
 //   step (expected 0).
 //   Velocity: v <- (x_end - x) / dt; a pinned vertex gets v = 0; a stopped vertex loses the
-//   component of v along each of its contact normals (the triangle's normal for vertex-face, the
-//   cross product of the two edges for edge-edge, at the step's start).
+//   component of v along each of its contact normals: the certified contact normal at the
+//   exact time of impact (exactccd::contact_geometry: the triangle's normal for vertex-face, the
+//   cross product of the two edges for edge-edge, at t*; the midpoint of its enclosure, made
+//   unit), or, where the geometry is unresolved, that direction at the step's start
+//   (--normal-at-start: always at the step's start, as before the contact geometry existed).
 //
 // Certificate: the last CCD call of every step found no contact for the final motion over the
 // closed interval [0, 1]: no vertex-face or edge-edge pair touches at any instant of the step,
@@ -87,12 +90,14 @@
 #include <vector>
 
 #include "corpus/meshes.hpp"
+#include "exactccd/contact.hpp"
 #include "exactccd/discrete.hpp"
 #include "exactccd/scene.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using exactccd::CcdResult;
 using exactccd::Edges;
 using exactccd::MeshId;
 using exactccd::Positions;
@@ -122,6 +127,7 @@ struct Settings {
   int threads = 0;         ///< CCD threads; 0: TBB's default
   std::string out = "bench/scenes/out/cloth";
   bool check_only = false;
+  bool normal_at_start = false;  ///< the response's normals at the step's start, not at t*
 };
 
 struct Mesh {
@@ -278,6 +284,7 @@ struct StepStats {
   std::size_t obstacle_contacts = 0, self_contacts = 0;  ///< contacts of the proposed motion
   std::size_t vertex_face_contacts = 0, edge_edge_contacts = 0;  ///< same, by type
   std::size_t contacts_all_rounds = 0;
+  std::size_t unresolved_normals = 0;  ///< contacts whose certified normal was unresolved
   std::size_t stopped = 0, pinned = 0;  ///< vertices at the end of the step
   std::uint64_t candidates = 0;         ///< of the proposed motion
   double ccd_ms = 0.0, check_ms = 0.0;
@@ -304,7 +311,7 @@ int cloth_vertices(const Scene& scene, MeshId cloth, const ScenePair& p, std::in
 }
 
 /// The pair's unit contact normal at the start of the step (zero when degenerate).
-Vec3 contact_normal(const Scene& scene, const ScenePair& p) {
+Vec3 normal_at_start(const Scene& scene, const ScenePair& p) {
   Vec3 n;
   if (p.type == QueryType::vertex_face) {
     const auto q = scene.vertex_face_query(p);
@@ -315,6 +322,28 @@ Vec3 contact_normal(const Scene& scene, const ScenePair& p) {
   }
   const double length = n.norm();
   return length > 0.0 && std::isfinite(length) ? Vec3(n / length) : Vec3::Zero();
+}
+
+/// The contact's certified normal at t* (contact_geometry), the midpoint of its enclosure made
+/// unit; the normal at the step's start where it is unresolved (counted in *unresolved).
+Vec3 contact_normal(const Scene& scene, const SceneContact& c, std::size_t* unresolved) {
+  CcdResult r;
+  r.collides = true;
+  r.toi_lo = c.toi_lo;
+  r.toi_hi = c.toi_hi;
+  r.starts_within = c.starts_within;
+  const exactccd::ContactGeometry g =
+      c.pair.type == QueryType::vertex_face
+          ? exactccd::contact_geometry(scene.vertex_face_query(c.pair), r)
+          : exactccd::contact_geometry(scene.edge_edge_query(c.pair), r);
+  if (g.kind == exactccd::ContactKind::unresolved) {
+    ++*unresolved;
+    return normal_at_start(scene, c.pair);
+  }
+  Vec3 n;
+  for (int i = 0; i < 3; ++i) n[i] = 0.5 * (g.normal[i].lo + g.normal[i].hi);
+  const double length = n.norm();
+  return length > 0.0 ? Vec3(n / length) : Vec3::Zero();
 }
 
 double ms_since(std::chrono::steady_clock::time_point t0) {
@@ -422,7 +451,8 @@ StepStats advance(Scene& scene, MeshId cloth_id, Cloth& cloth, const Settings& s
     for (const SceneContact& c : result.contacts) {
       std::int32_t vs[4];
       const int k = cloth_vertices(scene, cloth_id, c.pair, vs);
-      const Vec3 normal = contact_normal(scene, c.pair);
+      const Vec3 normal = s.normal_at_start ? normal_at_start(scene, c.pair)
+                                            : contact_normal(scene, c, &st.unresolved_normals);
       for (int a = 0; a < k; ++a) {
         double& t = toi[static_cast<std::size_t>(vs[a])];
         t = std::min(t, c.toi_lo);
@@ -594,6 +624,7 @@ int run(Settings s) {
   std::size_t total_obstacle = 0, total_self = 0, total_vf = 0, total_ee = 0, violations = 0,
               frozen = 0, steps_with_contact = 0, max_pinned = 0;
   int max_rounds = 0;
+  std::size_t unresolved = 0;
   std::vector<double> ccd_ms, check_ms;
   for (const StepStats& st : stats) {
     total_obstacle += st.obstacle_contacts;
@@ -605,6 +636,7 @@ int run(Settings s) {
     steps_with_contact += st.rounds > 0;
     max_pinned = std::max(max_pinned, st.pinned);
     max_rounds = std::max(max_rounds, st.rounds);
+    unresolved += st.unresolved_normals;
     ccd_ms.push_back(st.ccd_ms);
     check_ms.push_back(st.check_ms);
   }
@@ -618,6 +650,11 @@ int run(Settings s) {
   std::printf("  response       stop each contact vertex at %.2g of the way to its conservative "
               "TOI, pin it at its\n                 start if hit again; remove its velocity along "
               "the contact normals (pinned: all)\n", s.stop_fraction);
+  if (s.normal_at_start)
+    std::printf("  normals        at the step's start (--normal-at-start)\n");
+  else
+    std::printf("  normals        certified, at the time of impact (contact_geometry); %zu "
+                "unresolved, taken at the step's start\n", unresolved);
   std::printf("  contacts       %zu (%zu cloth-obstacle, %zu cloth-cloth; %zu vertex-face, %zu "
               "edge-edge) in %zu of %d steps\n", total_obstacle + total_self, total_obstacle,
               total_self, total_vf, total_ee, steps_with_contact, s.steps);
@@ -645,6 +682,7 @@ int run(Settings s) {
                      {"tilt_degrees", s.tilt_degrees},
                      {"max_rounds", s.max_rounds},
                      {"stop_fraction", s.stop_fraction},
+                     {"normals", s.normal_at_start ? "at the step's start" : "certified, at t*"},
                      {"gravity", kGravity},
                      {"floor_z", kFloorZ}};
     j["response"] =
@@ -652,7 +690,9 @@ int run(Settings s) {
         "conservative TOI (toi_lo) of its contacts; pin it at its start if it is in a contact "
         "again in a later round of the step; repeat until the exact CCD finds no contact; "
         "velocity (x_end - x)/dt with its components along the contact normals removed "
-        "(pinned vertices: zero)";
+        "(pinned vertices: zero); the normals are the certified contact normals at the exact "
+        "time of impact (contact_geometry), or at the step's start where unresolved or with "
+        "--normal-at-start";
     j["cloth"] = {{"n", s.n}, {"vertices", vertices}, {"triangles", triangles},
                   {"frame_format", "little-endian float64, row-major (vertices x 3)"},
                   {"triangles_list", mesh_json(cloth_start)["triangles"]}};
@@ -669,6 +709,7 @@ int run(Settings s) {
                           {"vertex_face_contacts", st.vertex_face_contacts},
                           {"edge_edge_contacts", st.edge_edge_contacts},
                           {"contacts_all_rounds", st.contacts_all_rounds},
+                          {"unresolved_normals", st.unresolved_normals},
                           {"stopped", st.stopped},
                           {"pinned", st.pinned},
                           {"candidates", st.candidates},
@@ -689,6 +730,7 @@ int run(Settings s) {
                    {"vertex_face_contacts", total_vf},
                    {"edge_edge_contacts", total_ee},
                    {"max_rounds", max_rounds},
+                   {"unresolved_normals", unresolved},
                    {"frozen_steps", frozen},
                    {"ccd_ms_median", median(ccd_ms)},
                    {"check_ms_median", median(check_ms)},
@@ -755,6 +797,9 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--threads", s.threads, "CCD threads (0: all)")->check(CLI::NonNegativeNumber);
   app.add_option("--out", s.out, "output folder");
+  app.add_flag("--normal-at-start", s.normal_at_start,
+               "respond along the contact normals at the step's start (the old rule), not along "
+               "the certified normals at the time of impact");
   bool check_only = false;
   app.add_flag("--check-only", check_only,
                "short run (20 x 20 cloth, 40 steps unless given) writing nothing; exit status 0 "
