@@ -12,6 +12,7 @@
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/interval.hpp"
+#include "pipeline/contact_enclosures.hpp"
 
 namespace exactccd {
 
@@ -21,6 +22,11 @@ using predicates::FixedPoly;
 using predicates::Interval;
 using predicates::MovingPoint;
 using IVec = predicates::Vec3<Interval>;
+namespace contact = pipeline::contact;
+using contact::point_of;
+using contact::side_just_before;
+using contact::unit_normal;
+using contact::within;
 
 /// The 8 points of a query in the benchmark's row order.
 using Points = std::array<Eigen::Vector3d, 8>;
@@ -66,59 +72,6 @@ Interval derivative_at(const FixedPoly<Interval, 3>& g, const Interval& t) {
   return g.c[1] + t * (2 * g.c[2] + t * (3 * g.c[3]));
 }
 
-/// +1 (-1) when g, which vanishes at t* in t, is certainly positive (negative) just before t*:
-/// g'(t*) lies in g'(t), so a certain sign of g'(t) is -sign(g) just before. 0: not certain.
-int side_just_before(const Interval& derivative) {
-  if (derivative.sup() < 0) return 1;
-  if (derivative.inf() > 0) return -1;
-  return 0;
-}
-
-/// x, known to lie in [lo, hi] at t*, intersected with it. An empty intersection would
-/// contradict the proof: a bug, never an answer.
-Enclosure within(const Interval& x, double lo, double hi) {
-  const Enclosure e{std::max(x.inf(), lo), std::min(x.sup(), hi)};
-  if (!(e.lo <= e.hi)) throw std::logic_error("exactccd: contact_geometry: empty enclosure");
-  return e;
-}
-
-/// The enclosure of a point, scaled back by 2^e. Exact unless a bound becomes subnormal; then
-/// ldexp rounds upward (the guard's mode), so the lower bound is scaled negated.
-std::array<Enclosure, 3> point_of(const IVec& p, int e) {
-  std::array<Enclosure, 3> out;
-  for (int i = 0; i < 3; ++i)
-    out[i] = {-std::ldexp(-p[i].inf(), e), std::ldexp(p[i].sup(), e)};
-  return out;
-}
-
-/// The unit vector side * v / |v| when |v| is certainly positive (else false).
-bool unit_normal(const IVec& v, int side, std::array<Enclosure, 3>* out) {
-  const Interval vv = predicates::dot(v, v);
-  if (!(vv.inf() > 0)) return false;
-  const Interval length = CGAL::sqrt(vv);
-  for (int i = 0; i < 3; ++i) (*out)[i] = within(v[i] * double(side) / length, -1.0, 1.0);
-  return true;
-}
-
-/// The box hull of a segment's enclosures: the segment's points, each in it, lie in it.
-IVec hull(const IVec& a, const IVec& b) {
-  IVec h;
-  Interval* c[3] = {&h.x, &h.y, &h.z};
-  for (int i = 0; i < 3; ++i)
-    *c[i] = Interval(std::min(a[i].inf(), b[i].inf()), std::max(a[i].sup(), b[i].sup()));
-  return h;
-}
-
-IVec intersect(const IVec& a, const IVec& b) {
-  IVec h;
-  Interval* c[3] = {&h.x, &h.y, &h.z};
-  for (int i = 0; i < 3; ++i) {
-    const Enclosure e = within(a[i], b[i].inf(), b[i].sup());
-    *c[i] = Interval(e.lo, e.hi);
-  }
-  return h;
-}
-
 /// T: [0, 0] when the primitives touch at the start (t* = 0, exact), else the TOI enclosure.
 Interval time_of(const CcdResult& r) {
   return r.starts_within ? Interval(0.0) : Interval(r.toi_lo, r.toi_hi);
@@ -133,30 +86,11 @@ ContactGeometry vertex_face(Points x, const CcdResult& r) {
              a = predicates::moving_point<Interval>(x[1], x[5]),
              b = predicates::moving_point<Interval>(x[2], x[6]),
              c = predicates::moving_point<Interval>(x[3], x[7]);
-  const IVec P = at(p, t), A = at(a, t), B = at(b, t), C = at(c, t);
-  ContactGeometry g;
-  g.parameter_count = 3;
-  g.point = point_of(P, e);  // the contact point is the vertex
-  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 1}};
-  const IVec n = predicates::cross(B - A, C - A);
-  const Interval nn = predicates::dot(n, n);
-  if (!(nn.inf() > 0)) return g;  // degenerate or nearly: unresolved
-  // p(t*) lies in the triangle's plane, where these are its barycentric coordinates.
-  g.parameters[0] = within(predicates::dot(n, predicates::cross(B - P, C - P)) / nn, 0.0, 1.0);
-  g.parameters[1] = within(predicates::dot(n, predicates::cross(C - P, A - P)) / nn, 0.0, 1.0);
-  g.parameters[2] = within(predicates::dot(n, predicates::cross(A - P, B - P)) / nn, 0.0, 1.0);
-  if (r.starts_within) {
-    unit_normal(n, 1, &g.normal);
-    g.kind = ContactKind::at_start;
-    return g;
-  }
-  // det[b - a, c - a, p - a] = (p - a) . n: positive when p is on n's side.
-  const int side = side_just_before(
-      derivative_at(predicates::vertex_face_coplanarity_cubic(p, a, b, c), t));
-  g.normal_oriented = side != 0 && unit_normal(n, side, &g.normal);
-  if (!g.normal_oriented) unit_normal(n, 1, &g.normal);
-  g.kind = g.normal_oriented ? ContactKind::point : ContactKind::unresolved;
-  return g;
+  return contact::vertex_face_from(
+      at(p, t), at(a, t), at(b, t), at(c, t), r.starts_within, e, [&] {
+        return side_just_before(
+            derivative_at(predicates::vertex_face_coplanarity_cubic(p, a, b, c), t));
+      });
 }
 
 /// A point (edge `point_edge`, zero-length throughout) against the segment [s0, s1].
@@ -223,39 +157,11 @@ ContactGeometry edge_edge(Points x, const CcdResult& r) {
   }
   if (a_is_point) return point_segment(a0, b0, b1, true, in_plane, r, t, e);
   if (b_is_point) return point_segment(b0, a0, a1, false, in_plane, r, t, e);
-  const IVec A0 = at(a0, t), A1 = at(a1, t), B0 = at(b0, t), B1 = at(b1, t);
-  ContactGeometry g;
-  g.parameter_count = 2;
-  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 0}};
-  const IVec da = A1 - A0, db = B1 - B0, m = predicates::cross(da, db);
-  const Interval mm = predicates::dot(m, m);
-  if (!(mm.inf() > 0)) {  // parallel or nearly: the point lies on both segments
-    g.point = point_of(intersect(hull(A0, A1), hull(B0, B1)), e);
-    return g;
-  }
-  // a0 + s da = b0 + u db at t*: crossing with db and with da isolates s and u.
-  const IVec w = B0 - A0;
-  const Interval s = predicates::dot(predicates::cross(w, db), m) / mm;
-  const Interval u = predicates::dot(predicates::cross(w, da), m) / mm;
-  g.parameters[0] = within(s, 0.0, 1.0);
-  g.parameters[1] = within(u, 0.0, 1.0);
-  const Interval sc(g.parameters[0].lo, g.parameters[0].hi),
-      uc(g.parameters[1].lo, g.parameters[1].hi);
-  const IVec on_a{A0.x + sc * da.x, A0.y + sc * da.y, A0.z + sc * da.z};
-  const IVec on_b{B0.x + uc * db.x, B0.y + uc * db.y, B0.z + uc * db.z};
-  g.point = point_of(intersect(on_a, on_b), e);
-  if (r.starts_within) {
-    unit_normal(m, 1, &g.normal);
-    g.kind = ContactKind::at_start;
-    return g;
-  }
-  // det[a1 - a0, b0 - a0, b1 - a0] = (a0 - b0) . m: positive when edge a is on m's side.
-  const int side = side_just_before(
-      derivative_at(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), t));
-  g.normal_oriented = side != 0 && unit_normal(m, side, &g.normal);
-  if (!g.normal_oriented) unit_normal(m, 1, &g.normal);
-  g.kind = g.normal_oriented ? ContactKind::point : ContactKind::unresolved;
-  return g;
+  return contact::edge_edge_from(
+      at(a0, t), at(a1, t), at(b0, t), at(b1, t), r.starts_within, e, [&] {
+        return side_just_before(
+            derivative_at(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), t));
+      });
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "exactccd/ccd.hpp"
 #include "exactccd/contact.hpp"
 #include "exactccd/rational_query.hpp"
+#include "exactccd/rigid.hpp"
 #include "tests/test_support.hpp"
 
 namespace exactccd::test {
@@ -312,6 +313,98 @@ TEST(ContactGeometry, HugeAndTinyCoordinatesAreScaledExactly) {
     EXPECT_EQ(g.normal[2].lo, 1.0);
     EXPECT_EQ(g.point[1].lo, 0.5 * scale);
   }
+}
+
+/// The exact position at the rational s of the body point at x0 under motion m.
+RationalPoint rigid_position(const RigidMotion& m, const Vector3d& x0, const mpq_class& s) {
+  const auto q = [](double x) { return mpq_class(x); };
+  const mpq_class v[3] = {s * q(m.cayley.x()), s * q(m.cayley.y()), s * q(m.cayley.z())};
+  const mpq_class r[3] = {q(x0.x()) - q(m.pivot.x()), q(x0.y()) - q(m.pivot.y()),
+                          q(x0.z()) - q(m.pivot.z())};
+  const mpq_class vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  const mpq_class vr = v[0] * r[0] + v[1] * r[1] + v[2] * r[2];
+  const mpq_class w[3] = {v[1] * r[2] - v[2] * r[1], v[2] * r[0] - v[0] * r[2],
+                          v[0] * r[1] - v[1] * r[0]};
+  const double c[3] = {m.pivot.x(), m.pivot.y(), m.pivot.z()};
+  const double d[3] = {m.translation.x(), m.translation.y(), m.translation.z()};
+  mpq_class out[3];
+  for (int i = 0; i < 3; ++i)
+    out[i] = q(c[i]) + s * q(d[i]) + ((1 - vv) * r[i] + 2 * v[i] * vr + 2 * w[i]) / (1 + vv);
+  return {out[0], out[1], out[2]};
+}
+
+// A triangle turning about an axis through a vertex falling onto it (and a rotating edge
+// against a static one): at rational s of the enclosure, the exact positions of the rational
+// rigid motion give barycentric coordinates / edge parameters (clamped) inside the
+// enclosures, the unit normal inside the normal's box, oriented as the exact determinant's
+// sign at toi_lo (where toi_lo < s*).
+TEST(ContactGeometry, RigidQueriesEncloseTheExactGeometry) {
+  std::mt19937_64 rng(test_seed("contact_geometry_rigid"));
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int resolved = 0;
+  for (int n = 0; n < 120; ++n) {
+    const bool vf = n % 2 == 0;
+    RigidMotion turn;
+    turn.pivot = Vector3d(0.3 * u(rng), 0.3 * u(rng), 0.0);
+    turn.cayley = Vector3d(0.2 * u(rng), 0.2 * u(rng), 0.5 * u(rng));
+    turn.translation = Vector3d(0.1 * u(rng), 0.1 * u(rng), 0.1 * u(rng));
+    RigidMotion fall;
+    fall.translation = Vector3d(0.1 * u(rng), 0.1 * u(rng), n % 4 < 2 ? -1.0 : 1.0);
+    const double z = n % 4 < 2 ? 0.5 : -0.5;
+    std::array<Vector3d, 4> x;  // the moving primitive first (vertex / edge a)
+    RigidCcdResult r;
+    ContactGeometry g;
+    if (vf) {
+      x = {Vector3d(0.2 + 0.1 * u(rng), 0.2 + 0.1 * u(rng), z), Vector3d(-1, -1, 0),
+           Vector3d(2, -1, 0), Vector3d(-1, 2, 0)};
+      const RigidVertexFaceQuery q{x[0], x[1], x[2], x[3], SideMotion::of(fall),
+                                   SideMotion::of(turn)};
+      r = vertex_face_ccd(q);
+      if (!r.ccd.collides) continue;
+      g = contact_geometry(q, r);
+    } else {
+      x = {Vector3d(-1, 0.1 * u(rng), z), Vector3d(1, 0.1 * u(rng), z),
+           Vector3d(0.1 * u(rng), -1, 0), Vector3d(0.1 * u(rng), 1, 0)};
+      const RigidEdgeEdgeQuery q{x[0], x[1], x[2], x[3], SideMotion::of(fall),
+                                 SideMotion::of(turn)};
+      r = edge_edge_ccd(q);
+      if (!r.ccd.collides) continue;
+      g = contact_geometry(q, r);
+    }
+    SCOPED_TRACE("n " + std::to_string(n));
+    ASSERT_EQ(g.kind, ContactKind::point);
+    ++resolved;
+    const mpq_class lo(r.ccd.toi_lo), hi(r.ccd.toi_hi);
+    const auto positions = [&](const mpq_class& s) {
+      RationalQuery q{vf ? QueryType::vertex_face : QueryType::edge_edge, {}};
+      const int moving = vf ? 1 : 2;  // the first `moving` points fall, the others turn
+      for (int i = 0; i < 4; ++i) {
+        q.points[i] = rigid_position(i < moving ? fall : turn, x[i], s);
+        q.points[4 + i] = q.points[i];  // held: position_at(q, i, any t) is this point
+      }
+      return q;
+    };
+    for (const mpq_class& s : {lo, hi, mpq_class((lo + hi) / 2)}) {
+      const RationalQuery at = positions(s);
+      std::array<mpq_class, 3> param;
+      ASSERT_TRUE(parameters_at(at, 0, &param));
+      for (int i = 0; i < g.parameter_count; ++i)
+        EXPECT_TRUE(contains(g.parameters[i], clamp01(param[i]))) << "parameter " << i;
+      RationalVector dir = direction_at(at, 0);
+      const mpq_class nn = dot(dir, dir);
+      const int side = cgal_coplanarity_sign_at(positions(lo), 0);
+      if (side != 0) {
+        if (side < 0) dir = {-dir.x, -dir.y, -dir.z};
+        EXPECT_TRUE(unit_component_in(dir.x, nn, g.normal[0]) &&
+                    unit_component_in(dir.y, nn, g.normal[1]) &&
+                    unit_component_in(dir.z, nn, g.normal[2]));
+      }
+    }
+    // Coming from above (z > 0), the normal points up.
+    EXPECT_GT(g.normal[2].lo * (z > 0 ? 1 : -1), 0.0);
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(resolved, 60);
 }
 
 TEST(ContactGeometry, BadInputIsAnError) {

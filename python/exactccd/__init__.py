@@ -87,6 +87,10 @@ rigid_vertex_face_collision_free_step = _arguments.one_line_type_errors(
     rigid_vertex_face_collision_free_step, "rigid_vertex_face_collision_free_step")
 
 
+RigidCcdResult.contact = property(
+    lambda self: self.__dict__.get("contact"),
+    doc="The contact geometry (ContactGeometry) at s* when asked for with contact=True and the "
+        "query collides; None otherwise.")
 CcdResult.contact = property(
     lambda self: self.__dict__.get("contact"),
     doc="The contact geometry (ContactGeometry) when asked for with contact=True and the query "

@@ -3,8 +3,11 @@
 #include <pybind11/stl.h>
 
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "bindings.hpp"
+#include "exactccd/contact.hpp"
 #include "exactccd/rigid.hpp"
 
 namespace exactccd::python {
@@ -44,6 +47,36 @@ std::string repr(const RigidCcdResult& r) {
   return text;
 }
 
+RigidCcdResult decide(const RigidVertexFaceQuery& q, const CcdOptions& o) {
+  return vertex_face_ccd(q, o);
+}
+RigidCcdResult decide(const RigidEdgeEdgeQuery& q, const CcdOptions& o) {
+  return edge_edge_ccd(q, o);
+}
+
+/// The result as a Python object, with its contact geometry in `contact` when asked for and it
+/// collides (certified modes and contact only: ValueError otherwise).
+template <class Query>
+py::object with_contact(const Query& q, const CcdOptions& options, bool contact,
+                        const char* function) {
+  if (contact && options.mode == Mode::float_only)
+    throw py::value_error(std::string(function) +
+                          "(): contact=True needs a certified mode (\"filtered\" or \"exact\")");
+  if (contact && options.min_separation != 0.0)
+    throw py::value_error(std::string(function) +
+                          "(): contact=True gives the geometry of contact (min_separation=0)");
+  RigidCcdResult r;
+  std::optional<ContactGeometry> g;
+  {
+    py::gil_scoped_release release;
+    r = decide(q, options);
+    if (contact && r.ccd.collides) g = contact_geometry(q, r);
+  }
+  py::object out = py::cast(r);
+  if (g) out.attr("__dict__")["contact"] = py::cast(*g);
+  return out;
+}
+
 }  // namespace
 
 void bind_rigid(py::module_& m) {
@@ -76,7 +109,8 @@ void bind_rigid(py::module_& m) {
 
   py::class_<RigidCcdResult>(m, "RigidCcdResult",
                              "collides, the enclosure [toi_lo, toi_hi] of the first contact's "
-                             "motion parameter s, and its time [time_lo, time_hi] when has_time.")
+                             "motion parameter s, and its time [time_lo, time_hi] when has_time.",
+                             py::dynamic_attr())
       .def_property_readonly("collides", [](const RigidCcdResult& r) { return r.ccd.collides; })
       .def_property_readonly("toi_lo", [](const RigidCcdResult& r) { return r.ccd.toi_lo; })
       .def_property_readonly("toi_hi", [](const RigidCcdResult& r) { return r.ccd.toi_hi; })
@@ -95,7 +129,7 @@ void bind_rigid(py::module_& m) {
       "rigid_vertex_face_ccd",
       [](const py::handle& points, const py::handle& vertex_motion,
          const py::handle& face_motion, double t_max, double toi_width, const std::string& mode,
-         double min_separation) {
+         double min_separation, bool contact) {
         const DoubleArray x = as_double_array(points, {4, 3}, "the points p, a, b, c");
         RigidVertexFaceQuery q;
         Eigen::Vector3d* rows[4] = {&q.p, &q.a, &q.b, &q.c};
@@ -104,23 +138,24 @@ void bind_rigid(py::module_& m) {
         q.vertex = side_motion(vertex_motion, 1, "the vertex's end position");
         q.face = side_motion(face_motion, 3, "the face's end positions");
         const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
-        py::gil_scoped_release release;
-        return vertex_face_ccd(q, options);
+        return with_contact(q, options, contact, "rigid_vertex_face_ccd");
       },
       py::arg("points"), py::arg("vertex_motion"), py::arg("face_motion"), py::kw_only(),
       py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "filtered",
-      py::arg("min_separation") = 0.0,
+      py::arg("min_separation") = 0.0, py::arg("contact") = false,
       "Vertex p against the closed triangle (a, b, c): points = (4, 3) positions at s = 0; each "
       "motion a RigidMotion or an array of end positions (straight lines). mode: \"filtered\" "
       "(certified; \"default\" is its old name), \"exact\", or \"float_only\" (the uncertified "
       "double test, for comparison: toi_lo == toi_hi, stage \"float_only\"). min_separation: "
       "delta >= 0, finite; "
       "collides iff the vertex comes within Euclidean distance delta of the triangle, the TOI "
-      "the earliest such s (0: contact).");
+      "the earliest such s (0: contact). contact=True: a colliding result's `contact` is the "
+      "certified contact geometry at s* (ContactGeometry).");
   m.def(
       "rigid_edge_edge_ccd",
       [](const py::handle& points, const py::handle& motion_a, const py::handle& motion_b,
-         double t_max, double toi_width, const std::string& mode, double min_separation) {
+         double t_max, double toi_width, const std::string& mode, double min_separation,
+         bool contact) {
         const DoubleArray x = as_double_array(points, {4, 3}, "the points ea0, ea1, eb0, eb1");
         RigidEdgeEdgeQuery q;
         Eigen::Vector3d* rows[4] = {&q.ea0, &q.ea1, &q.eb0, &q.eb1};
@@ -129,12 +164,11 @@ void bind_rigid(py::module_& m) {
         q.edge_a = side_motion(motion_a, 2, "edge a's end positions");
         q.edge_b = side_motion(motion_b, 2, "edge b's end positions");
         const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
-        py::gil_scoped_release release;
-        return edge_edge_ccd(q, options);
+        return with_contact(q, options, contact, "rigid_edge_edge_ccd");
       },
       py::arg("points"), py::arg("motion_a"), py::arg("motion_b"), py::kw_only(),
       py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "filtered",
-      py::arg("min_separation") = 0.0,
+      py::arg("min_separation") = 0.0, py::arg("contact") = false,
       "Closed segment [ea0, ea1] against [eb0, eb1]: points = (4, 3) positions at s = 0; each "
       "motion a RigidMotion or an array of end positions (straight lines). mode and "
       "min_separation: as rigid_vertex_face_ccd (delta: the distance between the segments).");

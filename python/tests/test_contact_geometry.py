@@ -88,3 +88,23 @@ def test_contact_needs_a_certified_contact_query():
     with pytest.raises(ValueError, match="min_separation=0"):
         exactccd.vertex_face_ccd(*args, min_separation=0.1, contact=True)
     assert exactccd.vertex_face_ccd(*args, mode="exact", contact=True).contact.kind == "point"
+
+
+def test_rigid_contact_geometry():
+    # A vertex falling onto a triangle that turns about the z axis through its corner: the
+    # normal is +z whatever the turn, the barycentric coordinates those of the landing point.
+    turn = exactccd.RigidMotion(pivot=(0, 0, 0), cayley=(0, 0, 0.25))
+    fall = exactccd.RigidMotion(translation=(0, 0, -1))
+    points = np.array([[0.2, 0.2, 0.5], [-1, -1, 0], [2, -1, 0], [-1, 2, 0]])
+    r = exactccd.rigid_vertex_face_ccd(points, fall, turn, contact=True)
+    assert r.collides and r.toi_lo <= 0.5 <= r.toi_hi
+    g = r.contact
+    assert g.kind == "point" and g.normal_oriented
+    assert g.normal[2][0] > 0.999999 and g.parameters.shape == (3, 2)
+    assert (g.parameters[:, 0] >= 0).all() and (g.parameters[:, 1] <= 1).all()
+    assert exactccd.rigid_vertex_face_ccd(points, fall, turn).contact is None
+    r = exactccd.rigid_edge_edge_ccd(np.array([[-1, 0, 0.5], [1, 0, 0.5], [0, -1, 0], [0, 1, 0]]),
+                                     fall, turn, contact=True)
+    assert r.contact.kind == "point" and r.contact.normal[2][0] > 0.999999
+    with pytest.raises(ValueError, match="min_separation=0"):
+        exactccd.rigid_vertex_face_ccd(points, fall, turn, min_separation=0.1, contact=True)

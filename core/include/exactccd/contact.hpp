@@ -13,6 +13,7 @@
 #include <cstdint>
 
 #include "exactccd/export.hpp"
+#include "exactccd/rigid.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd {
@@ -90,5 +91,25 @@ EXACTCCD_API ContactGeometry contact_geometry(const VertexFaceQuery& query,
 /// \throws std::invalid_argument as for vertex-face.
 EXACTCCD_API ContactGeometry contact_geometry(const EdgeEdgeQuery& query,
                                               const CcdResult& result);
+
+/// The contact geometry of a rigid vertex-face query at the exact earliest contact parameter s*
+/// that `result` encloses (in s, result.ccd): as for linear motion, with the positions of the
+/// rigid motion (or a side's straight lines) at s*; the normal points to the side the vertex
+/// came from just before s*. No scaling: extreme magnitudes may leave it `unresolved`.
+/// \param query the rigid query that was decided.
+/// \param result its certified answer (vertex_face_ccd of the rigid query, min_separation 0).
+/// \return the enclosures at s*.
+/// \throws std::invalid_argument for a non-finite position or motion, or when the result does
+///         not collide or its enclosure is not in [0, 1].
+EXACTCCD_API ContactGeometry contact_geometry(const RigidVertexFaceQuery& query,
+                                              const RigidCcdResult& result);
+
+/// The contact geometry of a rigid edge-edge query at s*; as for the rigid vertex-face query.
+/// \param query the rigid query that was decided.
+/// \param result its certified answer (edge_edge_ccd of the rigid query, min_separation 0).
+/// \return the enclosures at s*.
+/// \throws std::invalid_argument as for the rigid vertex-face query.
+EXACTCCD_API ContactGeometry contact_geometry(const RigidEdgeEdgeQuery& query,
+                                              const RigidCcdResult& result);
 
 }  // namespace exactccd

@@ -1,0 +1,140 @@
+// The contact geometry's enclosures from the positions at the enclosure T of t* (intervals),
+// shared by the linear and the rigid entry points (contact_geometry.cpp,
+// rigid_contact_geometry.cpp): the parameters, the point and the unit normal, and the kind.
+// PROOF: proofs/contact_geometry.md#enclosures
+#pragma once
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "core/predicates/motion.hpp"
+#include "core/predicates/interval.hpp"
+#include "exactccd/contact.hpp"
+
+namespace exactccd::pipeline::contact {
+
+using predicates::Interval;
+using IVec = predicates::Vec3<Interval>;
+
+/// +1 (-1) when g, which vanishes at t* in t, is certainly positive (negative) just before t*:
+/// g'(t*) lies in g'(t), so a certain sign of g'(t) is -sign(g) just before. 0: not certain.
+inline int side_just_before(const Interval& derivative) {
+  if (derivative.sup() < 0) return 1;
+  if (derivative.inf() > 0) return -1;
+  return 0;
+}
+
+/// x, known to lie in [lo, hi] at t*, intersected with it. An empty intersection would
+/// contradict the proof: a bug, never an answer.
+inline Enclosure within(const Interval& x, double lo, double hi) {
+  const Enclosure e{std::max(x.inf(), lo), std::min(x.sup(), hi)};
+  if (!(e.lo <= e.hi)) throw std::logic_error("exactccd: contact_geometry: empty enclosure");
+  return e;
+}
+
+/// The enclosure of a point, scaled back by 2^e. Exact unless a bound becomes subnormal; then
+/// ldexp rounds upward (the guard's mode), so the lower bound is scaled negated.
+inline std::array<Enclosure, 3> point_of(const IVec& p, int e) {
+  std::array<Enclosure, 3> out;
+  for (int i = 0; i < 3; ++i)
+    out[i] = {-std::ldexp(-p[i].inf(), e), std::ldexp(p[i].sup(), e)};
+  return out;
+}
+
+/// The unit vector side * v / |v| when |v| is certainly positive (else false).
+inline bool unit_normal(const IVec& v, int side, std::array<Enclosure, 3>* out) {
+  const Interval vv = predicates::dot(v, v);
+  if (!(vv.inf() > 0)) return false;
+  const Interval length = CGAL::sqrt(vv);
+  for (int i = 0; i < 3; ++i) (*out)[i] = within(v[i] * double(side) / length, -1.0, 1.0);
+  return true;
+}
+
+/// The box hull of a segment's enclosures: the segment's points, each in it, lie in it.
+inline IVec hull(const IVec& a, const IVec& b) {
+  IVec h;
+  Interval* c[3] = {&h.x, &h.y, &h.z};
+  for (int i = 0; i < 3; ++i)
+    *c[i] = Interval(std::min(a[i].inf(), b[i].inf()), std::max(a[i].sup(), b[i].sup()));
+  return h;
+}
+
+inline IVec intersect(const IVec& a, const IVec& b) {
+  IVec h;
+  Interval* c[3] = {&h.x, &h.y, &h.z};
+  for (int i = 0; i < 3; ++i) {
+    const Enclosure e = within(a[i], b[i].inf(), b[i].sup());
+    *c[i] = Interval(e.lo, e.hi);
+  }
+  return h;
+}
+
+/// Vertex p against the triangle (a, b, c), from their positions over T (p(t*) lies in the
+/// triangle); `side_before()` is the side of det[b - a, c - a, p - a] just before t* (+1, -1,
+/// or 0 when not certain), asked only when t* > 0. e: the point's scaling exponent.
+template <class SideBefore>
+ContactGeometry vertex_face_from(const IVec& P, const IVec& A, const IVec& B, const IVec& C,
+                                 bool starts_within, int e, SideBefore&& side_before) {
+  ContactGeometry g;
+  g.parameter_count = 3;
+  g.point = point_of(P, e);  // the contact point is the vertex
+  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 1}};
+  const IVec n = predicates::cross(B - A, C - A);
+  const Interval nn = predicates::dot(n, n);
+  if (!(nn.inf() > 0)) return g;  // degenerate or nearly: unresolved
+  // p(t*) lies in the triangle's plane, where these are its barycentric coordinates.
+  g.parameters[0] = within(predicates::dot(n, predicates::cross(B - P, C - P)) / nn, 0.0, 1.0);
+  g.parameters[1] = within(predicates::dot(n, predicates::cross(C - P, A - P)) / nn, 0.0, 1.0);
+  g.parameters[2] = within(predicates::dot(n, predicates::cross(A - P, B - P)) / nn, 0.0, 1.0);
+  if (starts_within) {
+    unit_normal(n, 1, &g.normal);
+    g.kind = ContactKind::at_start;
+    return g;
+  }
+  // det[b - a, c - a, p - a] = (p - a) . n: positive when p is on n's side.
+  const int side = side_before();
+  g.normal_oriented = side != 0 && unit_normal(n, side, &g.normal);
+  if (!g.normal_oriented) unit_normal(n, 1, &g.normal);
+  g.kind = g.normal_oriented ? ContactKind::point : ContactKind::unresolved;
+  return g;
+}
+
+/// Segments [a0, a1] and [b0, b1] (neither a point), from their positions over T;
+/// `side_before()` is the side of det[a1 - a0, b0 - a0, b1 - a0] just before t*.
+template <class SideBefore>
+ContactGeometry edge_edge_from(const IVec& A0, const IVec& A1, const IVec& B0, const IVec& B1,
+                               bool starts_within, int e, SideBefore&& side_before) {
+  ContactGeometry g;
+  g.parameter_count = 2;
+  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 0}};
+  const IVec da = A1 - A0, db = B1 - B0, m = predicates::cross(da, db);
+  const Interval mm = predicates::dot(m, m);
+  if (!(mm.inf() > 0)) {  // parallel or nearly: the point lies on both segments
+    g.point = point_of(intersect(hull(A0, A1), hull(B0, B1)), e);
+    return g;
+  }
+  // a0 + s da = b0 + u db at t*: crossing with db and with da isolates s and u.
+  const IVec w = B0 - A0;
+  const Interval s = predicates::dot(predicates::cross(w, db), m) / mm;
+  const Interval u = predicates::dot(predicates::cross(w, da), m) / mm;
+  g.parameters[0] = within(s, 0.0, 1.0);
+  g.parameters[1] = within(u, 0.0, 1.0);
+  const Interval sc(g.parameters[0].lo, g.parameters[0].hi),
+      uc(g.parameters[1].lo, g.parameters[1].hi);
+  const IVec on_a{A0.x + sc * da.x, A0.y + sc * da.y, A0.z + sc * da.z};
+  const IVec on_b{B0.x + uc * db.x, B0.y + uc * db.y, B0.z + uc * db.z};
+  g.point = point_of(intersect(on_a, on_b), e);
+  if (starts_within) {
+    unit_normal(m, 1, &g.normal);
+    g.kind = ContactKind::at_start;
+    return g;
+  }
+  // det[a1 - a0, b0 - a0, b1 - a0] = (a0 - b0) . m: positive when edge a is on m's side.
+  const int side = side_before();
+  g.normal_oriented = side != 0 && unit_normal(m, side, &g.normal);
+  if (!g.normal_oriented) unit_normal(m, 1, &g.normal);
+  g.kind = g.normal_oriented ? ContactKind::point : ContactKind::unresolved;
+  return g;
+}
+
+}  // namespace exactccd::pipeline::contact
