@@ -17,6 +17,7 @@
 #include "exactccd/contact.hpp"
 #include "exactccd/rational_query.hpp"
 #include "exactccd/rigid.hpp"
+#include "exactccd/scene.hpp"
 #include "tests/test_support.hpp"
 
 namespace exactccd::test {
@@ -405,6 +406,73 @@ TEST(ContactGeometry, RigidQueriesEncloseTheExactGeometry) {
     if (::testing::Test::HasFailure()) break;
   }
   EXPECT_GT(resolved, 60);
+}
+
+// Scene::contact_geometry is the pair-level function on the contact's query: a sheet of two
+// triangles falling onto a static floor (vertex-face and edge-edge contacts), every contact's
+// geometry equal field by field to contact_geometry of its query and result.
+TEST(ContactGeometry, SceneContactsGetTheirQueriesGeometry) {
+  Scene scene;
+  Positions floor(4, 3), sheet(4, 3);
+  Triangles two(2, 3);
+  floor << -2, -2, 0, 2, -2, 0, 2, 2, 0, -2, 2, 0;
+  sheet << -0.5, -0.5, 0.5, 0.7, -0.5, 0.25, 0.5, 0.6, 0.75, -0.5, 0.5, 0.5;
+  two << 0, 1, 2, 0, 2, 3;
+  scene.add_static_mesh(floor, two);
+  const MeshId falling = scene.add_mesh(sheet, two);
+  Positions down = sheet;
+  down.col(2).array() -= 1.5;
+  scene.set_motion(falling, sheet, down);
+  const SceneResult result = scene.find_contacts();
+  ASSERT_FALSE(result.contacts.empty());
+  int points = 0;
+  for (const SceneContact& c : result.contacts) {
+    CcdResult r;
+    r.collides = true;
+    r.toi_lo = c.toi_lo;
+    r.toi_hi = c.toi_hi;
+    r.starts_within = c.starts_within;
+    const ContactGeometry want =
+        c.pair.type == QueryType::vertex_face
+            ? contact_geometry(scene.vertex_face_query(c.pair), r)
+            : contact_geometry(scene.edge_edge_query(c.pair), r);
+    const ContactGeometry got = scene.contact_geometry(c);
+    EXPECT_EQ(got.kind, want.kind);
+    EXPECT_EQ(got.parameter_count, want.parameter_count);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(got.normal[i].lo, want.normal[i].lo);
+      EXPECT_EQ(got.normal[i].hi, want.normal[i].hi);
+      EXPECT_EQ(got.parameters[i].lo, want.parameters[i].lo);
+      EXPECT_EQ(got.point[i].hi, want.point[i].hi);
+    }
+    points += got.kind == ContactKind::point;
+  }
+  EXPECT_GT(points, 0);
+  // A rigid body turning as it falls: its contacts' geometry is the rigid queries'.
+  Scene rigid_scene;
+  rigid_scene.add_static_mesh(floor, two);
+  const MeshId body = rigid_scene.add_rigid_body(sheet, two);
+  rigid_scene.set_rigid_motion(body, RigidMotion::turn(Vector3d(0, 0, 0.5), Vector3d(0, 0, 1),
+                                                       0.5, Vector3d(0, 0, -1.5)));
+  const SceneResult rigid_result = rigid_scene.find_contacts();
+  ASSERT_FALSE(rigid_result.contacts.empty());
+  for (const SceneContact& c : rigid_result.contacts) {
+    RigidCcdResult r;
+    r.ccd.collides = true;
+    r.ccd.toi_lo = c.toi_lo;
+    r.ccd.toi_hi = c.toi_hi;
+    r.ccd.starts_within = c.starts_within;
+    const ContactGeometry want =
+        c.pair.type == QueryType::vertex_face
+            ? contact_geometry(rigid_scene.rigid_vertex_face_query(c.pair), r)
+            : contact_geometry(rigid_scene.rigid_edge_edge_query(c.pair), r);
+    const ContactGeometry got = rigid_scene.contact_geometry(c);
+    EXPECT_EQ(got.kind, want.kind);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(got.normal[i].lo, want.normal[i].lo);
+      EXPECT_EQ(got.parameters[i].hi, want.parameters[i].hi);
+    }
+  }
 }
 
 TEST(ContactGeometry, BadInputIsAnError) {

@@ -1258,6 +1258,26 @@ RigidVertexFaceQuery Scene::rigid_vertex_face_query(const ScenePair& pair) const
   return impl_->rigid_vertex_face(pair);
 }
 
+ContactGeometry Scene::contact_geometry(const SceneContact& contact) const {
+  const ScenePair& pair = contact.pair;
+  CcdResult r;
+  r.collides = true;
+  r.toi_lo = contact.toi_lo;
+  r.toi_hi = contact.toi_hi;
+  r.starts_within = contact.starts_within;
+  const bool rigid = is_rigid(pair.first_mesh) || is_rigid(pair.second_mesh);
+  if (rigid) {
+    RigidCcdResult rr;
+    rr.ccd = r;
+    if (pair.type == QueryType::vertex_face)
+      return exactccd::contact_geometry(rigid_vertex_face_query(pair), rr);
+    return exactccd::contact_geometry(rigid_edge_edge_query(pair), rr);
+  }
+  if (pair.type == QueryType::vertex_face)
+    return exactccd::contact_geometry(vertex_face_query(pair), r);
+  return exactccd::contact_geometry(edge_edge_query(pair), r);
+}
+
 RigidEdgeEdgeQuery Scene::rigid_edge_edge_query(const ScenePair& pair) const {
   if (pair.type != QueryType::edge_edge)
     throw std::invalid_argument("exactccd: rigid_edge_edge_query of a vertex-face pair");

@@ -411,7 +411,18 @@ void bind_scene(py::module_& m) {
             return rows_of({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1,
                             q.eb1_t1});
           },
-          py::arg("pair"), "The pair's query as an (8, 3) array in the benchmark's row order.");
+          py::arg("pair"), "The pair's query as an (8, 3) array in the benchmark's row order.")
+      .def(
+          "contact_geometry",
+          [](GuardedScene& g, const SceneContact& c) {
+            return g.run([&](Scene& s) {
+              checked_pair(s, c.pair);
+              return s.contact_geometry(c);
+            });
+          },
+          py::arg("contact"),
+          "The certified contact geometry (ContactGeometry) of a contact of this scene (from "
+          "find_contacts or earliest_contact with min_separation 0).");
 }
 
 }  // namespace exactccd::python

@@ -108,3 +108,24 @@ def test_rigid_contact_geometry():
     assert r.contact.kind == "point" and r.contact.normal[2][0] > 0.999999
     with pytest.raises(ValueError, match="min_separation=0"):
         exactccd.rigid_vertex_face_ccd(points, fall, turn, min_separation=0.1, contact=True)
+
+
+def test_scene_contact_geometry():
+    floor = np.array([[-2, -2, 0], [2, -2, 0], [2, 2, 0], [-2, 2, 0]], dtype=float)
+    sheet = np.array([[-0.5, -0.5, 0.5], [0.7, -0.5, 0.25], [0.5, 0.6, 0.75], [-0.5, 0.5, 0.5]])
+    two = np.array([[0, 1, 2], [0, 2, 3]])
+    scene = exactccd.Scene()
+    scene.add_static_mesh(floor, two)
+    falling = scene.add_mesh(sheet, two)
+    scene.set_motion(falling, sheet, sheet - [0, 0, 1.5])
+    contacts = scene.find_contacts().contacts
+    assert contacts
+    for c in contacts:
+        g = scene.contact_geometry(c)
+        rows = (scene.vertex_face_query(c.pair) if c.pair.type == "vertex-face"
+                else scene.edge_edge_query(c.pair))
+        assert g.kind in ("point", "at_start", "unresolved")
+        if g.kind == "point" and c.pair.type == "vertex-face" and c.pair.second_mesh == 0:
+            # A sheet vertex lands on the floor: the floor's normal, towards where it came from.
+            assert g.normal[2][0] > 0.999
+        assert rows.shape == (8, 3)

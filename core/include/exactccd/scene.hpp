@@ -42,6 +42,7 @@
 #include <memory>
 #include <vector>
 
+#include "exactccd/contact.hpp"
 #include "exactccd/export.hpp"
 #include "exactccd/rigid.hpp"
 #include "exactccd/types.hpp"
@@ -340,6 +341,14 @@ class EXACTCCD_API Scene {
   /// \param pair an edge-edge pair of this scene.
   /// \return the query.
   RigidEdgeEdgeQuery rigid_edge_edge_query(const ScenePair& pair) const;
+  /// The certified contact geometry of a contact of this scene (contact_geometry of its pair's
+  /// query, the rigid one when a rigid body takes part, at the contact's enclosure of t*, in s
+  /// for rigid pairs). Precondition: the contact comes from find_contacts or earliest_contact
+  /// with SceneOptions::min_separation 0 (the geometry is that of contact).
+  /// \param contact a contact of this scene.
+  /// \return the enclosures at t*.
+  /// \throws std::invalid_argument for a pair out of range.
+  ContactGeometry contact_geometry(const SceneContact& contact) const;
 
  private:
   struct Impl;
