@@ -40,6 +40,15 @@ CheckTally check_file(const std::string& path, std::optional<QueryType> type,
 CheckTally check_queries(const QueryFile& input, std::size_t begin, std::size_t end,
                          const CheckSettings& settings, const CheckVisitor& on_query = {});
 
+/// Decides every query of the file `path` of a point kind or the plane (PrimitiveKind: its own
+/// rows per query and columns), as check_file does for the benchmark's kinds: the tally of its
+/// collisions, disagreements with the truth column and stages. Coordinates must be doubles,
+/// except with Mode::exact for the point kinds (decided as the edge-edge query they are).
+/// Throws InputError for a malformed file, a coordinate that is not a double where one is
+/// needed, or a zero plane normal (at its query's line).
+CheckTally check_primitive_file(const std::string& path, PrimitiveKind kind,
+                                const CheckSettings& settings, const CheckVisitor& on_query = {});
+
 /// Counts one decided query into `tally`: a collision, a disagreement with `truth`, its stage.
 void count_query(CheckTally& tally, const CcdResult& result, bool truth);
 

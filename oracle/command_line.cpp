@@ -128,6 +128,18 @@ void add_type_option(CLI::App* command, std::string& type_name) {
       ->check(CLI::IsMember({"vf", "ee", "vertex-face", "edge-edge"}));
 }
 
+void add_check_type_option(CLI::App* command, std::string& type_name) {
+  command
+      ->add_option("--type", type_name,
+                   std::string(kTypeHelp) +
+                       "; or a point kind, whose files are given one by one: pe (point-edge, 6 "
+                       "rows per query: p, e0, e1 at t0 then t1), pe2d (the same in the plane, "
+                       "5 columns x_num,x_den,y_num,y_den,truth), pp (point-point, 4 rows: p, q), "
+                       "pp2d, pl (point-plane, 6 rows: p, origin, normal)")
+      ->check(CLI::IsMember(
+          {"vf", "ee", "vertex-face", "edge-edge", "pe", "pe2d", "pp", "pp2d", "pl"}));
+}
+
 void add_t_max_option(CLI::App* command, double& t_max) {
   command->add_option("--t-max", t_max, "End of the time interval [0, T]; T in (0, 1]")
       ->check(numeric_text(false))

@@ -35,6 +35,9 @@ CLI::Validator seed_text();
 void add_force_flag(CLI::App* command, bool& force);
 /// --type vf|ee|vertex-face|edge-edge (parse_type_name).
 void add_type_option(CLI::App* command, std::string& type_name);
+/// `exactccd check`'s --type: the benchmark's kinds, and the point kinds and the plane
+/// (pe|pe2d|pp|pp2d|pl: primitive_kind_from_name).
+void add_check_type_option(CLI::App* command, std::string& type_name);
 void add_t_max_option(CLI::App* command, double& t_max);
 /// --min-separation D: the run decides minimum-separation CCD with delta = D (0: contact).
 void add_min_separation_option(CLI::App* command, double& delta);

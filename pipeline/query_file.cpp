@@ -262,28 +262,40 @@ mpz_class parse_integer(std::string_view s) {
 
 }  // namespace
 
-QueryFile read_query_file(const std::string& path, QueryType type) {
+namespace {
+
+/// The rows of a query file: `rows` rows per query, each with the coordinate columns of
+/// `dimension` (2 or 3) coordinates and a truth column; emit(points, truth, first_line) per
+/// query. Every error names the file and line.
+template <class Emit>
+void read_query_rows(const std::string& path, std::size_t rows, int dimension, Emit&& emit) {
   LineReader in(path, "a CSV file");
-  QueryFile file{path, type, {}};
-  static const char* const kColumns[7] = {"x_num", "x_den", "y_num", "y_den",
-                                          "z_num", "z_den", "truth"};
+  static const char* const kColumns3[7] = {"x_num", "x_den", "y_num", "y_den",
+                                           "z_num", "z_den", "truth"};
+  static const char* const kColumns2[5] = {"x_num", "x_den", "y_num", "y_den", "truth"};
+  const char* const* columns = dimension == 3 ? kColumns3 : kColumns2;
+  const std::size_t count = dimension == 3 ? 7 : 5;
+  const std::string header = dimension == 3 ? "(x_num,x_den,y_num,y_den,z_num,z_den,truth)"
+                                            : "(x_num,x_den,y_num,y_den,truth)";
   std::string line;
   std::size_t row = 0;
   std::size_t blank_in_query = 0;  // line of a blank line after a partial query, 0 for none
-  QueryRecord current;
+  std::size_t first_line = 0;
+  bool truth = false;
+  std::vector<RationalPoint> points(rows);
   while (in.next(line)) {
     const std::size_t line_no = in.line_number();
     const std::string_view text = trim(line);
     if (text.empty()) {  // a blank line: allowed between queries only
-      if (row % 8 != 0 && blank_in_query == 0) blank_in_query = line_no;
+      if (row % rows != 0 && blank_in_query == 0) blank_in_query = line_no;
       continue;
     }
     if (blank_in_query != 0)
       throw InputError(path, blank_in_query,
                        "blank line inside a query (the query starting at line " +
-                           std::to_string(current.first_line) + " has " +
-                           std::to_string(row % 8) +
-                           " of its 8 rows; blank lines may only stand between queries)");
+                           std::to_string(first_line) + " has " + std::to_string(row % rows) +
+                           " of its " + std::to_string(rows) +
+                           " rows; blank lines may only stand between queries)");
     std::vector<std::string_view> fields;
     std::size_t start = 0;
     for (;;) {
@@ -292,51 +304,99 @@ QueryFile read_query_file(const std::string& path, QueryType type) {
       if (comma == std::string_view::npos) break;
       start = comma + 1;
     }
-    if (fields.size() != 7)
+    if (fields.size() != count)
       throw InputError(path, line_no,
-                       "expected 7 comma-separated columns "
-                       "(x_num,x_den,y_num,y_den,z_num,z_den,truth), found " +
-                           std::to_string(fields.size()));
+                       "expected " + std::to_string(count) + " comma-separated columns " +
+                           header + ", found " + std::to_string(fields.size()));
     mpz_class v[7];
-    for (int i = 0; i < 7; ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
       if (!is_integer(fields[i]))
         throw InputError(path, line_no,
-                         std::string("column ") + kColumns[i] +
+                         std::string("column ") + columns[i] +
                              " is not an integer: " + quote_for_message(fields[i]));
       v[i] = parse_integer(fields[i]);
     }
-    for (int i = 1; i < 6; i += 2)
+    for (std::size_t i = 1; i + 1 < count; i += 2)
       if (sgn(v[i]) == 0)
-        throw InputError(path, line_no, std::string("zero denominator in column ") + kColumns[i]);
-    if (v[6] != 0 && v[6] != 1)
-      throw InputError(path, line_no, "truth must be 0 or 1, found " + v[6].get_str());
-    const bool truth = v[6] == 1;
-    const std::size_t k = row % 8;
+        throw InputError(path, line_no, std::string("zero denominator in column ") + columns[i]);
+    const mpz_class& t = v[count - 1];
+    if (t != 0 && t != 1)
+      throw InputError(path, line_no, "truth must be 0 or 1, found " + t.get_str());
+    const std::size_t k = row % rows;
     if (k == 0) {
-      current = QueryRecord{};
-      current.query.type = type;
-      current.truth = truth;
-      current.first_line = line_no;
-    } else if (truth != current.truth) {
+      truth = t == 1;
+      first_line = line_no;
+    } else if ((t == 1) != truth) {
       throw InputError(path, line_no,
                        "truth differs within a query (the query starting at line " +
-                           std::to_string(current.first_line) + ")");
+                           std::to_string(first_line) + ")");
     }
-    RationalPoint& pt = current.query.points[k];
+    RationalPoint& pt = points[k];
     pt.x = mpq_class(v[0], v[1]);
     pt.y = mpq_class(v[2], v[3]);
-    pt.z = mpq_class(v[4], v[5]);
+    pt.z = dimension == 3 ? mpq_class(v[4], v[5]) : mpq_class(0);
     pt.x.canonicalize();
     pt.y.canonicalize();
     pt.z.canonicalize();
-    if (k == 7) file.queries.push_back(std::move(current));
+    if (k + 1 == rows) emit(points, truth, first_line);
     ++row;
   }
-  if (row % 8 != 0)
+  if (row % rows != 0)
     throw InputError(path, in.line_number(),
-                     "query cut short: " + std::to_string(row % 8) +
-                         " rows in the last query (8 per query), starting at line " +
-                         std::to_string(current.first_line));
+                     "query cut short: " + std::to_string(row % rows) + " rows in the last query (" +
+                         std::to_string(rows) + " per query), starting at line " +
+                         std::to_string(first_line));
+}
+
+}  // namespace
+
+QueryFile read_query_file(const std::string& path, QueryType type) {
+  QueryFile file{path, type, {}};
+  read_query_rows(path, 8, 3,
+                  [&](const std::vector<RationalPoint>& points, bool truth, std::size_t line) {
+                    QueryRecord record;
+                    record.query.type = type;
+                    std::copy(points.begin(), points.end(), record.query.points.begin());
+                    record.truth = truth;
+                    record.first_line = line;
+                    file.queries.push_back(std::move(record));
+                  });
+  return file;
+}
+
+const char* to_string(PrimitiveKind kind) noexcept {
+  switch (kind) {
+    case PrimitiveKind::point_edge: return "pe";
+    case PrimitiveKind::point_edge_2d: return "pe2d";
+    case PrimitiveKind::point_point: return "pp";
+    case PrimitiveKind::point_point_2d: return "pp2d";
+    case PrimitiveKind::point_plane: return "pl";
+  }
+  return "unknown";
+}
+
+std::optional<PrimitiveKind> primitive_kind_from_name(std::string_view name) {
+  for (const PrimitiveKind k : {PrimitiveKind::point_edge, PrimitiveKind::point_edge_2d,
+                                PrimitiveKind::point_point, PrimitiveKind::point_point_2d,
+                                PrimitiveKind::point_plane})
+    if (name == to_string(k)) return k;
+  return std::nullopt;
+}
+
+std::size_t rows_per_query(PrimitiveKind kind) noexcept {
+  return kind == PrimitiveKind::point_point || kind == PrimitiveKind::point_point_2d ? 4 : 6;
+}
+
+int dimension_of(PrimitiveKind kind) noexcept {
+  return kind == PrimitiveKind::point_edge_2d || kind == PrimitiveKind::point_point_2d ? 2 : 3;
+}
+
+PrimitiveQueryFile read_primitive_query_file(const std::string& path, PrimitiveKind kind) {
+  PrimitiveQueryFile file{path, kind, {}};
+  read_query_rows(path, rows_per_query(kind), dimension_of(kind),
+                  [&](const std::vector<RationalPoint>& points, bool truth, std::size_t line) {
+                    file.queries.push_back({points, truth, line});
+                  });
   return file;
 }
 

@@ -20,9 +20,16 @@ namespace {
 // untyped file fails at once.
 std::vector<std::pair<std::string, QueryType>> list_files(const CheckOptions& options) {
   std::vector<std::pair<std::string, QueryType>> files;
-  for (const std::string& path : options.paths)
+  for (const std::string& path : options.paths) {
+    if (options.primitive) {  // a point kind: the files themselves
+      require_regular_file(path, std::string("a query file of --type ") +
+                                     to_string(*options.primitive));
+      files.emplace_back(path, QueryType::edge_edge);  // the type is unused for these
+      continue;
+    }
     for (const std::string& file : find_query_files(path))
       files.emplace_back(file, resolve_query_type(file, options.type));
+  }
   return files;
 }
 
@@ -61,12 +68,13 @@ int run_check(const CheckOptions& options) {
   std::vector<std::string> empty_files;
   for (std::size_t k = 0; k < files.size(); ++k) {
     const std::string& file = files[k].first;
-    CheckTally tally = check_file(
-        file, files[k].second, settings,
-        [&](std::size_t index, std::size_t count, const CcdResult& result) {
-          if (out_file) write_result_line(*out_file, file, index, result);
-          progress.update(k, files.size(), file, index + 1, count);
-        });
+    const auto visit = [&](std::size_t index, std::size_t count, const CcdResult& result) {
+      if (out_file) write_result_line(*out_file, file, index, result);
+      progress.update(k, files.size(), file, index + 1, count);
+    };
+    CheckTally tally = options.primitive
+                           ? check_primitive_file(file, *options.primitive, settings, visit)
+                           : check_file(file, files[k].second, settings, visit);
     if (tally.queries == 0) empty_files.push_back(tally.file);
     total.add(tally);
     tallies.push_back(std::move(tally));

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "exactccd/query_file.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::cli {
@@ -13,6 +14,8 @@ namespace exactccd::cli {
 struct CheckOptions {
   std::vector<std::string> paths;  ///< CSV files or directories searched for them
   std::optional<QueryType> type;   ///< --type: overrides the type from the folder name
+  /// --type pe|pe2d|pp|pp2d|pl: files of a point kind or the plane (paths must be files).
+  std::optional<PrimitiveKind> primitive;
   double t_max = 1.0;
   double min_separation = 0.0;  ///< --min-separation: delta >= 0 (0: contact)
   Mode mode = Mode::filtered;  ///< --mode: the path that decides every query

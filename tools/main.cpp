@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
                     "Write one line per query: file,index,collides,toi_lo,toi_hi (index 0-based "
                     "in its file, TOI with 17 significant digits, inf when no contact)");
   add_force_flag(check, check_options.force);
-  add_type_option(check, check_type);
+  add_check_type_option(check, check_type);
   add_t_max_option(check, check_options.t_max);
   add_min_separation_option(check, check_options.min_separation);
   check
@@ -400,6 +400,7 @@ int main(int argc, char** argv) {
     if (check->parsed()) {
       if (check_json) check_options.format = "json";
       check_options.type = parse_type_name(check_type);
+      check_options.primitive = exactccd::primitive_kind_from_name(check_type);
       check_options.mode = *parse_mode_name(check_mode);
       return run_check(check_options);
     }

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -141,6 +142,60 @@ EXACTCCD_API std::string printable(std::string_view text);
 /// \return every query, exactly, with its truth and line.
 /// \throws InputError as listed above, naming the file and line.
 EXACTCCD_API QueryFile read_query_file(const std::string& path, QueryType type);
+
+/// The kinds of query files beyond the benchmark's vertex-face and edge-edge: the same CSV
+/// form, with these rows per query (the points at t0, then the same points at t1):
+/// point-edge `pe` 6 (p, e0, e1), point-point `pp` 4 (p, q), point-plane `pl` 6 (p, origin,
+/// normal); the 2D kinds `pe2d` (6 rows) and `pp2d` (4 rows) have 5 columns,
+/// x_num,x_den,y_num,y_den,truth.
+enum class PrimitiveKind : std::uint8_t {
+  point_edge,      ///< `pe`: point_edge_ccd
+  point_edge_2d,   ///< `pe2d`: point_edge_ccd_2d
+  point_point,     ///< `pp`: point_point_ccd
+  point_point_2d,  ///< `pp2d`: point_point_ccd_2d
+  point_plane,     ///< `pl`: point_plane_ccd
+};
+
+/// The kind's short name, as `exactccd check --type` takes it. Never throws.
+/// \param kind a kind.
+/// \return "pe", "pe2d", "pp", "pp2d" or "pl".
+EXACTCCD_API const char* to_string(PrimitiveKind kind) noexcept;
+/// The kind named `name` (its short name), or nullopt.
+/// \param name a short name.
+/// \return the kind, or nullopt.
+EXACTCCD_API std::optional<PrimitiveKind> primitive_kind_from_name(std::string_view name);
+/// Rows per query of the kind's files. Never throws.
+/// \param kind a kind.
+/// \return 6 or 4.
+EXACTCCD_API std::size_t rows_per_query(PrimitiveKind kind) noexcept;
+/// Coordinates per row of the kind's files. Never throws.
+/// \param kind a kind.
+/// \return 3, or 2 for the 2D kinds.
+EXACTCCD_API int dimension_of(PrimitiveKind kind) noexcept;
+
+/// One query of a file of one of these kinds, read exactly (2D points with z = 0).
+struct PrimitiveQueryRecord {
+  std::vector<RationalPoint> points;  ///< rows_per_query points: those at t0, then at t1
+  bool truth = false;                 ///< the file's truth column
+  std::size_t first_line = 0;         ///< 1-based line of the query's first row
+};
+
+/// A whole file of one of these kinds.
+struct PrimitiveQueryFile {
+  std::string path;                           ///< as given
+  PrimitiveKind kind = PrimitiveKind::point_edge;  ///< the kind of every query
+  std::vector<PrimitiveQueryRecord> queries;  ///< in file order
+};
+
+/// Reads and validates a file of `kind`, with the rules of read_query_file (columns, integers,
+/// zero denominators, truth, blank lines, a query cut short), for its rows per query and
+/// columns.
+/// \param path the file.
+/// \param kind the kind of its queries.
+/// \return every query, exactly.
+/// \throws InputError naming the file and line.
+EXACTCCD_API PrimitiveQueryFile read_primitive_query_file(const std::string& path,
+                                                          PrimitiveKind kind);
 
 /// `path` itself when it is a file; for a directory, every `vertex-face/*.csv` and
 /// `edge-edge/*.csv` below it, sorted, except files whose name starts with `toi_` (the TOI
