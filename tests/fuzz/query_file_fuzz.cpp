@@ -1,7 +1,8 @@
 // libFuzzer harness: the benchmark CSV reader (read_query_file) on arbitrary bytes, then the
 // public double API on every query it decodes.
 //
-// Properties: the reader returns or throws exactccd::InputError, nothing else (any other
+// Properties: the reader (and that of the point kinds, read_primitive_query_file) returns or
+// throws exactccd::InputError, nothing else (any other
 // exception escapes and aborts); every decoded query has its 8 points and its first line; and
 // each query, read as vertex-face and as edge-edge with its coordinates rounded to doubles
 // (toward zero; the exact ones stay exact), satisfies the API's contract: non-finite ones are
@@ -19,6 +20,18 @@ using namespace exactccd;
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::string path = (fuzz::scratch_folder() / "queries.csv").string();
   fuzz::write_file(path, data, size);
+  // The readers of the point kinds and the plane (their rows and columns): they too return or
+  // throw InputError, and each query has its rows.
+  for (const PrimitiveKind kind : {PrimitiveKind::point_edge, PrimitiveKind::point_edge_2d,
+                                   PrimitiveKind::point_point, PrimitiveKind::point_point_2d,
+                                   PrimitiveKind::point_plane}) {
+    try {
+      for (const PrimitiveQueryRecord& record : read_primitive_query_file(path, kind).queries)
+        fuzz::require(record.points.size() == rows_per_query(kind),
+                      "a point query without its rows");
+    } catch (const InputError&) {
+    }
+  }
   QueryFile file;
   try {
     file = read_query_file(path, QueryType::vertex_face);
