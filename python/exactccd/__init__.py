@@ -64,9 +64,8 @@ from .query_files import (
     write_query_file,
 )
 
-for _type in (CcdResult, ContactGeometry, EarliestContact, InputError, RigidCcdResult, RigidMotion, Scene,
-              SceneContact, ScenePair, SceneResult,
-              SceneStats, StepResult):
+for _type in (CcdResult, ContactGeometry, EarliestContact, InputError, RigidCcdResult, RigidMotion,
+              Scene, SceneContact, ScenePair, SceneResult, SceneStats, StepResult):
     _type.__module__ = __name__
 
 # Arguments of the wrong type: one line naming the public function, not pybind11's listing.
@@ -139,16 +138,17 @@ def _options(function, t_max, toi_width, mode, min_separation):
             _arguments.real(function, "min_separation", min_separation))
 
 __all__ = [
-    "BatchResult", "CcdResult", "ContactGeometry", "EarliestContact", "InputError", "MODE_NAMES",
-    "QueryData", "QueryType", "RigidCcdResult", "RigidMotion", "STAGE_NAMES", "Scene",
-    "SceneContact", "ScenePair", "SceneResult", "SceneStats", "StepResult", "__version__",
-    "edge_edge_ccd", "edge_edge_ccd_batch", "edge_edge_collision_free_step", "exact_ccd",
-    "find_query_files", "point_edge_ccd", "point_edge_ccd_batch", "point_edge_collision_free_step",
-    "point_plane_ccd", "point_point_ccd", "point_point_ccd_batch",
-    "point_point_collision_free_step", "query_type_from_path", "read_query_file",
-    "read_query_file_exact", "rigid_edge_edge_ccd", "rigid_edge_edge_collision_free_step",
-    "rigid_vertex_face_ccd", "rigid_vertex_face_collision_free_step", "vertex_face_ccd",
-    "vertex_face_ccd_batch", "vertex_face_collision_free_step", "write_query_file",
+    "BatchContact", "BatchResult", "CONTACT_KIND_NAMES", "CcdResult", "ContactGeometry",
+    "EarliestContact", "InputError", "MODE_NAMES", "QueryData", "QueryType", "RigidCcdResult",
+    "RigidMotion", "STAGE_NAMES", "Scene", "SceneContact", "ScenePair", "SceneResult",
+    "SceneStats", "StepResult", "__version__", "edge_edge_ccd", "edge_edge_ccd_batch",
+    "edge_edge_collision_free_step", "exact_ccd", "find_query_files", "point_edge_ccd",
+    "point_edge_ccd_batch", "point_edge_collision_free_step", "point_plane_ccd", "point_point_ccd",
+    "point_point_ccd_batch", "point_point_collision_free_step", "query_type_from_path",
+    "read_query_file", "read_query_file_exact", "rigid_edge_edge_ccd",
+    "rigid_edge_edge_collision_free_step", "rigid_vertex_face_ccd",
+    "rigid_vertex_face_collision_free_step", "vertex_face_ccd", "vertex_face_ccd_batch",
+    "vertex_face_collision_free_step", "write_query_file",
 ]
 
 
@@ -373,54 +373,91 @@ class BatchResult(NamedTuple):
         """The stage of each query by name."""
         return [STAGE_NAMES[code] for code in self.stage]
 
+    @property
+    def contact(self):
+        """The contact geometry of every query (BatchContact) when asked for with contact=True;
+        None otherwise."""
+        return getattr(self, "__dict__", {}).get("contact")
+
+
+CONTACT_KIND_NAMES = ("point", "at_start", "unresolved")
+
+
+class BatchContact(NamedTuple):
+    """The contact geometry of a batch, one entry per query (C++: exactccd::contact_geometry):
+    NaN and kind -1 for a query without contact."""
+    parameters: np.ndarray       # (N, k, 2) float64: [lo, hi] of each parameter
+    normal: np.ndarray           # (N, 3, 2) float64: [lo, hi] of each normal component
+    point: np.ndarray            # (N, 3, 2) float64: [lo, hi] of each coordinate
+    kind: np.ndarray             # (N,) int8: index into CONTACT_KIND_NAMES, -1 without contact
+    normal_oriented: np.ndarray  # (N,) bool
+
+
+class _BatchResultWithContact(BatchResult):
+    """A BatchResult (still a 4-tuple) that carries its BatchContact."""
+
 
 def vertex_face_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
                           mode: str = "filtered", threads: Optional[int] = None,
-                          min_separation: float = 0.0) -> BatchResult:
+                          min_separation: float = 0.0, contact: bool = False) -> BatchResult:
     """Decides N vertex-face queries: an (N, 8, 3) array, rows p, a, b, c at t0 then at t1.
 
     Runs without the GIL, in parallel over `threads` threads (None: every core; 1: serially on
-    the calling thread). Results equal one vertex_face_ccd call per query. Raises ValueError
-    for a wrong shape, bad options, or a bad query (the message names the first one's index).
+    the calling thread). Results equal one vertex_face_ccd call per query. contact=True: the
+    result's `contact` is the BatchContact of every query (numpy arrays; certified modes,
+    min_separation 0). Raises ValueError for a wrong shape, bad options, or a bad query (the
+    message names the first one's index).
     """
     return _batch("vertex_face_ccd_batch", "vertex-face", queries, t_max, toi_width, mode,
-                  threads, min_separation)
+                  threads, min_separation, contact)
 
 
 def edge_edge_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
                         mode: str = "filtered", threads: Optional[int] = None,
-                        min_separation: float = 0.0) -> BatchResult:
+                        min_separation: float = 0.0, contact: bool = False) -> BatchResult:
     """Decides N edge-edge queries: an (N, 8, 3) array, rows ea0, ea1, eb0, eb1 at t0 then at
     t1. As vertex_face_ccd_batch."""
     return _batch("edge_edge_ccd_batch", "edge-edge", queries, t_max, toi_width, mode, threads,
-                  min_separation)
+                  min_separation, contact)
 
 
-def _batch(function, type, queries, t_max, toi_width, mode, threads, min_separation):
+def _batch(function, type, queries, t_max, toi_width, mode, threads, min_separation,
+           contact=False, keep=None):
     t_max, toi_width, mode, min_separation = _options(function, t_max, toi_width, mode,
                                                       min_separation)
     threads = _arguments.count_or_none(function, "threads", threads)
-    return BatchResult(*_exactccd._ccd_batch(type, queries, t_max, toi_width, mode, threads,
-                                             min_separation))
+    if not isinstance(contact, (bool, np.bool_)):
+        raise TypeError(f"{function}(): contact must be True or False, not "
+                        f"{contact.__class__.__name__}")
+    fields = _exactccd._ccd_batch(type, queries, t_max, toi_width, mode, threads,
+                                  min_separation, bool(contact))
+    if not contact:
+        return BatchResult(*fields)
+    result = _BatchResultWithContact(*fields[:4])
+    parameters, normal, point, kind, oriented = fields[4]
+    if keep is not None:
+        parameters = parameters[:, keep]
+    result.__dict__["contact"] = BatchContact(parameters, normal, point, kind, oriented)
+    return result
 
 
 def point_edge_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
                          mode: str = "filtered", threads: Optional[int] = None,
-                         min_separation: float = 0.0) -> BatchResult:
+                         min_separation: float = 0.0, contact: bool = False) -> BatchResult:
     """Decides N point-edge queries: an (N, 6, 3) or (N, 6, 2) array, rows p, e0, e1 at t0 then
     at t1. As vertex_face_ccd_batch; results equal one point_edge_ccd call per query."""
     array = _in_space("point_edge_ccd_batch", np.asarray(queries, dtype=np.float64),
                       _POINT_EDGE_ROWS, 1)
     return _batch("point_edge_ccd_batch", "edge-edge", array[:, _POINT_EDGE_AS_EDGE_EDGE], t_max,
-                  toi_width, mode, threads, min_separation)
+                  toi_width, mode, threads, min_separation, contact, keep=slice(1, 2))
 
 
 def point_point_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
                           mode: str = "filtered", threads: Optional[int] = None,
-                          min_separation: float = 0.0) -> BatchResult:
+                          min_separation: float = 0.0, contact: bool = False) -> BatchResult:
     """Decides N point-point queries: an (N, 4, 3) or (N, 4, 2) array, rows p, q at t0 then at
     t1. As vertex_face_ccd_batch."""
     array = _in_space("point_point_ccd_batch", np.asarray(queries, dtype=np.float64),
                       _POINT_POINT_ROWS, 1)
     return _batch("point_point_ccd_batch", "edge-edge", array[:, _POINT_POINT_AS_EDGE_EDGE],
-                  t_max, toi_width, mode, threads, min_separation)
+                  t_max, toi_width, mode, threads, min_separation, contact, keep=slice(0, 0))

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <exception>
 #include <limits>
@@ -14,6 +15,7 @@
 
 #include "bindings.hpp"
 #include "exactccd/ccd.hpp"
+#include "exactccd/contact.hpp"
 #include "exactccd/scene.hpp"
 
 namespace exactccd::python {
@@ -59,10 +61,28 @@ CcdResult decide(QueryType type, const double* data, const CcdOptions& options) 
              : edge_edge_ccd(query_of<EdgeEdgeQuery>(data), options);
 }
 
+ContactGeometry geometry(QueryType type, const double* data, const CcdResult& r) {
+  return type == QueryType::vertex_face
+             ? contact_geometry(query_of<VertexFaceQuery>(data), r)
+             : contact_geometry(query_of<EdgeEdgeQuery>(data), r);
+}
+
+/// Writes k enclosures as k rows of [lo, hi].
+void write_enclosures(double* out, const Enclosure* e, int k) {
+  for (int i = 0; i < k; ++i) {
+    out[2 * i] = e[i].lo;
+    out[2 * i + 1] = e[i].hi;
+  }
+}
+
 py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
                        double toi_width, const std::string& mode,
-                       const std::optional<int>& threads, double min_separation) {
+                       const std::optional<int>& threads, double min_separation, bool contact) {
   const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
+  if (contact && options.mode == Mode::float_only)
+    throw py::value_error("contact=True needs a certified mode (\"filtered\" or \"exact\")");
+  if (contact && options.min_separation != 0.0)
+    throw py::value_error("contact=True gives the geometry of contact (min_separation=0)");
   if (threads && (*threads < 1 || *threads > kMaxThreads))
     throw py::value_error("threads must be in [1, " + std::to_string(kMaxThreads) +
                           "] (or None for every core), not " +
@@ -78,6 +98,19 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
   double* out_lo = toi_lo.mutable_data();
   double* out_hi = toi_hi.mutable_data();
   std::uint8_t* out_stage = stage.mutable_data();
+  // The contact geometry (contact=True): NaN and kind -1 for the queries without contact.
+  const int k = type == QueryType::vertex_face ? 3 : 2;
+  const auto rows = static_cast<py::ssize_t>(contact ? n : 0);
+  py::array_t<double> parameters({rows, static_cast<py::ssize_t>(k), py::ssize_t{2}});
+  py::array_t<double> normal({rows, py::ssize_t{3}, py::ssize_t{2}});
+  py::array_t<double> point({rows, py::ssize_t{3}, py::ssize_t{2}});
+  py::array_t<std::int8_t> kind(rows);
+  py::array_t<bool> oriented(rows);
+  double* out_parameters = parameters.mutable_data();
+  double* out_normal = normal.mutable_data();
+  double* out_point = point.mutable_data();
+  std::int8_t* out_kind = kind.mutable_data();
+  bool* out_oriented = oriented.mutable_data();
 
   FirstFailure failure;
   {
@@ -90,6 +123,22 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
           out_lo[i] = r.toi_lo;
           out_hi[i] = r.toi_hi;
           out_stage[i] = static_cast<std::uint8_t>(r.decided_by);
+          if (!contact) continue;
+          if (!r.collides) {
+            constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+            std::fill(out_parameters + 2 * k * i, out_parameters + 2 * k * (i + 1), nan);
+            std::fill(out_normal + 6 * i, out_normal + 6 * (i + 1), nan);
+            std::fill(out_point + 6 * i, out_point + 6 * (i + 1), nan);
+            out_kind[i] = -1;
+            out_oriented[i] = false;
+            continue;
+          }
+          const ContactGeometry g = geometry(type, data + 24 * i, r);
+          write_enclosures(out_parameters + 2 * k * i, g.parameters.data(), k);
+          write_enclosures(out_normal + 6 * i, g.normal.data(), 3);
+          write_enclosures(out_point + 6 * i, g.point.data(), 3);
+          out_kind[i] = static_cast<std::int8_t>(g.kind);
+          out_oriented[i] = g.normal_oriented;
         } catch (...) {
           failure.record(i, std::current_exception());
           return;  // later queries of this range cannot lower the index
@@ -109,7 +158,9 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
     }
   }
   failure.raise_if_any();
-  return py::make_tuple(collides, toi_lo, toi_hi, stage);
+  if (!contact) return py::make_tuple(collides, toi_lo, toi_hi, stage);
+  return py::make_tuple(collides, toi_lo, toi_hi, stage,
+                        py::make_tuple(parameters, normal, point, kind, oriented));
 }
 
 }  // namespace
@@ -118,12 +169,13 @@ void bind_batch(py::module_& m) {
   m.def(
       "_ccd_batch",
       [](const std::string& type, const py::handle& queries, double t_max, double toi_width,
-         const std::string& mode, const std::optional<int>& threads, double min_separation) {
+         const std::string& mode, const std::optional<int>& threads, double min_separation,
+         bool contact) {
         return decide_batch(parse_query_type(type), queries, t_max, toi_width, mode, threads,
-                            min_separation);
+                            min_separation, contact);
       },
       py::arg("type"), py::arg("queries"), py::arg("t_max"), py::arg("toi_width"),
-      py::arg("mode"), py::arg("threads"), py::arg("min_separation"));
+      py::arg("mode"), py::arg("threads"), py::arg("min_separation"), py::arg("contact") = false);
 }
 
 }  // namespace exactccd::python

@@ -129,3 +129,39 @@ def test_scene_contact_geometry():
             # A sheet vertex lands on the floor: the floor's normal, towards where it came from.
             assert g.normal[2][0] > 0.999
         assert rows.shape == (8, 3)
+
+
+def test_batch_contact_geometry_equals_single_calls():
+    rng = np.random.default_rng(3)
+    base_vf = np.array([[0.2, 0.2, 0.5], [0, 0, 0], [1, 0, 0], [0, 1, 0],
+                        [0.3, 0.2, -0.5], [0, 0, 0], [1, 0, 0], [0, 1, 0]])
+    base_ee = np.array([[-1, 0, 0.5], [1, 0, 0.5], [0, -1, 0], [0, 1, 0],
+                        [-1, 0, -0.5], [1, 0, -0.5], [0, -1, 0], [0, 1, 0]])
+    for base, batch, single, moving in ((base_vf, exactccd.vertex_face_ccd_batch,
+                                         exactccd.vertex_face_ccd, [4]),
+                                        (base_ee, exactccd.edge_edge_ccd_batch,
+                                         exactccd.edge_edge_ccd, [4, 5])):
+        queries = base + rng.uniform(-0.2, 0.2, (200, 8, 3))
+        for row in moving:  # every third query: the vertex (edge a) stays above
+            queries[::3, row, 2] += 2.0
+        result = batch(queries, contact=True, threads=2)
+        collides, toi_lo, toi_hi, stage = result  # still a 4-tuple
+        c = result.contact
+        assert c.normal.shape == (200, 3, 2) and c.kind.dtype == np.int8
+        assert 20 < collides.sum() < 200
+        for i in range(200):
+            r = single(queries[i], contact=True)
+            if not r.collides:
+                assert c.kind[i] == -1 and np.isnan(c.normal[i]).all()
+                continue
+            g = r.contact
+            assert exactccd.CONTACT_KIND_NAMES[c.kind[i]] == g.kind
+            assert (c.parameters[i] == g.parameters).all()
+            assert (c.normal[i] == g.normal).all() and (c.point[i] == g.point).all()
+            assert c.normal_oriented[i] == g.normal_oriented
+    assert exactccd.vertex_face_ccd_batch(base_vf[None]).contact is None
+    pe = exactccd.point_edge_ccd_batch(np.array([[(0.25, 1), (0, 0), (1, 0), (0.25, -1), (0, 0),
+                                                  (1, 0)]]), contact=True)
+    assert pe.contact.parameters.tolist() == [[[0.25, 0.25]]]
+    with pytest.raises(ValueError, match="certified mode"):
+        exactccd.vertex_face_ccd_batch(base_vf[None], mode="float_only", contact=True)
