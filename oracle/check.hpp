@@ -49,6 +49,12 @@ CheckTally check_queries(const QueryFile& input, std::size_t begin, std::size_t 
 CheckTally check_primitive_file(const std::string& path, PrimitiveKind kind,
                                 const CheckSettings& settings, const CheckVisitor& on_query = {});
 
+/// The file of a point kind (pe, pe2d, pp, pp2d) as the edge-edge queries its queries are, each
+/// point the zero-length segment [p, p] (rows copied; proofs/api_reductions.md,
+/// point-primitives), with their truth and first lines. Throws InputError for the plane (pl),
+/// which is no edge-edge query.
+QueryFile as_edge_edge_file(const PrimitiveQueryFile& file);
+
 /// Counts one decided query into `tally`: a collision, a disagreement with `truth`, its stage.
 void count_query(CheckTally& tally, const CcdResult& result, bool truth);
 

@@ -75,6 +75,23 @@ CcdResult decide(const PrimitiveQueryFile& file, const PrimitiveQueryRecord& r,
 
 }  // namespace
 
+QueryFile as_edge_edge_file(const PrimitiveQueryFile& file) {
+  if (file.kind == PrimitiveKind::point_plane)
+    throw InputError(file.path, 0,
+                     "point-plane queries (--type pl) are not edge-edge queries: grade does not "
+                     "take them yet");
+  QueryFile out{file.path, QueryType::edge_edge, {}};
+  out.queries.reserve(file.queries.size());
+  for (const PrimitiveQueryRecord& r : file.queries) {
+    QueryRecord record;
+    record.query = as_edge_edge(r, file.kind);
+    record.truth = r.truth;
+    record.first_line = r.first_line;
+    out.queries.push_back(std::move(record));
+  }
+  return out;
+}
+
 CheckTally check_primitive_file(const std::string& path, PrimitiveKind kind,
                                 const CheckSettings& settings, const CheckVisitor& on_query) {
   const PrimitiveQueryFile input = read_primitive_query_file(path, kind);

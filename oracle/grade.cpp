@@ -6,6 +6,7 @@
 #include "exactccd/rational_query.hpp"
 #include "exactccd/query_file.hpp"
 #include "oracle/answers_file.hpp"
+#include "oracle/check.hpp"
 #include "oracle/common.hpp"
 #include "oracle/names.hpp"
 
@@ -38,10 +39,13 @@ bool later_than_first_contact(const mpq_class& toi, const RationalQuery& query,
 
 GradeFindings grade_file(const std::string& queries_path, const std::string& answers_path,
                          std::optional<QueryType> type, double t_max,
-                         const GradeProgress& progress, double min_separation) {
+                         const GradeProgress& progress, double min_separation,
+                         std::optional<PrimitiveKind> primitive) {
   // Before the type: a folder given as the queries is named as such, not as an untyped file.
   require_regular_file(queries_path, "a CSV file (--queries takes one file)");
-  const QueryFile input = read_query_file(queries_path, resolve_query_type(queries_path, type));
+  const QueryFile input =
+      primitive ? as_edge_edge_file(read_primitive_query_file(queries_path, *primitive))
+                : read_query_file(queries_path, resolve_query_type(queries_path, type));
   require_some_queries(input.queries.empty() ? std::vector<std::string>{input.path}
                                              : std::vector<std::string>{},
                        1, input.queries.size());

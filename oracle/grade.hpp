@@ -24,9 +24,12 @@ using GradeProgress = std::function<void(std::size_t done, std::size_t count)>;
 /// negatives, and TOIs later than the exact first contact time. Throws InputError for a
 /// queries path that is not a regular file, an unreadable or malformed file, a file without
 /// queries, an unknown type, or an answers file that does not match (answers_file.hpp).
+/// `primitive`: a file of a point kind (pe, pe2d, pp, pp2d), graded as the edge-edge queries
+/// its queries are (check.hpp, as_edge_edge_file).
 GradeFindings grade_file(const std::string& queries_path, const std::string& answers_path,
                          std::optional<QueryType> type, double t_max,
-                         const GradeProgress& progress = {}, double min_separation = 0.0);
+                         const GradeProgress& progress = {}, double min_separation = 0.0,
+                         std::optional<PrimitiveKind> primitive = std::nullopt);
 
 /// The same on answers [begin, end) of files already read (`end` clipped to the query count;
 /// indices are the file's): one shard of it, e.g. a task of a distributed grade. `answers` as

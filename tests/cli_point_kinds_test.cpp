@@ -101,5 +101,27 @@ TEST_F(CliTest, CheckOfAPointKindRejectsBadFiles) {
                    {"f.csv:1:", "point-plane queries are decided on doubles only"});
 }
 
+TEST_F(CliTest, GradeTakesThePointKindsAsTheirEdgeEdgeQueries) {
+  // The crossing point-edge query answered at 1/2 (exact, conservative) or 3/4 (late), the
+  // other one answered 0; the 2D point-point file's first query answered with no contact.
+  const fs::path pe = write_file("pe.csv", kPointEdge);
+  const RunResult good = run({"grade", "--type", "pe", "--queries", pe.string(), "--answers",
+                              write_file("good.txt", "1,0.5\n0\n").string()});
+  EXPECT_EQ(good.status, 0) << good.err;
+  const RunResult late = run({"grade", "--type", "pe", "--json", "--queries", pe.string(),
+                              "--answers", write_file("late.txt", "1,0.75\n0\n").string()});
+  EXPECT_EQ(late.status, 1) << late.err;
+  EXPECT_EQ(nlohmann::json::parse(late.out)["non_conservative_tois"].get<int>(), 1) << late.out;
+  const fs::path pp = write_file("pp.csv", kPointPoint2d);
+  const RunResult missed = run({"grade", "--type", "pp2d", "--json", "--queries", pp.string(),
+                                "--answers", write_file("missed.txt", "0\n0\n").string()});
+  EXPECT_EQ(missed.status, 1) << missed.err;
+  EXPECT_EQ(nlohmann::json::parse(missed.out)["false_negatives"].get<int>(), 1) << missed.out;
+  expect_bad_input(run({"grade", "--type", "pl", "--queries",
+                        write_file("pl.csv", kPointPlane).string(), "--answers",
+                        write_file("pl.txt", "1\n1\n0\n").string()}),
+                   {"pl.csv:", "grade does not take them yet"});
+}
+
 }  // namespace
 }  // namespace cli_test

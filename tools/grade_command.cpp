@@ -19,7 +19,7 @@ int run_grade(const GradeOptions& options) {
       [&](std::size_t done, std::size_t count) {
         progress.update(0, 1, options.queries_path, done, count);
       },
-      options.min_separation);
+      options.min_separation, options.primitive);
   progress.clear();
 
   if (options.json)

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "exactccd/query_file.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::cli {
@@ -13,6 +14,8 @@ struct GradeOptions {
   std::string queries_path;  ///< one benchmark CSV file
   std::string answers_path;  ///< see oracle/answers_file.hpp
   std::optional<QueryType> type;
+  /// --type pe|pe2d|pp|pp2d: a file of a point kind (graded as its edge-edge queries).
+  std::optional<PrimitiveKind> primitive;
   double t_max = 1.0;
   double min_separation = 0.0;  ///< --min-separation: delta >= 0 (0: contact)
   bool json = false;

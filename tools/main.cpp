@@ -170,7 +170,7 @@ int main(int argc, char** argv) {
   grade->add_option("--queries", grade_options.queries_path, "The benchmark CSV file")->required();
   grade->add_option("--answers", grade_options.answers_path, "The answers file")->required();
   grade->add_flag("--json", grade_options.json, "Print one JSON object instead of text");
-  add_type_option(grade, grade_type);
+  add_check_type_option(grade, grade_type);
   add_t_max_option(grade, grade_options.t_max);
   add_min_separation_option(grade, grade_options.min_separation);
 
@@ -470,6 +470,7 @@ int main(int argc, char** argv) {
       return run_generate(generate_options);
     }
     grade_options.type = parse_type_name(grade_type);
+    grade_options.primitive = exactccd::primitive_kind_from_name(grade_type);
     return run_grade(grade_options);
   });
 }
