@@ -266,7 +266,7 @@ namespace {
 
 /// The rows of a query file: `rows` rows per query, each with the coordinate columns of
 /// `dimension` (2 or 3) coordinates and a truth column; emit(points, truth, first_line) per
-/// query. Every error names the file and line.
+/// query (it may move the points out). Every error names the file and line.
 template <class Emit>
 void read_query_rows(const std::string& path, std::size_t rows, int dimension, Emit&& emit) {
   LineReader in(path, "a CSV file");
@@ -353,10 +353,11 @@ void read_query_rows(const std::string& path, std::size_t rows, int dimension, E
 QueryFile read_query_file(const std::string& path, QueryType type) {
   QueryFile file{path, type, {}};
   read_query_rows(path, 8, 3,
-                  [&](const std::vector<RationalPoint>& points, bool truth, std::size_t line) {
+                  [&](std::vector<RationalPoint>& points, bool truth, std::size_t line) {
                     QueryRecord record;
                     record.query.type = type;
-                    std::copy(points.begin(), points.end(), record.query.points.begin());
+                    // Moved: the reader assigns every point again before the next query.
+                    std::move(points.begin(), points.end(), record.query.points.begin());
                     record.truth = truth;
                     record.first_line = line;
                     file.queries.push_back(std::move(record));
