@@ -34,10 +34,19 @@ def read_query_file(path, type: Optional[str] = None) -> QueryData:
     """Reads a benchmark CSV file into an (N, 8, 3) float64 array and its truth column.
 
     type: "vertex-face" or "edge-edge"; None takes it from a folder of that name in the path.
+    The point kinds and the plane ("pe", "pe2d", "pp", "pp2d", "pl": README.md, their rows
+    per query) give an (N, rows, 3) or, in 2D, (N, rows, 2) array, as the point functions and
+    their batch forms take them.
     Raises exactccd.InputError (naming the file and line) for a malformed file, an unknown type,
-    or a coordinate that is not exactly a double (read_query_file_exact reads those).
+    or a coordinate that is not exactly a double (read_query_file_exact reads those of the
+    benchmark's kinds).
     """
+    if type in _PRIMITIVE_KINDS:
+        return QueryData(*_exactccd._read_primitive_query_file(_checked_path(path), type))
     return QueryData(*_exactccd._read_query_file(_checked_path(path), type))
+
+
+_PRIMITIVE_KINDS = ("pe", "pe2d", "pp", "pp2d", "pl")
 
 
 def read_query_file_exact(path, type: Optional[str] = None) -> QueryData:

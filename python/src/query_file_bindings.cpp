@@ -73,6 +73,37 @@ py::tuple read_exact(const std::string& path, const std::optional<std::string>& 
   return py::make_tuple(queries, truth_array(file), to_string(file.type));
 }
 
+// A file of a point kind or the plane (pe, pe2d, pp, pp2d, pl) as an (N, rows, dimension)
+// array of its exact doubles, its truth column and its kind's name.
+py::tuple read_primitive_doubles(const std::string& path, const std::string& name) {
+  const std::optional<PrimitiveKind> kind = primitive_kind_from_name(name);
+  if (!kind) throw py::value_error("unknown point kind '" + name + "'");
+  PrimitiveQueryFile file;
+  {
+    py::gil_scoped_release release;
+    file = read_primitive_query_file(path, *kind);
+  }
+  const auto n = static_cast<py::ssize_t>(file.queries.size());
+  const auto rows = static_cast<py::ssize_t>(rows_per_query(*kind));
+  const int dimension = dimension_of(*kind);
+  py::array_t<double> queries({n, rows, static_cast<py::ssize_t>(dimension)});
+  py::array_t<bool> truth(n);
+  double* out = queries.mutable_data();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const PrimitiveQueryRecord& record = file.queries[static_cast<std::size_t>(i)];
+    truth.mutable_data()[i] = record.truth;
+    for (std::size_t row = 0; row < record.points.size(); ++row) {
+      const RationalPoint& p = record.points[row];
+      const mpq_class* coordinates[3] = {&p.x, &p.y, &p.z};
+      for (int k = 0; k < dimension; ++k)
+        if (!to_double_exactly(*coordinates[k], out++))
+          throw InputError(file.path, record.first_line + row,
+                           "a coordinate is not exactly a double");
+    }
+  }
+  return py::make_tuple(queries, truth, name);
+}
+
 // The CSV text of `queries` (N, 8, 3) with truth values `truth` (N,).
 py::bytes format_rows(const py::handle& queries, const py::handle& truth) {
   const DoubleArray array = as_double_array(queries, {-1, 8, 3}, "queries");
@@ -103,6 +134,7 @@ py::bytes format_rows(const py::handle& queries, const py::handle& truth) {
 void bind_query_files(py::module_& m) {
   m.def("_read_query_file", &read_doubles, py::arg("path"), py::arg("type"));
   m.def("_read_query_file_exact", &read_exact, py::arg("path"), py::arg("type"));
+  m.def("_read_primitive_query_file", &read_primitive_doubles, py::arg("path"), py::arg("kind"));
   m.def("_format_query_rows", &format_rows, py::arg("queries"), py::arg("truth"));
   m.def(
       "find_query_files",

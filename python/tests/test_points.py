@@ -80,3 +80,24 @@ def test_bad_point_input_is_named():
         exactccd.point_point_ccd((0, 0), (1, 0))
     with pytest.raises(TypeError, match="point_edge_ccd_batch.*t_max"):
         exactccd.point_edge_ccd_batch(np.zeros((2, 6, 2)), t_max="1")
+
+
+def test_query_files_of_the_point_kinds(tmp_path):
+    # A point-edge file in the plane (5 columns) and a point-plane file, read into the arrays the
+    # point functions take; every query decided as its truth says.
+    pe2d = tmp_path / "pe2d.csv"
+    pe2d.write_text("1,2,1,1,1\n0,1,0,1,1\n1,1,0,1,1\n1,2,-1,1,1\n0,1,0,1,1\n1,1,0,1,1\n"
+                    "3,2,1,1,0\n0,1,0,1,0\n1,1,0,1,0\n3,2,-1,1,0\n0,1,0,1,0\n1,1,0,1,0\n")
+    data = exactccd.read_query_file(pe2d, "pe2d")
+    assert data.queries.shape == (2, 6, 2) and data.truth.tolist() == [True, False]
+    assert data.type == "pe2d"
+    batch = exactccd.point_edge_ccd_batch(data.queries)
+    assert batch.collides.tolist() == [True, False] and batch.toi_lo[0] == 0.5
+    pl = tmp_path / "pl.csv"
+    pl.write_text("5,1,7,1,1,1,1\n0,1,0,1,0,1,1\n0,1,0,1,1,1,1\n"
+                  "-3,1,2,1,-1,1,1\n0,1,0,1,0,1,1\n0,1,0,1,1,1,1\n")
+    data = exactccd.read_query_file(pl, "pl")
+    assert data.queries.shape == (1, 6, 3)
+    assert exactccd.point_plane_ccd(data.queries[0]).toi_lo == 0.5
+    with pytest.raises(exactccd.InputError, match="expected 7 comma-separated columns"):
+        exactccd.read_query_file(pe2d, "pe")
