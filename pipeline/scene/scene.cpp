@@ -1108,6 +1108,53 @@ MeshId Scene::add_mesh(const Positions& positions, const Triangles& triangles) {
   return static_cast<MeshId>(impl_->meshes.size() - 1);
 }
 
+void Scene::set_edges(MeshId id, const Edges& edges) {
+  if (id >= impl_->meshes.size())
+    throw std::invalid_argument("exactccd: set_edges: no mesh " + std::to_string(id));
+  Mesh& m = impl_->meshes[id];
+  const Edges sides = edges_of(m.triangles);  // sorted (i, j), i < j, each side once
+  std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, Eigen::Index>> given;
+  given.reserve(static_cast<std::size_t>(edges.rows()));
+  const auto vertices = static_cast<std::int32_t>(m.start.rows());
+  for (Eigen::Index e = 0; e < edges.rows(); ++e) {
+    const std::int32_t a = edges(e, 0), b = edges(e, 1);
+    if (a < 0 || a >= vertices || b < 0 || b >= vertices)
+      throw std::invalid_argument("exactccd: set_edges: edge " + std::to_string(e) +
+                                  " has a vertex index out of range");
+    if (a == b)
+      throw std::invalid_argument("exactccd: set_edges: edge " + std::to_string(e) +
+                                  " repeats a vertex");
+    given.push_back({{std::min(a, b), std::max(a, b)}, e});
+  }
+  std::sort(given.begin(), given.end());
+  Eigen::Index k = 0;  // the next side of the triangles to find
+  for (std::size_t g = 0; g < given.size(); ++g) {
+    const auto& [side, row] = given[g];
+    if (g > 0 && given[g - 1].first == side)
+      throw std::invalid_argument("exactccd: set_edges: edge " + std::to_string(row) +
+                                  " repeats edge " + std::to_string(given[g - 1].second));
+    while (k < sides.rows() && std::make_pair(sides(k, 0), sides(k, 1)) < side) ++k;
+    if (k == sides.rows() || std::make_pair(sides(k, 0), sides(k, 1)) != side)
+      throw std::invalid_argument("exactccd: set_edges: edge " + std::to_string(row) + " (" +
+                                  std::to_string(side.first) + ", " +
+                                  std::to_string(side.second) +
+                                  ") is no side of a triangle of mesh " + std::to_string(id));
+  }
+  if (given.size() != static_cast<std::size_t>(sides.rows())) {
+    // Every given edge is a distinct side: some side is missing. Name the first.
+    std::size_t g = 0;
+    for (Eigen::Index s = 0; s < sides.rows(); ++s, ++g)
+      if (g == given.size() || given[g].first != std::make_pair(sides(s, 0), sides(s, 1)))
+        throw std::invalid_argument("exactccd: set_edges: the side (" +
+                                    std::to_string(sides(s, 0)) + ", " +
+                                    std::to_string(sides(s, 1)) + ") of mesh " +
+                                    std::to_string(id) + " is missing");
+  }
+  m.edges = edges;
+  for (Hierarchies& h : m.spans) h = Hierarchies{};
+  m.cylinder_cache.clear();
+}
+
 MeshId Scene::add_static_mesh(const Positions& positions, const Triangles& triangles) {
   const MeshId id = add_mesh(positions, triangles);
   impl_->meshes[id].is_static = true;

@@ -24,34 +24,42 @@ Positions positions_of(const py::handle& object, const char* what) {
   return positions;
 }
 
-// Faces from any integer array, each index checked against int32's range before narrowing (a
-// cast would wrap an index around silently); the scene checks them against the vertex count.
-Triangles triangles_of(const py::handle& object) {
+// Index rows (faces: 3 columns, edges: 2) from any integer array, each index checked against
+// int32's range before narrowing (a cast would wrap an index around silently); the scene checks
+// them against the vertex count. `what` names them in messages ("faces", "edges").
+template <class Rows>
+Rows index_rows_of(const py::handle& object, const char* what, const char* shape) {
+  constexpr int kColumns = Rows::ColsAtCompileTime;
   py::module_ numpy = py::module_::import("numpy");
   const py::array array = numpy.attr("asarray")(object);
   if (array.size() > 0 && !numpy.attr("issubdtype")(array.dtype(), numpy.attr("integer")).cast<bool>())
-    throw py::type_error("faces must be an integer array, not of dtype " +
+    throw py::type_error(std::string(what) + " must be an integer array, not of dtype " +
                          std::string(py::str(array.dtype())));
-  Triangles triangles;
+  Rows rows;
   // Unsigned arrays read as uint64 (through int64, 2^64 - 1 would wrap round to -1).
   auto copy = [&](auto signed_or_unsigned) {
     using Index = decltype(signed_or_unsigned);
     const py::array_t<Index, py::array::c_style | py::array::forcecast> indices(array);
-    if (indices.ndim() != 2 || indices.shape(1) != 3)
-      throw py::value_error("faces must have shape (F, 3)");
-    triangles.resize(indices.shape(0), 3);
+    if (indices.ndim() != 2 || indices.shape(1) != kColumns)
+      throw py::value_error(std::string(what) + " must have shape " + shape);
+    rows.resize(indices.shape(0), kColumns);
     for (py::ssize_t k = 0; k < indices.size(); ++k) {
       const Index v = indices.data()[k];
       const bool negative = std::is_signed_v<Index> && static_cast<std::int64_t>(v) < 0;
       if (negative || v > Index{std::numeric_limits<std::int32_t>::max()})
-        throw py::value_error("faces: vertex index " + std::to_string(v) +
+        throw py::value_error(std::string(what) + ": vertex index " + std::to_string(v) +
                               " out of range (0 to 2147483647, and below the vertex count)");
-      triangles.data()[k] = static_cast<std::int32_t>(v);
+      // Row-major input, whatever the matrix's storage order.
+      rows(k / kColumns, k % kColumns) = static_cast<std::int32_t>(v);
     }
   };
   if (array.dtype().kind() == 'u') copy(std::uint64_t{});
   else copy(std::int64_t{});
-  return triangles;
+  return rows;
+}
+
+Triangles triangles_of(const py::handle& object) {
+  return index_rows_of<Triangles>(object, "faces", "(F, 3)");
 }
 
 template <class Matrix>
@@ -322,6 +330,19 @@ void bind_scene(py::module_& m) {
           },
           py::arg("mesh"), py::arg("start"), py::arg("end"),
           "The step's motion of a moving mesh: vertex i from start[i] to end[i].")
+      .def(
+          "set_edges",
+          [](GuardedScene& g, MeshId mesh, const py::handle& edges) {
+            const Edges rows = index_rows_of<Edges>(edges, "edges", "(E, 2)");
+            g.run([&](Scene& s) {
+              s.set_edges(checked_mesh(s, mesh), rows);
+              return 0;
+            });
+          },
+          py::arg("mesh"), py::arg("edges"),
+          "The simulator's own edge numbering of a mesh (an (E, 2) integer array holding every "
+          "side of its triangles once, any order and orientation, e.g. libigl's edges): edge-edge "
+          "pairs index into it from then on.")
       .def_property_readonly("mesh_count",
                              [](GuardedScene& g) {
                                return g.run([](Scene& s) { return s.mesh_count(); });

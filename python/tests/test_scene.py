@@ -257,3 +257,40 @@ def test_min_separation_equals_every_pair_with_delta():
     assert earliest.contact.toi_lo == min(lo for _, lo, _ in expected)
     with pytest.raises(ValueError):
         scene.find_contacts(min_separation=-1.0)
+
+
+def test_set_edges_keeps_the_simulators_numbering():
+    # Two triangles falling onto a static one: the same contacts with libigl's edge order, the
+    # edge-edge pairs indexing it.
+    floor = np.array([[-2, -2, 0], [2, -2, 0], [0, 2, 0]], dtype=float)
+    sheet = np.array([[-0.5, -0.5, 0.5], [0.7, -0.5, 0.25], [0.5, 0.6, 0.75], [-0.5, 0.5, 0.5]])
+    two = np.array([[0, 1, 2], [0, 2, 3]])
+
+    def contacts(edges):
+        scene = exactccd.Scene()
+        scene.add_static_mesh(floor, np.array([[0, 1, 2]]))
+        mesh = scene.add_mesh(sheet, two)
+        scene.set_motion(mesh, sheet, sheet - [0, 0, 1.5])
+        if edges is not None:
+            scene.set_edges(mesh, edges)
+        out = set()
+        for c in scene.find_contacts().contacts:
+            p = c.pair
+            if p.type == "edge-edge":
+                a = tuple(sorted(scene.edges(p.first_mesh)[p.first_index]))
+                b = tuple(sorted(scene.edges(p.second_mesh)[p.second_index]))
+                out.add(("ee", p.first_mesh, a, p.second_mesh, b, c.toi_lo))
+            else:
+                out.add(("vf", p.first_mesh, p.first_index, p.second_mesh, p.second_index,
+                         c.toi_lo))
+        return out
+
+    libigl = np.array([[1, 0], [2, 0], [3, 0], [2, 1], [3, 2]])  # sorted by (j, i), as (j, i)
+    assert contacts(libigl) == contacts(None)
+    with pytest.raises(ValueError, match=r"the side \(0, 3\) of mesh 1 is missing"):
+        scene = exactccd.Scene()
+        scene.add_mesh(sheet, two)
+        scene.add_mesh(sheet, two)
+        scene.set_edges(1, libigl[[0, 1, 3, 4]])
+    with pytest.raises(ValueError, match=r"edges must have shape \(E, 2\)"):
+        exactccd.Scene().set_edges(0, np.zeros((3, 3), dtype=int))

@@ -271,6 +271,17 @@ class EXACTCCD_API Scene {
   /// \param end positions at the end of the step, one row per vertex.
   /// \throws std::invalid_argument as above, or for an unknown mesh.
   void set_motion(MeshId mesh, const Positions& start, const Positions& end);
+  /// The simulator's own numbering of a mesh's edges: `edges` must hold every side of the
+  /// mesh's triangles exactly once, in any order and either orientation (libigl's `edges`, for
+  /// one, sorts by (j, i)); from then on Scene::edges(mesh) is `edges` as given, and every
+  /// edge-edge ScenePair of the mesh indexes into it. The default numbering (sorted (i, j),
+  /// i < j) stays until this is called. Clears the mesh's hierarchies (rebuilt on next use).
+  /// \param mesh a mesh of this scene.
+  /// \param edges one row per edge, two vertex indices.
+  /// \throws std::invalid_argument for an unknown mesh, an index out of range, a repeated
+  ///         vertex, an edge that is no side of a triangle, an edge given twice, or a side
+  ///         missing (the message names the row or the side).
+  void set_edges(MeshId mesh, const Edges& edges);
 
   /// \return the number of meshes added.
   std::size_t mesh_count() const;
