@@ -175,6 +175,23 @@ inline bool check_default_equals_exact(QueryType type, const Points& v, const Cc
     for (const Enclosure& e : g.normal)
       require(-1.0 <= e.lo && e.lo <= e.hi && e.hi <= 1.0, "normal outside [-1, 1] on " + where);
   }
+  if (!v[2].isZero(0.0) && !v[6].isZero(0.0)) {
+    // The same bytes as a point-plane query (p, origin, normal at t0: rows 0-2; at t1: rows
+    // 4-6): the filtered path equals the exact one.
+    const PointPlaneQuery plane{v[0], v[1], v[2], v[4], v[5], v[6]};
+    CcdOptions o = options;
+    o.toi_width = 0.0;
+    o.mode = Mode::exact;
+    const CcdResult plane_exact = point_plane_ccd(plane, o);
+    o.mode = Mode::filtered;
+    const CcdResult plane_filtered = point_plane_ccd(plane, o);
+    require(plane_filtered.collides == plane_exact.collides &&
+                plane_filtered.toi_lo == plane_exact.toi_lo &&
+                plane_filtered.toi_hi == plane_exact.toi_hi &&
+                plane_filtered.starts_within == plane_exact.starts_within,
+            "point-plane: default " + describe(plane_filtered) + " != exact " +
+                describe(plane_exact) + " on " + where);
+  }
   {
     // The collision-free step: in [0, t_max], and limited whenever the pair collides.
     StepOptions step_options;
