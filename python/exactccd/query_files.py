@@ -66,11 +66,14 @@ def _temporary_file(folder, name):
             continue
 
 
-def write_query_file(path, queries, truth, *, overwrite: bool = False) -> None:
+def write_query_file(path, queries, truth, *, overwrite: bool = False,
+                     kind: Optional[str] = None) -> None:
     """Writes queries (N, 8, 3) with their truth values (N,) as a benchmark CSV file, each
     coordinate as the exact fraction of its double (so the file reads back as exactly these
     doubles). Rows in the benchmark's order (vertex-face: p, a, b, c at t0 then t1; edge-edge:
-    ea0, ea1, eb0, eb1 at t0 then t1).
+    ea0, ea1, eb0, eb1 at t0 then t1). kind "pe", "pe2d", "pp", "pp2d" or "pl": queries of
+    that point kind or the plane, (N, rows, 3) or in 2D (N, rows, 2), as read_query_file reads
+    them.
 
     The file appears whole or not at all: written to a temporary file in the same folder, then
     renamed into place. An existing file is never replaced unless overwrite=True
@@ -78,7 +81,13 @@ def write_query_file(path, queries, truth, *, overwrite: bool = False) -> None:
     ValueError for a wrong shape, a non-finite coordinate, a truth value other than 0 or 1, or a
     NUL character in the path, before anything is written.
     """
-    text = _exactccd._format_query_rows(queries, truth)
+    if kind is None:
+        text = _exactccd._format_query_rows(queries, truth)
+    elif kind in _PRIMITIVE_KINDS:
+        text = _exactccd._format_primitive_rows(queries, truth, kind)
+    else:
+        raise ValueError(f"write_query_file(): kind must be one of {', '.join(_PRIMITIVE_KINDS)} "
+                         f"(or None for the benchmark's queries), not {kind!r}")
     path = _checked_path(path)
     try:
         mode = os.stat(path).st_mode

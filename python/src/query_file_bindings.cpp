@@ -129,6 +129,42 @@ py::bytes format_rows(const py::handle& queries, const py::handle& truth) {
   return py::bytes(text);
 }
 
+// The CSV text of queries of a point kind or the plane, (N, rows, dimension), with their truth.
+py::bytes format_primitive_rows(const py::handle& queries, const py::handle& truth,
+                                const std::string& name) {
+  const std::optional<PrimitiveKind> kind = primitive_kind_from_name(name);
+  if (!kind) throw py::value_error("unknown point kind '" + name + "'");
+  const auto rows = static_cast<py::ssize_t>(rows_per_query(*kind));
+  const int dimension = dimension_of(*kind);
+  const DoubleArray array = as_double_array(queries, {-1, rows, dimension}, "queries");
+  const auto n = array.shape(0);
+  const py::array_t<double, py::array::c_style | py::array::forcecast> flags =
+      py::module_::import("numpy").attr("ascontiguousarray")(truth, py::arg("dtype") = "float64");
+  if (flags.ndim() != 1 || flags.shape(0) != n)
+    throw py::value_error("truth must have shape (" + std::to_string(n) + ",), one value per query");
+  std::string text;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const double flag = flags.data()[i];
+    if (flag != 0.0 && flag != 1.0)
+      throw py::value_error("truth[" + std::to_string(i) + "] is " +
+                            std::string(py::repr(py::float_(flag))) +
+                            ": each truth value is 0 (no collision) or 1 (collision)");
+    std::string query;
+    for (py::ssize_t r = 0; r < rows; ++r) {
+      for (int k = 0; k < dimension; ++k) {
+        const double x = array.data()[(i * rows + r) * dimension + k];
+        if (!std::isfinite(x))
+          throw py::value_error("query " + std::to_string(i) + ": non-finite coordinate");
+        append_exact_fraction(query, x);
+        query += ',';
+      }
+      query += flag == 1.0 ? "1\n" : "0\n";
+    }
+    text += query;
+  }
+  return py::bytes(text);
+}
+
 }  // namespace
 
 void bind_query_files(py::module_& m) {
@@ -136,6 +172,8 @@ void bind_query_files(py::module_& m) {
   m.def("_read_query_file_exact", &read_exact, py::arg("path"), py::arg("type"));
   m.def("_read_primitive_query_file", &read_primitive_doubles, py::arg("path"), py::arg("kind"));
   m.def("_format_query_rows", &format_rows, py::arg("queries"), py::arg("truth"));
+  m.def("_format_primitive_rows", &format_primitive_rows, py::arg("queries"), py::arg("truth"),
+        py::arg("kind"));
   m.def(
       "find_query_files",
       [](const std::string& path) {
