@@ -77,7 +77,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 void report(const char* name, const std::vector<Query>& queries, int repetitions) {
   // Kinds and widths.
-  std::size_t colliding = 0, kinds[3] = {0, 0, 0}, oriented = 0;
+  std::size_t colliding = 0, kinds[6] = {0, 0, 0, 0, 0, 0}, oriented = 0;
   std::vector<double> parameter_widths, normal_widths;
   for (const Query& q : queries) {
     const auto r = decide(q);
@@ -86,7 +86,8 @@ void report(const char* name, const std::vector<Query>& queries, int repetitions
     const auto g = geometry(q, r);
     ++kinds[static_cast<int>(g.kind)];
     oriented += g.normal_oriented;
-    if (g.kind == exactccd::ContactKind::unresolved) continue;
+    if (g.kind != exactccd::ContactKind::point && g.kind != exactccd::ContactKind::at_start)
+      continue;
     double pw = 0, nw = 0;
     for (int i = 0; i < g.parameter_count; ++i)
       pw = std::max(pw, g.parameters[i].hi - g.parameters[i].lo);
@@ -114,11 +115,12 @@ void report(const char* name, const std::vector<Query>& queries, int repetitions
     return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
   };
   std::printf(
-      "%-18s %9zu queries %8zu colliding | point %zu, at_start %zu, unresolved %zu, normal "
-      "oriented %zu | widths in 2^-52: parameters median %.3g worst %.3g, normal median %.3g "
+      "%-18s %9zu queries %8zu colliding | point %zu, at_start %zu, unresolved %zu, "
+      "degenerate triangle %zu, parallel edges %zu, coplanar %zu, normal oriented %zu | widths in 2^-52: parameters median %.3g worst %.3g, normal median %.3g "
       "worst %.3g | off %.1f ns/query, on %.1f ns/query (%.3fx), geometry %.1f ns per colliding "
       "query\n",
-      name, queries.size(), colliding, kinds[0], kinds[1], kinds[2], oriented,
+      name, queries.size(), colliding, kinds[0], kinds[1], kinds[2], kinds[3], kinds[4],
+      kinds[5], oriented,
       median(parameter_widths), worst(parameter_widths), median(normal_widths),
       worst(normal_widths), 1e9 * t_off / queries.size(), 1e9 * t_on / queries.size(),
       t_on / t_off, colliding ? 1e9 * (t_on - t_off) / colliding : 0.0);

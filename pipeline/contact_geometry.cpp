@@ -12,6 +12,7 @@
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/interval.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "pipeline/contact_enclosures.hpp"
 
 namespace exactccd {
@@ -77,6 +78,44 @@ Interval time_of(const CcdResult& r) {
   return r.starts_within ? Interval(0.0) : Interval(r.toi_lo, r.toi_hi);
 }
 
+/// Every coefficient zero: the polynomial vanishes identically.
+template <int D>
+bool identically_zero(const FixedPoly<exact::Rational, D>& f) {
+  for (const auto& c : f.c)
+    if (sgn(c) != 0) return false;
+  return true;
+}
+
+template <class V>
+bool identically_zero(const V& v) {
+  return identically_zero(v.x) && identically_zero(v.y) && identically_zero(v.z);
+}
+
+/// An unresolved geometry's exact degenerate kind, when its configuration is degenerate at
+/// every t (exact rational polynomials of the doubles; only on this rare path).
+/// PROOF: proofs/contact_geometry.md#degenerate-kinds
+ContactKind degenerate_kind(const Points& x, bool vertex_face) {
+  using exact::Rational;
+  const auto m = [&](int i) { return predicates::moving_point<Rational>(x[i], x[i + 4]); };
+  if (vertex_face) {
+    const auto p = m(0), a = m(1), b = m(2), c = m(3);
+    if (identically_zero(predicates::cross(b - a, c - a))) return ContactKind::degenerate_triangle;
+    if (identically_zero(predicates::vertex_face_coplanarity_cubic(p, a, b, c)))
+      return ContactKind::coplanar;
+    return ContactKind::unresolved;
+  }
+  const auto a0 = m(0), a1 = m(1), b0 = m(2), b1 = m(3);
+  if (identically_zero(predicates::cross(a1 - a0, b1 - b0))) return ContactKind::parallel_edges;
+  if (identically_zero(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1)))
+    return ContactKind::coplanar;
+  return ContactKind::unresolved;
+}
+
+ContactGeometry with_degenerate_kind(ContactGeometry g, const Points& x, bool vertex_face) {
+  if (g.kind == ContactKind::unresolved) g.kind = degenerate_kind(x, vertex_face);
+  return g;
+}
+
 ContactGeometry vertex_face(Points x, const CcdResult& r) {
   check_input(x, r);
   const predicates::RoundingGuard upward;
@@ -86,11 +125,14 @@ ContactGeometry vertex_face(Points x, const CcdResult& r) {
              a = predicates::moving_point<Interval>(x[1], x[5]),
              b = predicates::moving_point<Interval>(x[2], x[6]),
              c = predicates::moving_point<Interval>(x[3], x[7]);
-  return contact::vertex_face_from(
-      at(p, t), at(a, t), at(b, t), at(c, t), r.starts_within, e, [&] {
-        return side_just_before(
-            derivative_at(predicates::vertex_face_coplanarity_cubic(p, a, b, c), t));
-      });
+  return with_degenerate_kind(
+      contact::vertex_face_from(
+          at(p, t), at(a, t), at(b, t), at(c, t), r.starts_within, e,
+          [&] {
+            return side_just_before(
+                derivative_at(predicates::vertex_face_coplanarity_cubic(p, a, b, c), t));
+          }),
+      x, true);
 }
 
 /// A point (edge `point_edge`, zero-length throughout) against the segment [s0, s1].
@@ -157,11 +199,14 @@ ContactGeometry edge_edge(Points x, const CcdResult& r) {
   }
   if (a_is_point) return point_segment(a0, b0, b1, true, in_plane, r, t, e);
   if (b_is_point) return point_segment(b0, a0, a1, false, in_plane, r, t, e);
-  return contact::edge_edge_from(
-      at(a0, t), at(a1, t), at(b0, t), at(b1, t), r.starts_within, e, [&] {
-        return side_just_before(
-            derivative_at(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), t));
-      });
+  return with_degenerate_kind(
+      contact::edge_edge_from(
+          at(a0, t), at(a1, t), at(b0, t), at(b1, t), r.starts_within, e,
+          [&] {
+            return side_just_before(
+                derivative_at(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), t));
+          }),
+      x, false);
 }
 
 }  // namespace
@@ -171,6 +216,9 @@ const char* to_string(ContactKind kind) noexcept {
     case ContactKind::point: return "point";
     case ContactKind::at_start: return "at_start";
     case ContactKind::unresolved: return "unresolved";
+    case ContactKind::degenerate_triangle: return "degenerate_triangle";
+    case ContactKind::parallel_edges: return "parallel_edges";
+    case ContactKind::coplanar: return "coplanar";
   }
   return "unknown";
 }

@@ -114,8 +114,11 @@ void expect_enclosures(const RationalQuery& q, const CcdResult& r, const Contact
       EXPECT_TRUE(contains(g.point[0], p.x) && contains(g.point[1], p.y) &&
                   contains(g.point[2], p.z));
     }
-    if (g.kind == ContactKind::unresolved) continue;
+    if (g.kind == ContactKind::unresolved || g.kind == ContactKind::degenerate_triangle ||
+        g.kind == ContactKind::parallel_edges)
+      continue;
     std::array<mpq_class, 3> param;
+    if (g.kind == ContactKind::coplanar && !parameters_at(q, t, &param)) continue;
     ASSERT_TRUE(parameters_at(q, t, &param)) << "a resolved kind with a vanishing direction";
     for (int i = 0; i < g.parameter_count; ++i)
       EXPECT_TRUE(contains(g.parameters[i], clamp01(param[i])))
@@ -283,23 +286,46 @@ TEST(ContactGeometry, DegenerateAndStartingContacts) {
   EXPECT_FALSE(g.normal_oriented);
   EXPECT_EQ(g.normal[2].lo, 1.0);
   EXPECT_EQ(g.parameters[1].lo, 0.25);
-  // A triangle degenerate throughout (a segment): unresolved, the vertex still the point.
+  // A triangle degenerate throughout (a segment): degenerate_triangle, the vertex the point.
   const Vector3d d(2, 0, 0);
   const VertexFaceQuery flat{Vector3d(0.5, 1, 0), a, b, d, Vector3d(0.5, -1, 0), a, b, d};
   g = contact_geometry(flat, vertex_face_ccd(flat));
-  EXPECT_EQ(g.kind, ContactKind::unresolved);
+  EXPECT_EQ(g.kind, ContactKind::degenerate_triangle);
   EXPECT_EQ(g.point[0].lo, 0.5);
   EXPECT_EQ(g.point[1].lo, 0.0);
-  // Overlapping parallel edges sliding along each other: unresolved, the point in both hulls.
+  // Overlapping parallel edges sliding along each other: parallel_edges, the point in both
+  // hulls.
   const EdgeEdgeQuery slide{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(2, 0, 0),
                             Vector3d(3, 0, 0), Vector3d(2, 0, 0), Vector3d(3, 0, 0),
                             Vector3d(0.5, 0, 0), Vector3d(1.5, 0, 0)};
   const CcdResult r = edge_edge_ccd(slide);
   ASSERT_TRUE(r.collides);
   g = contact_geometry(slide, r);
-  EXPECT_EQ(g.kind, ContactKind::unresolved);
+  EXPECT_EQ(g.kind, ContactKind::parallel_edges);
   EXPECT_LE(g.point[1].lo, 0.0);
   EXPECT_GE(g.point[1].hi, 0.0);
+  // A vertex sliding in the triangle's plane into it (coplanar throughout): coplanar. It enters
+  // across the side (b, c), x + y = 1, at t = 1/2: barycentric coordinates (0, 1/2, 1/2).
+  const VertexFaceQuery sliding{Vector3d(1, 1, 0), a, b, c, Vector3d(0, 0, 0), a, b, c};
+  const CcdResult s = vertex_face_ccd(sliding);
+  ASSERT_TRUE(s.collides);
+  EXPECT_EQ(s.toi_lo, 0.5);
+  g = contact_geometry(sliding, s);
+  EXPECT_EQ(g.kind, ContactKind::coplanar);
+  EXPECT_FALSE(g.normal_oriented);
+  EXPECT_EQ(g.normal[2].lo, 1.0);  // the unoriented direction (b - a) x (c - a) = +z
+  EXPECT_EQ(g.parameters[0].lo, 0.0);
+  EXPECT_EQ(g.parameters[1].lo, 0.5);
+  EXPECT_EQ(g.parameters[2].hi, 0.5);
+  // Nearly degenerate but not throughout: a triangle that is a segment only at t = 1/2.
+  const VertexFaceQuery pinch{Vector3d(0.25, 0.25, 1), a, b, Vector3d(0, 1, 0),
+                              Vector3d(0.25, 0.25, -1), a, b, Vector3d(0, -1, 0)};
+  const CcdResult pr = vertex_face_ccd(pinch);
+  if (pr.collides) {
+    const ContactKind k = contact_geometry(pinch, pr).kind;
+    EXPECT_NE(k, ContactKind::degenerate_triangle);
+    EXPECT_NE(k, ContactKind::coplanar);
+  }
 }
 
 TEST(ContactGeometry, HugeAndTinyCoordinatesAreScaledExactly) {

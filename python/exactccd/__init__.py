@@ -380,7 +380,8 @@ class BatchResult(NamedTuple):
         return getattr(self, "__dict__", {}).get("contact")
 
 
-CONTACT_KIND_NAMES = ("point", "at_start", "unresolved")
+CONTACT_KIND_NAMES = ("point", "at_start", "unresolved", "degenerate_triangle", "parallel_edges",
+                      "coplanar")
 
 
 class BatchContact(NamedTuple):

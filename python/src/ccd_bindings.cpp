@@ -61,7 +61,8 @@ void bind_ccd(py::module_& m) {
           "point", [](const ContactGeometry& g) { return enclosures(g.point.data(), 3); },
           "(3, 2) array of [lo, hi]: the contact point in space.")
       .def_property_readonly("kind", [](const ContactGeometry& g) { return to_string(g.kind); },
-                             "\"point\", \"at_start\" or \"unresolved\" (ContactKind).")
+                             "\"point\", \"at_start\", \"unresolved\", \"degenerate_triangle\", "
+                             "\"parallel_edges\" or \"coplanar\" (ContactKind).")
       .def_readonly("normal_oriented", &ContactGeometry::normal_oriented)
       .def("__repr__", [](const ContactGeometry& g) {
         char text[320];

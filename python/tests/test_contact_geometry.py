@@ -124,7 +124,7 @@ def test_scene_contact_geometry():
         g = scene.contact_geometry(c)
         rows = (scene.vertex_face_query(c.pair) if c.pair.type == "vertex-face"
                 else scene.edge_edge_query(c.pair))
-        assert g.kind in ("point", "at_start", "unresolved")
+        assert g.kind in exactccd.CONTACT_KIND_NAMES
         if g.kind == "point" and c.pair.type == "vertex-face" and c.pair.second_mesh == 0:
             # A sheet vertex lands on the floor: the floor's normal, towards where it came from.
             assert g.normal[2][0] > 0.999

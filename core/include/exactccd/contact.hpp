@@ -34,14 +34,28 @@ enum class ContactKind : std::uint8_t {
   /// and the normal is the unoriented direction (ContactGeometry::normal).
   at_start,
   /// The enclosures over [toi_lo, toi_hi] do not separate the configuration from a degenerate
-  /// one (a triangle degenerate or nearly so at t*, parallel or nearly parallel edges, a
-  /// tangential approach whose side is not certain, a point against a segment in 3D, whose
-  /// normal the rules leave undefined). Every enclosure is still certified, but parameters may
-  /// be the whole [0, 1] and the normal the whole [-1, 1]^3; normal_oriented says which.
+  /// one, and it is not one of the degenerate kinds below (a triangle nearly degenerate at t*,
+  /// nearly parallel edges, a tangential approach whose side is not certain, a point against
+  /// a segment in 3D, whose normal the rules leave undefined). Every enclosure is still
+  /// certified, but parameters may be the whole [0, 1] and the normal the whole [-1, 1]^3;
+  /// normal_oriented says which.
   unresolved,
+  /// Vertex-face: the triangle is degenerate (its normal (b - a) x (c - a) is zero) at every
+  /// t, exactly: the barycentric coordinates are not unique ([0, 1] each), the normal is
+  /// [-1, 1]^3; the point is the vertex.
+  degenerate_triangle,
+  /// Edge-edge: the edges are parallel ((ea1 - ea0) x (eb1 - eb0) = 0) at every t, exactly:
+  /// the contact set may be a segment; the parameters are [0, 1], the normal [-1, 1]^3, and
+  /// `point` a box that holds the whole contact set.
+  parallel_edges,
+  /// The four points are coplanar at every t, exactly (a vertex sliding in the triangle's
+  /// plane, edges moving in one plane): there is no side to come from; the parameters are as
+  /// for `point` where resolved, and the normal, where certified, the unoriented direction.
+  coplanar,
 };
 
-/// The kind's name: "point", "at_start" or "unresolved" (a static string). Never throws.
+/// The kind's name: "point", "at_start", "unresolved", "degenerate_triangle",
+/// "parallel_edges" or "coplanar" (a static string). Never throws.
 /// \param kind a contact kind.
 /// \return its name.
 EXACTCCD_API const char* to_string(ContactKind kind) noexcept;
