@@ -501,6 +501,79 @@ TEST(ContactGeometry, SceneContactsGetTheirQueriesGeometry) {
   }
 }
 
+// With a minimum separation delta > 0: the closest points at t* (the distance there is delta).
+// A vertex approaching the inside of a triangle and an edge approaching across another, at
+// delta 2^-10 and 0.05: at rational t of the enclosure, the exact projection's barycentric
+// coordinates / the lines' closest parameters (clamped) lie in the enclosures, and the exact
+// normal direction, oriented by the exact determinant's sign at t (not 0: the distance is
+// about delta), lies in the normal's box. A vertex whose closest point is on a side: unresolved.
+TEST(ContactGeometry, MinimumSeparationEnclosesTheClosestPoints) {
+  std::mt19937_64 rng(test_seed("contact_geometry_separation"));
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int resolved = 0;
+  for (int n = 0; n < 200; ++n) {
+    const bool vf = n % 2 == 0;
+    const double delta = n % 4 < 2 ? 0x1p-10 : 0.05;
+    const auto v = [&] { return Vector3d(u(rng), u(rng), u(rng)); };
+    std::array<Vector3d, 8> x;
+    if (vf) {
+      x = {Vector3d(0.25, 0.25, 0.5) + 0.05 * v(), Vector3d(0, 0, 0) + 0.05 * v(),
+           Vector3d(1, 0, 0) + 0.05 * v(), Vector3d(0, 1, 0) + 0.05 * v(),
+           Vector3d(0.3, 0.25, -0.5) + 0.05 * v(), Vector3d(0, 0, 0) + 0.05 * v(),
+           Vector3d(1, 0, 0) + 0.05 * v(), Vector3d(0, 1, 0) + 0.05 * v()};
+    } else {
+      x = {Vector3d(-1, 0, 0.5) + 0.05 * v(), Vector3d(1, 0, 0.5) + 0.05 * v(),
+           Vector3d(0, -1, 0) + 0.05 * v(), Vector3d(0, 1, 0) + 0.05 * v(),
+           Vector3d(-1, 0, -0.5) + 0.05 * v(), Vector3d(1, 0, -0.5) + 0.05 * v(),
+           Vector3d(0, -1, 0) + 0.05 * v(), Vector3d(0, 1, 0) + 0.05 * v()};
+    }
+    RationalQuery q{vf ? QueryType::vertex_face : QueryType::edge_edge, {}};
+    for (int i = 0; i < 8; ++i)
+      q.points[i] = {mpq_class(x[i].x()), mpq_class(x[i].y()), mpq_class(x[i].z())};
+    CcdOptions o;
+    o.min_separation = delta;
+    const CcdResult r = double_api_ccd(q, o);
+    if (!r.collides || r.starts_within) continue;
+    std::array<Vector3d, 8> y = x;
+    const ContactGeometry g =
+        vf ? contact_geometry(VertexFaceQuery{y[0], y[1], y[2], y[3], y[4], y[5], y[6], y[7]}, r,
+                              delta)
+           : contact_geometry(EdgeEdgeQuery{y[0], y[1], y[2], y[3], y[4], y[5], y[6], y[7]}, r,
+                              delta);
+    SCOPED_TRACE(describe(q) + " delta " + std::to_string(delta));
+    if (g.kind != ContactKind::point) continue;
+    ++resolved;
+    ASSERT_TRUE(g.normal_oriented);
+    const mpq_class lo(r.toi_lo), hi(r.toi_hi);
+    for (const mpq_class& t : {lo, hi, mpq_class((lo + hi) / 2)}) {
+      std::array<mpq_class, 3> param;
+      ASSERT_TRUE(parameters_at(q, t, &param));
+      for (int i = 0; i < g.parameter_count; ++i)
+        EXPECT_TRUE(contains(g.parameters[i], clamp01(param[i]))) << "parameter " << i;
+      RationalVector dir = direction_at(q, t);
+      const mpq_class nn = dot(dir, dir);
+      const int side = sgn(coplanarity_determinant_at(q, t));
+      ASSERT_NE(side, 0);
+      if (side < 0) dir = {-dir.x, -dir.y, -dir.z};
+      EXPECT_TRUE(unit_component_in(dir.x, nn, g.normal[0]) &&
+                  unit_component_in(dir.y, nn, g.normal[1]) &&
+                  unit_component_in(dir.z, nn, g.normal[2]));
+    }
+    EXPECT_GT(g.normal[2].lo, 0.5);  // from above
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(resolved, 120);
+  // The closest point on a side: a vertex passing beside the triangle's edge y = 0 at 0.01.
+  const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+  const VertexFaceQuery beside{Vector3d(0.5, -0.01, 1), a, b, c, Vector3d(0.5, -0.01, -1), a, b, c};
+  CcdOptions o;
+  o.min_separation = 0.05;
+  const CcdResult r = vertex_face_ccd(beside, o);
+  ASSERT_TRUE(r.collides);
+  EXPECT_EQ(contact_geometry(beside, r, 0.05).kind, ContactKind::unresolved);
+  EXPECT_THROW(contact_geometry(beside, r, -1.0), std::invalid_argument);
+}
+
 TEST(ContactGeometry, BadInputIsAnError) {
   const Vector3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), p(0.25, 0.25, 1);
   const VertexFaceQuery apart{p, a, b, c, p, a, b, c};

@@ -1305,7 +1305,8 @@ RigidVertexFaceQuery Scene::rigid_vertex_face_query(const ScenePair& pair) const
   return impl_->rigid_vertex_face(pair);
 }
 
-ContactGeometry Scene::contact_geometry(const SceneContact& contact) const {
+ContactGeometry Scene::contact_geometry(const SceneContact& contact,
+                                        double min_separation) const {
   const ScenePair& pair = contact.pair;
   CcdResult r;
   r.collides = true;
@@ -1314,6 +1315,9 @@ ContactGeometry Scene::contact_geometry(const SceneContact& contact) const {
   r.starts_within = contact.starts_within;
   const bool rigid = is_rigid(pair.first_mesh) || is_rigid(pair.second_mesh);
   if (rigid) {
+    if (min_separation != 0.0)
+      throw std::invalid_argument("exactccd: contact_geometry with a minimum separation is not "
+                                  "available for pairs with a rigid body yet");
     RigidCcdResult rr;
     rr.ccd = r;
     if (pair.type == QueryType::vertex_face)
@@ -1321,8 +1325,8 @@ ContactGeometry Scene::contact_geometry(const SceneContact& contact) const {
     return exactccd::contact_geometry(rigid_edge_edge_query(pair), rr);
   }
   if (pair.type == QueryType::vertex_face)
-    return exactccd::contact_geometry(vertex_face_query(pair), r);
-  return exactccd::contact_geometry(edge_edge_query(pair), r);
+    return exactccd::contact_geometry(vertex_face_query(pair), r, min_separation);
+  return exactccd::contact_geometry(edge_edge_query(pair), r, min_separation);
 }
 
 RigidEdgeEdgeQuery Scene::rigid_edge_edge_query(const ScenePair& pair) const {

@@ -104,11 +104,8 @@ def _with_contact(function, result, rows, type, contact, mode, min_separation, k
     if _exactccd._mode_name(mode) == "float_only":
         raise ValueError(f"{function}(): contact=True needs a certified mode (\"filtered\" or "
                          f"\"exact\"): float_only's time of impact is not an enclosure")
-    if min_separation != 0:
-        raise ValueError(f"{function}(): contact=True gives the geometry of contact "
-                         f"(min_separation=0); got min_separation={min_separation!r}")
     if result.collides:
-        geometry = _exactccd._contact_geometry(rows, type, result)
+        geometry = _exactccd._contact_geometry(rows, type, result, min_separation)
         result.__dict__["contact"] = geometry if keep is None else _PointContact(geometry, keep)
     return result
 
@@ -180,7 +177,8 @@ def vertex_face_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
     finite; collides iff the vertex comes within Euclidean distance delta of the triangle, the
     TOI the earliest such time (0: contact). contact=True: a colliding result's `contact` is the
     certified contact geometry at the exact time of impact (ContactGeometry: barycentric
-    coordinates as `parameters`, `normal`, `point`, `kind`); certified modes, min_separation 0.
+    coordinates as `parameters`, `normal`, `point`, `kind`; with min_separation > 0, those of
+    the closest points); certified modes only.
     Raises ValueError for non-finite coordinates or options outside their domain.
     """
     rows = _points(points, _VERTEX_FACE_ROWS)
@@ -405,8 +403,8 @@ def vertex_face_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0
 
     Runs without the GIL, in parallel over `threads` threads (None: every core; 1: serially on
     the calling thread). Results equal one vertex_face_ccd call per query. contact=True: the
-    result's `contact` is the BatchContact of every query (numpy arrays; certified modes,
-    min_separation 0). Raises ValueError for a wrong shape, bad options, or a bad query (the
+    result's `contact` is the BatchContact of every query (numpy arrays; certified modes; with
+    min_separation > 0, the closest points'). Raises ValueError for a wrong shape, bad options, or a bad query (the
     message names the first one's index).
     """
     return _batch("vertex_face_ccd_batch", "vertex-face", queries, t_max, toi_width, mode,

@@ -61,10 +61,11 @@ CcdResult decide(QueryType type, const double* data, const CcdOptions& options) 
              : edge_edge_ccd(query_of<EdgeEdgeQuery>(data), options);
 }
 
-ContactGeometry geometry(QueryType type, const double* data, const CcdResult& r) {
+ContactGeometry geometry(QueryType type, const double* data, const CcdResult& r,
+                         double min_separation) {
   return type == QueryType::vertex_face
-             ? contact_geometry(query_of<VertexFaceQuery>(data), r)
-             : contact_geometry(query_of<EdgeEdgeQuery>(data), r);
+             ? contact_geometry(query_of<VertexFaceQuery>(data), r, min_separation)
+             : contact_geometry(query_of<EdgeEdgeQuery>(data), r, min_separation);
 }
 
 /// Writes k enclosures as k rows of [lo, hi].
@@ -81,8 +82,6 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
   const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
   if (contact && options.mode == Mode::float_only)
     throw py::value_error("contact=True needs a certified mode (\"filtered\" or \"exact\")");
-  if (contact && options.min_separation != 0.0)
-    throw py::value_error("contact=True gives the geometry of contact (min_separation=0)");
   if (threads && (*threads < 1 || *threads > kMaxThreads))
     throw py::value_error("threads must be in [1, " + std::to_string(kMaxThreads) +
                           "] (or None for every core), not " +
@@ -133,7 +132,7 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
             out_oriented[i] = false;
             continue;
           }
-          const ContactGeometry g = geometry(type, data + 24 * i, r);
+          const ContactGeometry g = geometry(type, data + 24 * i, r, options.min_separation);
           write_enclosures(out_parameters + 2 * k * i, g.parameters.data(), k);
           write_enclosures(out_normal + 6 * i, g.normal.data(), 3);
           write_enclosures(out_point + 6 * i, g.point.data(), 3);

@@ -76,16 +76,18 @@ void bind_ccd(py::module_& m) {
       });
   m.def(
       "_contact_geometry",
-      [](const py::handle& points, const std::string& type, const CcdResult& result) {
+      [](const py::handle& points, const std::string& type, const CcdResult& result,
+         double min_separation) {
         const DoubleArray array = as_double_array(points, {8, 3}, "the query's points");
         const QueryPoints p = points_of(array.data());
         if (parse_query_type(type) == QueryType::vertex_face)
           return contact_geometry(
-              VertexFaceQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, result);
+              VertexFaceQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, result,
+              min_separation);
         return contact_geometry(EdgeEdgeQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]},
-                                result);
+                                result, min_separation);
       },
-      py::arg("points"), py::arg("type"), py::arg("result"));
+      py::arg("points"), py::arg("type"), py::arg("result"), py::arg("min_separation") = 0.0);
 
   py::class_<CcdResult>(m, "CcdResult",
                         "The result of one query: collides, [toi_lo, toi_hi] (the certified "

@@ -435,13 +435,13 @@ void bind_scene(py::module_& m) {
           py::arg("pair"), "The pair's query as an (8, 3) array in the benchmark's row order.")
       .def(
           "contact_geometry",
-          [](GuardedScene& g, const SceneContact& c) {
+          [](GuardedScene& g, const SceneContact& c, double min_separation) {
             return g.run([&](Scene& s) {
               checked_pair(s, c.pair);
-              return s.contact_geometry(c);
+              return s.contact_geometry(c, min_separation);
             });
           },
-          py::arg("contact"),
+          py::arg("contact"), py::arg("min_separation") = 0.0,
           "The certified contact geometry (ContactGeometry) of a contact of this scene (from "
           "find_contacts or earliest_contact with min_separation 0).");
 }

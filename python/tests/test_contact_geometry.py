@@ -85,8 +85,12 @@ def test_contact_needs_a_certified_contact_query():
     args = ((0.25, 0.5, 1), a, b, c, (0.25, 0.5, -1), a, b, c)
     with pytest.raises(ValueError, match="certified mode"):
         exactccd.vertex_face_ccd(*args, mode="float_only", contact=True)
-    with pytest.raises(ValueError, match="min_separation=0"):
-        exactccd.vertex_face_ccd(*args, min_separation=0.1, contact=True)
+    # With a minimum separation: the closest point inside the triangle, the normal +z.
+    r = exactccd.vertex_face_ccd(*args, min_separation=0.125, contact=True)
+    assert r.toi_lo == r.toi_hi == 0.4375 and r.contact.kind == "point"
+    assert r.contact.normal[2].tolist() == [1, 1]
+    assert r.contact.point[2].tolist() == [0, 0]
+    assert r.contact.parameters.tolist() == [[0.25, 0.25], [0.25, 0.25], [0.5, 0.5]]
     assert exactccd.vertex_face_ccd(*args, mode="exact", contact=True).contact.kind == "point"
 
 

@@ -88,23 +88,37 @@ struct ContactGeometry {
 
 /// The contact geometry of vertex p against the triangle (a, b, c) at the exact earliest
 /// contact time t* that `result` encloses (\ref contact_geometry).
+/// With min_separation delta > 0 (the delta `result` was decided with) it encloses the closest
+/// points at t*, where the distance is delta: `parameters` the barycentric coordinates of the
+/// closest point on the triangle, `point` that point, `normal` the unit direction from it
+/// towards the vertex (the triangle's normal towards the vertex's side); resolved (`point`) when
+/// the closest point lies certainly inside the triangle, otherwise `unresolved` (a closest point
+/// on a side or a corner: not yet resolved).
 /// \param query the query that was decided.
-/// \param result its certified answer (vertex_face_ccd with min_separation 0, any toi_width).
+/// \param result its certified answer (vertex_face_ccd, any toi_width).
+/// \param min_separation the delta of that answer (0: contact).
 /// \return the enclosures at t*.
-/// \throws std::invalid_argument for a non-finite coordinate, or when `result` does not collide
-///         or its enclosure is not in [0, 1].
+/// \throws std::invalid_argument for a non-finite coordinate, a negative or non-finite delta,
+///         or when `result` does not collide or its enclosure is not in [0, 1].
 EXACTCCD_API ContactGeometry contact_geometry(const VertexFaceQuery& query,
-                                              const CcdResult& result);
+                                              const CcdResult& result,
+                                              double min_separation = 0.0);
 
 /// The contact geometry of the segments [ea0, ea1] and [eb0, eb1] at t* (zero-length segments
 /// are points: point-edge and point-point contact); as for vertex-face.
+/// With min_separation delta > 0: the closest points' parameters on each edge, `point` the
+/// closest point on edge b, `normal` the unit direction from it towards edge a (along the edges'
+/// cross product); resolved when both closest points lie certainly inside their edges, otherwise
+/// `unresolved` (at an end, parallel edges, points: not yet resolved).
 /// \param query the query that was decided.
 /// \param result its certified answer (edge_edge_ccd, point_edge_ccd, point_point_ccd or their 2D
-///        forms embedded in z = 0, with min_separation 0).
+///        forms embedded in z = 0).
+/// \param min_separation the delta of that answer (0: contact).
 /// \return the enclosures at t*.
 /// \throws std::invalid_argument as for vertex-face.
 EXACTCCD_API ContactGeometry contact_geometry(const EdgeEdgeQuery& query,
-                                              const CcdResult& result);
+                                              const CcdResult& result,
+                                              double min_separation = 0.0);
 
 /// The contact geometry of a rigid vertex-face query at the exact earliest contact parameter s*
 /// that `result` encloses (in s, result.ccd): as for linear motion, with the positions of the
