@@ -18,11 +18,6 @@ using IVec = predicates::Vec3<Interval>;
 
 /// +1 (-1) when g, which vanishes at t* in t, is certainly positive (negative) just before t*:
 /// g'(t*) lies in g'(t), so a certain sign of g'(t) is -sign(g) just before. 0: not certain.
-/// +1 / -1 when x is certainly positive / negative, 0 otherwise.
-inline int certain_strict_sign(const Interval& x) {
-  return x.inf() > 0 ? 1 : (x.sup() < 0 ? -1 : 0);
-}
-
 inline int side_just_before(const Interval& derivative) {
   if (derivative.sup() < 0) return 1;
   if (derivative.inf() > 0) return -1;

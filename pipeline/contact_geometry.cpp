@@ -243,7 +243,7 @@ ContactGeometry vertex_face_separation(Points x, const CcdResult& r) {
   const Interval f = predicates::dot(P - A, n);  // (p - a) . n: the vertex's side
   const Interval k = f / nn;
   g.point = point_of(IVec{P.x - k * n.x, P.y - k * n.y, P.z - k * n.z}, e);
-  const int side = contact::certain_strict_sign(f);
+  const int side = predicates::certain_strict_sign(f);
   g.normal_oriented = side != 0 && unit_normal(n, side, &g.normal);
   g.kind = !g.normal_oriented ? ContactKind::unresolved
                               : (r.starts_within ? ContactKind::at_start : ContactKind::point);
@@ -278,7 +278,7 @@ ContactGeometry edge_edge_separation(Points x, const CcdResult& r) {
   g.parameters[1] = within(u, 0.0, 1.0);
   g.point = point_of(IVec{B0.x + u * db.x, B0.y + u * db.y, B0.z + u * db.z}, e);
   // (a0 - b0) . m: the side of edge a; the closest points differ by a multiple of m.
-  const int side = contact::certain_strict_sign(predicates::dot(A0 - B0, m));
+  const int side = predicates::certain_strict_sign(predicates::dot(A0 - B0, m));
   g.normal_oriented = side != 0 && unit_normal(m, side, &g.normal);
   g.kind = !g.normal_oriented ? ContactKind::unresolved
                               : (r.starts_within ? ContactKind::at_start : ContactKind::point);
