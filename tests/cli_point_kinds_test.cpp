@@ -120,7 +120,23 @@ TEST_F(CliTest, GradeTakesThePointKindsAsTheirEdgeEdgeQueries) {
   expect_bad_input(run({"grade", "--type", "pl", "--queries",
                         write_file("pl.csv", kPointPlane).string(), "--answers",
                         write_file("pl.txt", "1\n1\n0\n").string()}),
-                   {"pl.csv:", "grade does not take them yet"});
+                   {"pl.csv:", "grade and bench do not take them yet"});
+}
+
+TEST_F(CliTest, BenchTimesThePointKindsAsTheirEdgeEdgeQueries) {
+  const fs::path pe = write_file("pe.csv", kPointEdge);
+  const RunResult r = run({"bench", "--type", "pe", "--json", "--repetitions", "1", "--modes",
+                           "filtered,exact", pe.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);  // one object per data set and mode
+  ASSERT_EQ(j.size(), 2u) << r.out;
+  for (const auto& result : j) {
+    EXPECT_EQ(result["queries"].get<int>(), 2);
+    EXPECT_EQ(result["false_positives"].get<int>(), 0);
+    EXPECT_EQ(result["false_negatives"].get<int>(), 0);
+  }
+  expect_bad_input(run({"bench", "--type", "pl", write_file("pl.csv", kPointPlane).string()}),
+                   {"pl.csv:", "grade and bench do not take them yet"});
 }
 
 }  // namespace

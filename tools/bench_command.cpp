@@ -39,14 +39,20 @@ struct Dataset {
   std::size_t size() const { return vertex_face.size() + edge_edge.size(); }
 };
 
-Dataset load_path(const std::string& path, const std::optional<QueryType>& type) {
+Dataset load_path(const std::string& path, const std::optional<QueryType>& type,
+                  const std::optional<PrimitiveKind>& primitive) {
   Dataset d;
   d.label = path;
   d.truth_source = "truth column";
-  const std::vector<std::string> files = find_query_files(path);
+  if (primitive) require_regular_file(path, std::string("a query file of --type ") +
+                                                to_string(*primitive));
+  const std::vector<std::string> files =
+      primitive ? std::vector<std::string>{path} : find_query_files(path);
   std::vector<std::string> empty_files;
   for (const std::string& file : files) {
-    const QueryFile input = read_query_file(file, resolve_query_type(file, type));
+    const QueryFile input =
+        primitive ? as_edge_edge_file(read_primitive_query_file(file, *primitive))
+                  : read_query_file(file, resolve_query_type(file, type));
     if (input.queries.empty()) empty_files.push_back(file);
     for (const QueryRecord& record : input.queries) {
       std::size_t bad_row = 0;
@@ -319,7 +325,8 @@ int run_bench(const BenchOptions& options) {
   std::vector<std::string> notes;
   std::vector<std::string> paths = options.paths;
   if (paths.empty() && !options.simulation) paths.push_back(options.default_path);
-  for (const std::string& path : paths) datasets.push_back(load_path(path, options.type));
+  for (const std::string& path : paths)
+    datasets.push_back(load_path(path, options.type, options.primitive));
   if (options.simulation) {
     double truth_seconds = 0.0;
     datasets.push_back(simulation_dataset(options.simulation_config, &truth_seconds));

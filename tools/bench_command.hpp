@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "corpus/simulation_queries.hpp"
+#include "exactccd/query_file.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::cli {
@@ -14,6 +15,9 @@ namespace exactccd::cli {
 struct BenchOptions {
   std::vector<std::string> paths;  ///< each a data set: a CSV file or a folder of them
   std::optional<QueryType> type;   ///< --type: overrides the type from the folder name
+  /// --type pe|pe2d|pp|pp2d: files of a point kind, timed as the edge-edge queries they are
+  /// (point_edge_ccd and point_point_ccd are that call on copied rows).
+  std::optional<PrimitiveKind> primitive;
   std::vector<Mode> modes = {Mode::float_only, Mode::filtered, Mode::exact};
   int repetitions = 5;             ///< batch passes; mean_ns is their median
   bool simulation = false;         ///< add the simulation-like set (truth: the exact path)

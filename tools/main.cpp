@@ -235,7 +235,7 @@ int main(int argc, char** argv) {
   CLI::Option* bench_seed = nullptr;
   std::tie(bench_resolution, bench_steps, bench_seed) =
       add_simulation_options(bench, bench_options.simulation_config);
-  add_type_option(bench, bench_type);
+  add_check_type_option(bench, bench_type);
   bench
       ->add_option("--min-separation", bench_options.min_separations,
                    "Comma-separated minimum separations delta >= 0, each a run of every mode "
@@ -454,6 +454,7 @@ int main(int argc, char** argv) {
         if (option->count() > 0 && !bench_options.simulation)
           throw UsageError(option->get_name() + " needs --simulation");
       bench_options.type = parse_type_name(bench_type);
+      bench_options.primitive = exactccd::primitive_kind_from_name(bench_type);
       bench_options.modes.clear();
       for (const std::string& name : bench_modes)
         bench_options.modes.push_back(*parse_mode_name(name));
