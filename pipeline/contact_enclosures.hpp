@@ -137,4 +137,64 @@ ContactGeometry edge_edge_from(const IVec& A0, const IVec& A1, const IVec& B0, c
   return g;
 }
 
+/// The box hull of three point enclosures.
+inline IVec hull3(const IVec& a, const IVec& b, const IVec& c) { return hull(hull(a, b), c); }
+
+/// With a minimum separation delta > 0, from the positions over T: the closest points at t*,
+/// where the distance is delta. Resolved when the closest point is certainly inside the
+/// triangle (the vertex's projection, every barycentric coordinate certainly positive); the
+/// normal is then the triangle's normal towards the vertex's side, certain because the
+/// distance there is delta > 0. PROOF: proofs/contact_geometry.md#separation
+inline ContactGeometry vertex_face_separation_from(const IVec& P, const IVec& A, const IVec& B,
+                                                   const IVec& C, bool starts_within, int e) {
+  ContactGeometry g;
+  g.parameter_count = 3;
+  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 1}};
+  g.point = point_of(hull3(A, B, C), e);  // the closest point is on the triangle
+  const IVec n = predicates::cross(B - A, C - A);
+  const Interval nn = predicates::dot(n, n);
+  if (!(nn.inf() > 0)) return g;
+  const Interval u = predicates::dot(n, predicates::cross(B - P, C - P)) / nn;
+  const Interval v = predicates::dot(n, predicates::cross(C - P, A - P)) / nn;
+  const Interval w = predicates::dot(n, predicates::cross(A - P, B - P)) / nn;
+  if (!(u.inf() > 0 && v.inf() > 0 && w.inf() > 0)) return g;  // on a side or corner: not yet
+  g.parameters = {within(u, 0.0, 1.0), within(v, 0.0, 1.0), within(w, 0.0, 1.0)};
+  const Interval f = predicates::dot(P - A, n);  // (p - a) . n: the vertex's side
+  const Interval k = f / nn;
+  g.point = point_of(IVec{P.x - k * n.x, P.y - k * n.y, P.z - k * n.z}, e);
+  const int side = predicates::certain_strict_sign(f);
+  g.normal_oriented = side != 0 && unit_normal(n, side, &g.normal);
+  g.kind = !g.normal_oriented ? ContactKind::unresolved
+                              : (starts_within ? ContactKind::at_start : ContactKind::point);
+  return g;
+}
+
+/// The same for two segments: resolved when the closest points are certainly interior to both
+/// (the lines' closest parameters certainly in (0, 1)); the normal is the cross product of the
+/// edges towards edge a, from the closest point on edge b (`point`).
+/// PROOF: proofs/contact_geometry.md#separation
+inline ContactGeometry edge_edge_separation_from(const IVec& A0, const IVec& A1, const IVec& B0,
+                                                 const IVec& B1, bool starts_within, int e) {
+  ContactGeometry g;
+  g.parameter_count = 2;
+  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 0}};
+  g.point = point_of(hull(B0, B1), e);  // the closest point on edge b
+  const IVec da = A1 - A0, db = B1 - B0, m = predicates::cross(da, db);
+  const Interval mm = predicates::dot(m, m);
+  if (!(mm.inf() > 0)) return g;
+  const IVec wv = B0 - A0;
+  const Interval s = predicates::dot(predicates::cross(wv, db), m) / mm;
+  const Interval u = predicates::dot(predicates::cross(wv, da), m) / mm;
+  if (!(s.inf() > 0 && s.sup() < 1 && u.inf() > 0 && u.sup() < 1)) return g;  // at an end
+  g.parameters[0] = within(s, 0.0, 1.0);
+  g.parameters[1] = within(u, 0.0, 1.0);
+  g.point = point_of(IVec{B0.x + u * db.x, B0.y + u * db.y, B0.z + u * db.z}, e);
+  // (a0 - b0) . m: the side of edge a; the closest points differ by a multiple of m.
+  const int side = predicates::certain_strict_sign(predicates::dot(A0 - B0, m));
+  g.normal_oriented = side != 0 && unit_normal(m, side, &g.normal);
+  g.kind = !g.normal_oriented ? ContactKind::unresolved
+                              : (starts_within ? ContactKind::at_start : ContactKind::point);
+  return g;
+}
+
 }  // namespace exactccd::pipeline::contact

@@ -209,15 +209,7 @@ ContactGeometry edge_edge(Points x, const CcdResult& r) {
       x, false);
 }
 
-/// The box hull of three point enclosures.
-IVec hull3(const IVec& a, const IVec& b, const IVec& c) {
-  return contact::hull(contact::hull(a, b), c);
-}
-
-/// With a minimum separation delta > 0: the closest points at t*, where the distance is delta.
-/// Resolved when the closest point is certainly inside the triangle (the vertex's projection,
-/// every barycentric coordinate certainly positive); the normal is then the triangle's normal
-/// towards the vertex's side, certain because the distance there is delta > 0.
+/// With a minimum separation delta > 0: the closest points at t* (contact_enclosures.hpp).
 /// PROOF: proofs/contact_geometry.md#separation
 ContactGeometry vertex_face_separation(Points x, const CcdResult& r) {
   check_input(x, r);
@@ -227,33 +219,10 @@ ContactGeometry vertex_face_separation(Points x, const CcdResult& r) {
   const auto at_row = [&](int i) {
     return at(predicates::moving_point<Interval>(x[i], x[i + 4]), t);
   };
-  const IVec P = at_row(0), A = at_row(1), B = at_row(2), C = at_row(3);
-  ContactGeometry g;
-  g.parameter_count = 3;
-  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 1}};
-  g.point = point_of(hull3(A, B, C), e);  // the closest point is on the triangle
-  const IVec n = predicates::cross(B - A, C - A);
-  const Interval nn = predicates::dot(n, n);
-  if (!(nn.inf() > 0)) return g;
-  const Interval u = predicates::dot(n, predicates::cross(B - P, C - P)) / nn;
-  const Interval v = predicates::dot(n, predicates::cross(C - P, A - P)) / nn;
-  const Interval w = predicates::dot(n, predicates::cross(A - P, B - P)) / nn;
-  if (!(u.inf() > 0 && v.inf() > 0 && w.inf() > 0)) return g;  // on a side or corner: not yet
-  g.parameters = {within(u, 0.0, 1.0), within(v, 0.0, 1.0), within(w, 0.0, 1.0)};
-  const Interval f = predicates::dot(P - A, n);  // (p - a) . n: the vertex's side
-  const Interval k = f / nn;
-  g.point = point_of(IVec{P.x - k * n.x, P.y - k * n.y, P.z - k * n.z}, e);
-  const int side = predicates::certain_strict_sign(f);
-  g.normal_oriented = side != 0 && unit_normal(n, side, &g.normal);
-  g.kind = !g.normal_oriented ? ContactKind::unresolved
-                              : (r.starts_within ? ContactKind::at_start : ContactKind::point);
-  return g;
+  return contact::vertex_face_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
+                                              r.starts_within, e);
 }
 
-/// The same for two segments: resolved when the closest points are certainly interior to both
-/// (the lines' closest parameters certainly in (0, 1)); the normal is the cross product of the
-/// edges towards edge a, from the closest point on edge b (`point`).
-/// PROOF: proofs/contact_geometry.md#separation
 ContactGeometry edge_edge_separation(Points x, const CcdResult& r) {
   check_input(x, r);
   const predicates::RoundingGuard upward;
@@ -262,27 +231,8 @@ ContactGeometry edge_edge_separation(Points x, const CcdResult& r) {
   const auto at_row = [&](int i) {
     return at(predicates::moving_point<Interval>(x[i], x[i + 4]), t);
   };
-  const IVec A0 = at_row(0), A1 = at_row(1), B0 = at_row(2), B1 = at_row(3);
-  ContactGeometry g;
-  g.parameter_count = 2;
-  g.parameters = {Enclosure{0, 1}, Enclosure{0, 1}, Enclosure{0, 0}};
-  g.point = point_of(contact::hull(B0, B1), e);  // the closest point on edge b
-  const IVec da = A1 - A0, db = B1 - B0, m = predicates::cross(da, db);
-  const Interval mm = predicates::dot(m, m);
-  if (!(mm.inf() > 0)) return g;
-  const IVec wv = B0 - A0;
-  const Interval s = predicates::dot(predicates::cross(wv, db), m) / mm;
-  const Interval u = predicates::dot(predicates::cross(wv, da), m) / mm;
-  if (!(s.inf() > 0 && s.sup() < 1 && u.inf() > 0 && u.sup() < 1)) return g;  // at an end
-  g.parameters[0] = within(s, 0.0, 1.0);
-  g.parameters[1] = within(u, 0.0, 1.0);
-  g.point = point_of(IVec{B0.x + u * db.x, B0.y + u * db.y, B0.z + u * db.z}, e);
-  // (a0 - b0) . m: the side of edge a; the closest points differ by a multiple of m.
-  const int side = predicates::certain_strict_sign(predicates::dot(A0 - B0, m));
-  g.normal_oriented = side != 0 && unit_normal(m, side, &g.normal);
-  g.kind = !g.normal_oriented ? ContactKind::unresolved
-                              : (r.starts_within ? ContactKind::at_start : ContactKind::point);
-  return g;
+  return contact::edge_edge_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
+                                            r.starts_within, e);
 }
 
 }  // namespace

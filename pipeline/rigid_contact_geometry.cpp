@@ -4,6 +4,7 @@
 // derivative), then the enclosures of contact_enclosures.hpp. The side just before s* is the
 // sign of minus the coplanarity determinant's derivative, as for linear motion.
 // PROOF: proofs/contact_geometry.md#rigid
+#include <cmath>
 #include <stdexcept>
 
 #include "core/predicates/interval.hpp"
@@ -83,7 +84,15 @@ Interval parameter_of(const CcdResult& r, bool finite_input) {
 
 }  // namespace
 
-ContactGeometry contact_geometry(const RigidVertexFaceQuery& q, const RigidCcdResult& result) {
+void check_separation(double min_separation) {
+  if (!(min_separation >= 0.0) || !std::isfinite(min_separation))
+    throw std::invalid_argument("exactccd: contact_geometry: min_separation must be finite and "
+                                ">= 0");
+}
+
+ContactGeometry contact_geometry(const RigidVertexFaceQuery& q, const RigidCcdResult& result,
+                                 double min_separation) {
+  check_separation(min_separation);
   const predicates::RoundingGuard upward;
   const bool ok = q.p.allFinite() && q.a.allFinite() && q.b.allFinite() && q.c.allFinite() &&
                   finite(q.vertex) && finite(q.face);
@@ -92,6 +101,9 @@ ContactGeometry contact_geometry(const RigidVertexFaceQuery& q, const RigidCcdRe
              a = position(q.face, q.a, q.face.linear_end[0], S),
              b = position(q.face, q.b, q.face.linear_end[1], S),
              c = position(q.face, q.c, q.face.linear_end[2], S);
+  if (min_separation > 0.0)
+    return pipeline::contact::vertex_face_separation_from(values(p), values(a), values(b),
+                                                          values(c), result.ccd.starts_within, 0);
   return pipeline::contact::vertex_face_from(
       values(p), values(a), values(b), values(c), result.ccd.starts_within, 0, [&] {
         const Dual g = predicates::dot(predicates::cross(b - a, c - a), p - a);
@@ -99,7 +111,9 @@ ContactGeometry contact_geometry(const RigidVertexFaceQuery& q, const RigidCcdRe
       });
 }
 
-ContactGeometry contact_geometry(const RigidEdgeEdgeQuery& q, const RigidCcdResult& result) {
+ContactGeometry contact_geometry(const RigidEdgeEdgeQuery& q, const RigidCcdResult& result,
+                                 double min_separation) {
+  check_separation(min_separation);
   const predicates::RoundingGuard upward;
   const bool ok = q.ea0.allFinite() && q.ea1.allFinite() && q.eb0.allFinite() &&
                   q.eb1.allFinite() && finite(q.edge_a) && finite(q.edge_b);
@@ -108,6 +122,9 @@ ContactGeometry contact_geometry(const RigidEdgeEdgeQuery& q, const RigidCcdResu
              a1 = position(q.edge_a, q.ea1, q.edge_a.linear_end[1], S),
              b0 = position(q.edge_b, q.eb0, q.edge_b.linear_end[0], S),
              b1 = position(q.edge_b, q.eb1, q.edge_b.linear_end[1], S);
+  if (min_separation > 0.0)
+    return pipeline::contact::edge_edge_separation_from(values(a0), values(a1), values(b0),
+                                                        values(b1), result.ccd.starts_within, 0);
   return pipeline::contact::edge_edge_from(
       values(a0), values(a1), values(b0), values(b1), result.ccd.starts_within, 0, [&] {
         // det[a1 - a0, b0 - a0, b1 - a0], as the linear edge-edge determinant.

@@ -434,6 +434,69 @@ TEST(ContactGeometry, RigidQueriesEncloseTheExactGeometry) {
   EXPECT_GT(resolved, 60);
 }
 
+// Rigid queries with a minimum separation: the closest points at s*, against the exact
+// positions of the rational rigid motion at rational s of the enclosure.
+TEST(ContactGeometry, RigidMinimumSeparationEnclosesTheClosestPoints) {
+  std::mt19937_64 rng(test_seed("contact_geometry_rigid_separation"));
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int resolved = 0;
+  for (int n = 0; n < 80; ++n) {
+    const bool vf = n % 2 == 0;
+    const double delta = n % 4 < 2 ? 0x1p-8 : 0.05;
+    RigidMotion turn;
+    turn.pivot = Vector3d(0.3 * u(rng), 0.3 * u(rng), 0.0);
+    turn.cayley = Vector3d(0.05 * u(rng), 0.05 * u(rng), 0.5 * u(rng));
+    RigidMotion fall;
+    fall.translation = Vector3d(0.1 * u(rng), 0.1 * u(rng), -1.0);
+    std::array<Vector3d, 4> x;
+    RigidCcdResult r;
+    ContactGeometry g;
+    CcdOptions o;
+    o.min_separation = delta;
+    if (vf) {
+      x = {Vector3d(0.2 + 0.1 * u(rng), 0.2 + 0.1 * u(rng), 0.5), Vector3d(-1, -1, 0),
+           Vector3d(2, -1, 0), Vector3d(-1, 2, 0)};
+      const RigidVertexFaceQuery q{x[0], x[1], x[2], x[3], SideMotion::of(fall),
+                                   SideMotion::of(turn)};
+      r = vertex_face_ccd(q, o);
+      if (!r.ccd.collides || r.ccd.starts_within) continue;
+      g = contact_geometry(q, r, delta);
+    } else {
+      x = {Vector3d(-1, 0.1 * u(rng), 0.5), Vector3d(1, 0.1 * u(rng), 0.5),
+           Vector3d(0.1 * u(rng), -1, 0), Vector3d(0.1 * u(rng), 1, 0)};
+      const RigidEdgeEdgeQuery q{x[0], x[1], x[2], x[3], SideMotion::of(fall),
+                                 SideMotion::of(turn)};
+      r = edge_edge_ccd(q, o);
+      if (!r.ccd.collides || r.ccd.starts_within) continue;
+      g = contact_geometry(q, r, delta);
+    }
+    SCOPED_TRACE("n " + std::to_string(n));
+    if (g.kind != ContactKind::point) continue;
+    ++resolved;
+    const mpq_class lo(r.ccd.toi_lo), hi(r.ccd.toi_hi);
+    for (const mpq_class& s : {lo, hi}) {
+      RationalQuery at{vf ? QueryType::vertex_face : QueryType::edge_edge, {}};
+      const int moving = vf ? 1 : 2;
+      for (int i = 0; i < 4; ++i) {
+        at.points[i] = rigid_position(i < moving ? fall : turn, x[i], s);
+        at.points[4 + i] = at.points[i];
+      }
+      std::array<mpq_class, 3> param;
+      ASSERT_TRUE(parameters_at(at, 0, &param));
+      for (int i = 0; i < g.parameter_count; ++i)
+        EXPECT_TRUE(contains(g.parameters[i], clamp01(param[i]))) << "parameter " << i;
+      RationalVector dir = direction_at(at, 0);
+      const mpq_class nn = dot(dir, dir);
+      if (sgn(coplanarity_determinant_at(at, 0)) < 0) dir = {-dir.x, -dir.y, -dir.z};
+      EXPECT_TRUE(unit_component_in(dir.x, nn, g.normal[0]) &&
+                  unit_component_in(dir.y, nn, g.normal[1]) &&
+                  unit_component_in(dir.z, nn, g.normal[2]));
+    }
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(resolved, 40);
+}
+
 // Scene::contact_geometry is the pair-level function on the contact's query: a sheet of two
 // triangles falling onto a static floor (vertex-face and edge-edge contacts), every contact's
 // geometry equal field by field to contact_geometry of its query and result.

@@ -1315,14 +1315,11 @@ ContactGeometry Scene::contact_geometry(const SceneContact& contact,
   r.starts_within = contact.starts_within;
   const bool rigid = is_rigid(pair.first_mesh) || is_rigid(pair.second_mesh);
   if (rigid) {
-    if (min_separation != 0.0)
-      throw std::invalid_argument("exactccd: contact_geometry with a minimum separation is not "
-                                  "available for pairs with a rigid body yet");
     RigidCcdResult rr;
     rr.ccd = r;
     if (pair.type == QueryType::vertex_face)
-      return exactccd::contact_geometry(rigid_vertex_face_query(pair), rr);
-    return exactccd::contact_geometry(rigid_edge_edge_query(pair), rr);
+      return exactccd::contact_geometry(rigid_vertex_face_query(pair), rr, min_separation);
+    return exactccd::contact_geometry(rigid_edge_edge_query(pair), rr, min_separation);
   }
   if (pair.type == QueryType::vertex_face)
     return exactccd::contact_geometry(vertex_face_query(pair), r, min_separation);

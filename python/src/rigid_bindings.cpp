@@ -62,15 +62,12 @@ py::object with_contact(const Query& q, const CcdOptions& options, bool contact,
   if (contact && options.mode == Mode::float_only)
     throw py::value_error(std::string(function) +
                           "(): contact=True needs a certified mode (\"filtered\" or \"exact\")");
-  if (contact && options.min_separation != 0.0)
-    throw py::value_error(std::string(function) +
-                          "(): contact=True gives the geometry of contact (min_separation=0)");
   RigidCcdResult r;
   std::optional<ContactGeometry> g;
   {
     py::gil_scoped_release release;
     r = decide(q, options);
-    if (contact && r.ccd.collides) g = contact_geometry(q, r);
+    if (contact && r.ccd.collides) g = contact_geometry(q, r, options.min_separation);
   }
   py::object out = py::cast(r);
   if (g) out.attr("__dict__")["contact"] = py::cast(*g);

@@ -110,8 +110,10 @@ def test_rigid_contact_geometry():
     r = exactccd.rigid_edge_edge_ccd(np.array([[-1, 0, 0.5], [1, 0, 0.5], [0, -1, 0], [0, 1, 0]]),
                                      fall, turn, contact=True)
     assert r.contact.kind == "point" and r.contact.normal[2][0] > 0.999999
-    with pytest.raises(ValueError, match="min_separation=0"):
-        exactccd.rigid_vertex_face_ccd(points, fall, turn, min_separation=0.1, contact=True)
+    # With a minimum separation: the closest point inside the turning triangle, normal +z.
+    r = exactccd.rigid_vertex_face_ccd(points, fall, turn, min_separation=0.125, contact=True)
+    assert r.contact.kind == "point" and r.contact.normal[2][0] > 0.999999
+    assert r.contact.point[2][0] <= 0 <= r.contact.point[2][1]
 
 
 def test_scene_contact_geometry():

@@ -124,20 +124,25 @@ EXACTCCD_API ContactGeometry contact_geometry(const EdgeEdgeQuery& query,
 /// that `result` encloses (in s, result.ccd): as for linear motion, with the positions of the
 /// rigid motion (or a side's straight lines) at s*; the normal points to the side the vertex
 /// came from just before s*. No scaling: extreme magnitudes may leave it `unresolved`.
+/// With min_separation delta > 0: the closest points at s*, as for linear motion.
 /// \param query the rigid query that was decided.
-/// \param result its certified answer (vertex_face_ccd of the rigid query, min_separation 0).
+/// \param result its certified answer (vertex_face_ccd of the rigid query).
+/// \param min_separation the delta of that answer (0: contact).
 /// \return the enclosures at s*.
-/// \throws std::invalid_argument for a non-finite position or motion, or when the result does
-///         not collide or its enclosure is not in [0, 1].
+/// \throws std::invalid_argument for a non-finite position or motion, a negative or non-finite
+///         delta, or when the result does not collide or its enclosure is not in [0, 1].
 EXACTCCD_API ContactGeometry contact_geometry(const RigidVertexFaceQuery& query,
-                                              const RigidCcdResult& result);
+                                              const RigidCcdResult& result,
+                                              double min_separation = 0.0);
 
 /// The contact geometry of a rigid edge-edge query at s*; as for the rigid vertex-face query.
 /// \param query the rigid query that was decided.
-/// \param result its certified answer (edge_edge_ccd of the rigid query, min_separation 0).
+/// \param result its certified answer (edge_edge_ccd of the rigid query).
+/// \param min_separation the delta of that answer (0: contact).
 /// \return the enclosures at s*.
 /// \throws std::invalid_argument as for the rigid vertex-face query.
 EXACTCCD_API ContactGeometry contact_geometry(const RigidEdgeEdgeQuery& query,
-                                              const RigidCcdResult& result);
+                                              const RigidCcdResult& result,
+                                              double min_separation = 0.0);
 
 }  // namespace exactccd

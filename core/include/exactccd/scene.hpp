@@ -355,12 +355,11 @@ class EXACTCCD_API Scene {
   /// The certified contact geometry of a contact of this scene (contact_geometry of its pair's
   /// query, the rigid one when a rigid body takes part, at the contact's enclosure of t*, in s
   /// for rigid pairs). `min_separation`: the SceneOptions::min_separation the contact was found
-  /// with (the closest points' geometry when > 0; linear pairs only so far).
+  /// with (the closest points' geometry when > 0).
   /// \param contact a contact of this scene.
   /// \param min_separation the delta of the call that found it (0: contact).
   /// \return the enclosures at t*.
-  /// \throws std::invalid_argument for a pair out of range, or a delta > 0 for a pair with a
-  ///         rigid body (not available yet).
+  /// \throws std::invalid_argument for a pair out of range or a negative delta.
   ContactGeometry contact_geometry(const SceneContact& contact,
                                    double min_separation = 0.0) const;
 
