@@ -6,6 +6,7 @@
 // PROOF: proofs/point_plane.md#reduction
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,8 @@
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/fp_environment.hpp"
 #include "core/predicates/interval.hpp"
+#include "exact/arithmetic/rational.hpp"
+#include "exact/polynomials/polynomial.hpp"
 #include "exact/reference/point_plane.hpp"
 #include "exactccd/ccd.hpp"
 #include "pipeline/ccd_options_check.hpp"
@@ -94,8 +97,58 @@ struct PointPlane {
       const predicates::FixedPoly<Interval, 0> delta2{{delta * delta}};
       apart = over(f * f - delta2 * predicates::dot(n, n), o.t_max).inf() > 0;
     }
-    if (apart) out.verdict = FilterOutcome::Verdict::no_contact;
+    if (apart) {
+      out.verdict = FilterOutcome::Verdict::no_contact;
+      return out;
+    }
+    if (o.min_separation == 0.0) certify_single_crossing(q, f, o, &out);
     return out;
+  }
+  /// Contact, certified with its TOI, when f is certainly monotone on [0, t_max] (f' = c1 +
+  /// 2 c2 t away from 0 there) and certainly of opposite signs at the two ends: its only root
+  /// there is the earliest contact, bracketed by bisection on doubles down to the tightest pair
+  /// (or toi_width). f's sign at each midpoint comes from intervals, or, where they cannot tell
+  /// (within a few units in the last place of the root), from f's rational coefficients
+  /// evaluated exactly at that double. PROOF: proofs/point_plane.md#filter
+  static void certify_single_crossing(const Query& q,
+                                      const predicates::FixedPoly<predicates::Interval, 2>& f,
+                                      const CcdOptions& o, FilterOutcome* out) {
+    using predicates::Interval;
+    const auto value_at = [&](double t) { return f.c[0] + t * (f.c[1] + t * f.c[2]); };
+    const Interval slope = f.c[1] + Interval(0.0, 2 * o.t_max) * f.c[2];
+    const int s0 = predicates::certain_strict_sign(f.c[0]);
+    if (s0 == 0 || predicates::certain_strict_sign(slope) == 0 ||
+        predicates::certain_strict_sign(value_at(o.t_max)) != -s0)
+      return;
+    std::optional<exact::Polynomial> exact_f;  // built on the first uncertain sign
+    double lo = 0.0, hi = o.t_max;             // f has sign s0 at lo, -s0 at hi
+    for (;;) {
+      const double mid = lo + (hi - lo) / 2;  // upward rounding: in [lo, hi]
+      if (mid <= lo || mid >= hi || (o.toi_width > 0.0 && hi - lo <= o.toi_width)) break;
+      int s = predicates::certain_strict_sign(value_at(mid));
+      if (s == 0) {
+        if (!exact_f) exact_f = exact_polynomial(q);
+        s = exact_f->sign_at(exact::Rational(mid));
+        out->exact_used = true;
+        if (s == 0) {  // t* is this double
+          lo = hi = mid;
+          break;
+        }
+      }
+      (s == s0 ? lo : hi) = mid;
+    }
+    out->verdict = FilterOutcome::Verdict::contact;
+    out->toi_lo = lo;
+    out->toi_hi = hi;
+    out->toi_final = true;
+  }
+  /// f = (p - o) . n with the doubles' exact rational coefficients.
+  static exact::Polynomial exact_polynomial(const Query& q) {
+    using exact::Rational;
+    const auto p = predicates::moving_point<Rational>(q.p_t0, q.p_t1),
+               org = predicates::moving_point<Rational>(q.origin_t0, q.origin_t1),
+               n = predicates::moving_point<Rational>(q.normal_t0, q.normal_t1);
+    return exact::Polynomial(predicates::dot(p - org, n));
   }
   static std::pair<double, double> tighten(NoStage&, double lo, double hi, const CcdOptions&) {
     return {lo, hi};

@@ -73,6 +73,14 @@ TEST(PointPlane, KnownTimes) {
   EXPECT_TRUE(r.collides);
   EXPECT_EQ(r.toi_lo, 0.5);
   EXPECT_EQ(r.toi_hi, 0.5);
+  // The filter certifies it (a single crossing; the exact sign only at the double t* = 1/2),
+  // and a crossing between two doubles, t* = 1/3, without the rational path.
+  EXPECT_EQ(r.decided_by, Stage::exact_at_double);
+  r = point_plane_ccd({Vector3d(0.5, 0.5, 0.05), origin, up, Vector3d(0.55, 0.5, -0.1), origin,
+                       up});
+  EXPECT_EQ(r.toi_lo, 0.33333333333333331);
+  EXPECT_EQ(r.toi_hi, 0.33333333333333337);
+  EXPECT_NE(r.decided_by, Stage::exact);
   // Within 0.25 of it first at t = 3/8.
   CcdOptions o;
   o.min_separation = 0.25;
