@@ -140,12 +140,12 @@ __all__ = [
     "RigidMotion", "STAGE_NAMES", "Scene", "SceneContact", "ScenePair", "SceneResult",
     "SceneStats", "StepResult", "__version__", "edge_edge_ccd", "edge_edge_ccd_batch",
     "edge_edge_collision_free_step", "exact_ccd", "find_query_files", "point_edge_ccd",
-    "point_edge_ccd_batch", "point_edge_collision_free_step", "point_plane_ccd", "point_point_ccd",
-    "point_point_ccd_batch", "point_point_collision_free_step", "query_type_from_path",
-    "read_query_file", "read_query_file_exact", "rigid_edge_edge_ccd",
-    "rigid_edge_edge_collision_free_step", "rigid_vertex_face_ccd",
-    "rigid_vertex_face_collision_free_step", "vertex_face_ccd", "vertex_face_ccd_batch",
-    "vertex_face_collision_free_step", "write_query_file",
+    "point_edge_ccd_batch", "point_edge_collision_free_step", "point_plane_ccd",
+    "point_plane_ccd_batch", "point_point_ccd", "point_point_ccd_batch",
+    "point_point_collision_free_step", "query_type_from_path", "read_query_file",
+    "read_query_file_exact", "rigid_edge_edge_ccd", "rigid_edge_edge_collision_free_step",
+    "rigid_vertex_face_ccd", "rigid_vertex_face_collision_free_step", "vertex_face_ccd",
+    "vertex_face_ccd_batch", "vertex_face_collision_free_step", "write_query_file",
 ]
 
 
@@ -358,6 +358,20 @@ def point_plane_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
                         f"or one (6, 3) array, got {len(points)} arguments")
     return _exactccd._point_plane_ccd(
         rows, *_options("point_plane_ccd", t_max, toi_width, mode, min_separation))
+
+
+def point_plane_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
+                          mode: str = "filtered", threads: Optional[int] = None,
+                          min_separation: float = 0.0) -> "BatchResult":
+    """Decides N point-plane queries: an (N, 6, 3) array, rows p, origin, normal at t0 then at
+    t1. As vertex_face_ccd_batch (no contact geometry); results equal one point_plane_ccd call
+    per query."""
+    function = "point_plane_ccd_batch"
+    t_max, toi_width, mode, min_separation = _options(function, t_max, toi_width, mode,
+                                                      min_separation)
+    threads = _arguments.count_or_none(function, "threads", threads)
+    return BatchResult(*_exactccd._point_plane_batch(queries, t_max, toi_width, mode, threads,
+                                                     min_separation))
 
 
 class BatchResult(NamedTuple):

@@ -162,9 +162,66 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
                         py::make_tuple(parameters, normal, point, kind, oriented));
 }
 
+// N point-plane queries (N, 6, 3): rows p, origin, normal at t0 then at t1.
+py::tuple decide_point_plane_batch(const py::handle& queries, double t_max, double toi_width,
+                                   const std::string& mode, const std::optional<int>& threads,
+                                   double min_separation) {
+  const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
+  if (threads && (*threads < 1 || *threads > kMaxThreads))
+    throw py::value_error("threads must be in [1, " + std::to_string(kMaxThreads) +
+                          "] (or None for every core), not " + std::to_string(*threads));
+  const DoubleArray array = as_double_array(queries, {-1, 6, 3}, "queries");
+  const auto n = static_cast<std::size_t>(array.shape(0));
+  py::array_t<bool> collides(static_cast<py::ssize_t>(n));
+  py::array_t<double> toi_lo(static_cast<py::ssize_t>(n));
+  py::array_t<double> toi_hi(static_cast<py::ssize_t>(n));
+  py::array_t<std::uint8_t> stage(static_cast<py::ssize_t>(n));
+  const double* data = array.data();
+  bool* out_collides = collides.mutable_data();
+  double* out_lo = toi_lo.mutable_data();
+  double* out_hi = toi_hi.mutable_data();
+  std::uint8_t* out_stage = stage.mutable_data();
+  FirstFailure failure;
+  {
+    py::gil_scoped_release release;
+    const auto run = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        try {
+          const double* d = data + 18 * i;
+          const CcdResult r = point_plane_ccd(
+              {row_of(d, 0), row_of(d, 1), row_of(d, 2), row_of(d, 3), row_of(d, 4), row_of(d, 5)},
+              options);
+          out_collides[i] = r.collides;
+          out_lo[i] = r.toi_lo;
+          out_hi[i] = r.toi_hi;
+          out_stage[i] = static_cast<std::uint8_t>(r.decided_by);
+        } catch (...) {
+          failure.record(i, std::current_exception());
+          return;
+        }
+      }
+    };
+    if (threads && *threads == 1) {
+      run(0, n);
+    } else {
+      tbb::task_arena arena(threads ? *threads : tbb::task_arena::automatic);
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                            run(r.begin(), r.end());
+                          });
+      });
+    }
+  }
+  failure.raise_if_any();
+  return py::make_tuple(collides, toi_lo, toi_hi, stage);
+}
+
 }  // namespace
 
 void bind_batch(py::module_& m) {
+  m.def("_point_plane_batch", &decide_point_plane_batch, py::arg("queries"), py::arg("t_max"),
+        py::arg("toi_width"), py::arg("mode"), py::arg("threads"), py::arg("min_separation"));
   m.def(
       "_ccd_batch",
       [](const std::string& type, const py::handle& queries, double t_max, double toi_width,

@@ -83,3 +83,28 @@ def test_turning_planes_against_z3():
         tally.ask_about(exact, _z3_decider(rows, delta), f"query {n} delta {delta}")
     tally.check()
     assert tally.contacts > 20
+
+
+def test_batch_equals_single_calls():
+    rng = np.random.default_rng(4)
+    n = 300
+    queries = np.zeros((n, 6, 3))
+    queries[:, 0] = rng.uniform(-1, 1, (n, 3))
+    queries[:, 1] = rng.uniform(-0.5, 0.5, (n, 3))
+    queries[:, 2] = rng.uniform(-1, 1, (n, 3))
+    queries[:, 3] = queries[:, 0] + rng.uniform(-2, 2, (n, 3))
+    queries[:, 4] = queries[:, 1]
+    queries[:, 5] = np.where(rng.uniform(size=(n, 1)) < 0.5, queries[:, 2],
+                             rng.uniform(-1, 1, (n, 3)))
+    for delta in (0.0, 0.01):
+        batch = exactccd.point_plane_ccd_batch(queries, threads=2, min_separation=delta)
+        for i in range(n):
+            r = exactccd.point_plane_ccd(queries[i], min_separation=delta)
+            assert (batch.collides[i], batch.toi_lo[i], batch.toi_hi[i]) == \
+                (r.collides, r.toi_lo, r.toi_hi)
+        assert 30 < batch.collides.sum() < n
+    with pytest.raises(ValueError, match="query 1"):
+        bad = queries[:3].copy()
+        bad[1, 2] = 0
+        bad[1, 5] = 0
+        exactccd.point_plane_ccd_batch(bad)
