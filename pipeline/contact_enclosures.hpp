@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/predicates/motion.hpp"
@@ -15,6 +16,36 @@ namespace exactccd::pipeline::contact {
 
 using predicates::Interval;
 using IVec = predicates::Vec3<Interval>;
+
+/// Throws std::invalid_argument unless `r` collides with an enclosure in [0, 1].
+inline void check_result(const CcdResult& r) {
+  if (!r.collides)
+    throw std::invalid_argument("exactccd: contact_geometry needs a colliding result");
+  if (!(r.toi_lo >= 0.0 && r.toi_lo <= r.toi_hi && r.toi_hi <= 1.0))
+    throw std::invalid_argument("exactccd: contact_geometry: the result's TOI enclosure is not "
+                                "in [0, 1]");
+}
+
+/// Throws std::invalid_argument unless delta is finite and >= 0.
+inline void check_separation(double min_separation) {
+  if (!(min_separation >= 0.0) || !std::isfinite(min_separation))
+    throw std::invalid_argument("exactccd: contact_geometry: min_separation must be finite and "
+                                ">= 0");
+}
+
+/// The enclosure of t* (of s* for rigid motion): [0, 0] when the primitives touch at the start
+/// (starts_within: t* = 0 exactly), else [toi_lo, toi_hi].
+inline Interval parameter_enclosure(const CcdResult& r) {
+  return r.starts_within ? Interval(0.0) : Interval(r.toi_lo, r.toi_hi);
+}
+
+/// g'(t) over t, by Horner's rule on the derivative's coefficients (an enclosure of g' there).
+template <int D>
+Interval derivative_over(const predicates::FixedPoly<Interval, D>& g, const Interval& t) {
+  Interval r = double(D) * g.c[D];
+  for (int k = D - 1; k >= 1; --k) r = double(k) * g.c[k] + t * r;
+  return r;
+}
 
 /// +1 (-1) when g, which vanishes at t* in t, is certainly positive (negative) just before t*:
 /// g'(t*) lies in g'(t), so a certain sign of g'(t) is -sign(g) just before. 0: not certain.

@@ -9,11 +9,14 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/interval.hpp"
 #include "exact/arithmetic/rational.hpp"
+#include "core/predicates/query_points.hpp"
 #include "pipeline/contact_enclosures.hpp"
+#include "pipeline/power_of_two_scaling.hpp"
 
 namespace exactccd {
 
@@ -29,53 +32,37 @@ using contact::side_just_before;
 using contact::unit_normal;
 using contact::within;
 
-/// The 8 points of a query in the benchmark's row order.
+/// The 8 points of a query in the benchmark's row order, as the pipeline reads them.
 using Points = std::array<Eigen::Vector3d, 8>;
 
-void check_input(const Points& x, const CcdResult& r) {
-  for (const auto& v : x)
-    if (!v.allFinite())
-      throw std::invalid_argument("exactccd: contact_geometry: non-finite coordinate");
-  if (!r.collides)
-    throw std::invalid_argument("exactccd: contact_geometry needs a colliding result");
-  if (!(r.toi_lo >= 0.0 && r.toi_lo <= r.toi_hi && r.toi_hi <= 1.0))
-    throw std::invalid_argument("exactccd: contact_geometry: the result's TOI enclosure is not "
-                                "in [0, 1]");
-}
+/// A query ready for the enclosures: finite (else invalid_argument), normalised by the
+/// pipeline's exact power-of-two scaling 2^s (power_of_two_scaling.hpp; the point scales back by
+/// 2^-s), its rows, and T, the enclosure of t* ([0, 0] when it touches at the start).
+struct Prepared {
+  Points x;
+  int e = 0;  ///< the point's scale-back exponent
+  Interval t;
+};
 
-/// Every coordinate scaled by the power of two 2^-e that brings the largest to [0.5, 1), when no
-/// non-zero coordinate then falls below the normal range (so the scaling is exact). Barycentric
-/// coordinates, segment parameters and unit normals do not change; the point scales back by 2^e.
-int scale_exactly(Points& x) {
-  double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
-  for (const auto& v : x)
-    for (int i = 0; i < 3; ++i) {
-      const double a = std::abs(v[i]);
-      largest = std::max(largest, a);
-      if (a > 0) smallest = std::min(smallest, a);
-    }
-  if (largest == 0.0) return 0;
-  const int e = std::ilogb(largest) + 1;
-  if (std::ilogb(smallest) - e < std::numeric_limits<double>::min_exponent - 1) return 0;
-  for (auto& v : x)
-    for (int i = 0; i < 3; ++i) v[i] = std::ldexp(v[i], -e);
-  return e;
+template <class Query>
+Prepared prepared(const Query& query, const CcdResult& r) {
+  if (!predicates::all_finite(query))
+    throw std::invalid_argument("exactccd: contact_geometry: non-finite coordinate");
+  contact::check_result(r);
+  const int s = detail::normalising_exponent(query);
+  const Query q = s != 0 ? detail::scaled_by_power_of_two(query, s) : query;
+  Prepared out;
+  const predicates::QueryPoints rows = predicates::points_of(q);
+  for (int i = 0; i < 8; ++i) out.x[i] = *rows[i];
+  out.e = -s;
+  out.t = contact::parameter_enclosure(r);
+  return out;
 }
 
 Interval at(const FixedPoly<Interval, 1>& x, const Interval& t) { return x.c[0] + t * x.c[1]; }
 
 IVec at(const MovingPoint<Interval>& x, const Interval& t) {
   return {at(x.x, t), at(x.y, t), at(x.z, t)};
-}
-
-/// g'(t) over t, by Horner's rule on the derivative's coefficients.
-Interval derivative_at(const FixedPoly<Interval, 3>& g, const Interval& t) {
-  return g.c[1] + t * (2 * g.c[2] + t * (3 * g.c[3]));
-}
-
-/// T: [0, 0] when the primitives touch at the start (t* = 0, exact), else the TOI enclosure.
-Interval time_of(const CcdResult& r) {
-  return r.starts_within ? Interval(0.0) : Interval(r.toi_lo, r.toi_hi);
 }
 
 /// Every coefficient zero: the polynomial vanishes identically.
@@ -116,21 +103,21 @@ ContactGeometry with_degenerate_kind(ContactGeometry g, const Points& x, bool ve
   return g;
 }
 
-ContactGeometry vertex_face(Points x, const CcdResult& r) {
-  check_input(x, r);
+ContactGeometry vertex_face(const VertexFaceQuery& query, const CcdResult& r) {
   const predicates::RoundingGuard upward;
-  const int e = scale_exactly(x);
-  const Interval t = time_of(r);
+  const Prepared q = prepared(query, r);
+  const Points& x = q.x;
+  const Interval& t = q.t;
   const auto p = predicates::moving_point<Interval>(x[0], x[4]),
              a = predicates::moving_point<Interval>(x[1], x[5]),
              b = predicates::moving_point<Interval>(x[2], x[6]),
              c = predicates::moving_point<Interval>(x[3], x[7]);
   return with_degenerate_kind(
       contact::vertex_face_from(
-          at(p, t), at(a, t), at(b, t), at(c, t), r.starts_within, e,
+          at(p, t), at(a, t), at(b, t), at(c, t), r.starts_within, q.e,
           [&] {
-            return side_just_before(
-                derivative_at(predicates::vertex_face_coplanarity_cubic(p, a, b, c), t));
+            return side_just_before(contact::derivative_over(
+                predicates::vertex_face_coplanarity_cubic(p, a, b, c), t));
           }),
       x, true);
 }
@@ -169,15 +156,17 @@ ContactGeometry point_segment(const MovingPoint<Interval>& q, const MovingPoint<
   return g;
 }
 
-ContactGeometry edge_edge(Points x, const CcdResult& r) {
-  check_input(x, r);
+ContactGeometry edge_edge(const EdgeEdgeQuery& query, const CcdResult& r) {
   const predicates::RoundingGuard upward;
+  const Prepared q = prepared(query, r);
+  const Points& x = q.x;
+  const Interval& t = q.t;
+  const int e = q.e;
+  // Exact scaling keeps zeros and equalities: these read the scaled rows as the input's.
   const bool in_plane =
       std::all_of(x.begin(), x.end(), [](const Eigen::Vector3d& v) { return v.z() == 0.0; });
   const bool a_is_point = x[0] == x[1] && x[4] == x[5];
   const bool b_is_point = x[2] == x[3] && x[6] == x[7];
-  const int e = scale_exactly(x);
-  const Interval t = time_of(r);
   const auto a0 = predicates::moving_point<Interval>(x[0], x[4]),
              a1 = predicates::moving_point<Interval>(x[1], x[5]),
              b0 = predicates::moving_point<Interval>(x[2], x[6]),
@@ -203,36 +192,27 @@ ContactGeometry edge_edge(Points x, const CcdResult& r) {
       contact::edge_edge_from(
           at(a0, t), at(a1, t), at(b0, t), at(b1, t), r.starts_within, e,
           [&] {
-            return side_just_before(
-                derivative_at(predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), t));
+            return side_just_before(contact::derivative_over(
+                predicates::edge_edge_coplanarity_cubic(a0, a1, b0, b1), t));
           }),
       x, false);
 }
 
 /// With a minimum separation delta > 0: the closest points at t* (contact_enclosures.hpp).
 /// PROOF: proofs/contact_geometry.md#separation
-ContactGeometry vertex_face_separation(Points x, const CcdResult& r) {
-  check_input(x, r);
+template <class Query>
+ContactGeometry separation(const Query& query, const CcdResult& r) {
   const predicates::RoundingGuard upward;
-  const int e = scale_exactly(x);
-  const Interval t = time_of(r);
+  const Prepared q = prepared(query, r);
   const auto at_row = [&](int i) {
-    return at(predicates::moving_point<Interval>(x[i], x[i + 4]), t);
+    return at(predicates::moving_point<Interval>(q.x[i], q.x[i + 4]), q.t);
   };
-  return contact::vertex_face_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
-                                              r.starts_within, e);
-}
-
-ContactGeometry edge_edge_separation(Points x, const CcdResult& r) {
-  check_input(x, r);
-  const predicates::RoundingGuard upward;
-  const int e = scale_exactly(x);
-  const Interval t = time_of(r);
-  const auto at_row = [&](int i) {
-    return at(predicates::moving_point<Interval>(x[i], x[i + 4]), t);
-  };
-  return contact::edge_edge_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
-                                            r.starts_within, e);
+  if constexpr (std::is_same_v<Query, VertexFaceQuery>)
+    return contact::vertex_face_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
+                                                r.starts_within, q.e);
+  else
+    return contact::edge_edge_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
+                                              r.starts_within, q.e);
 }
 
 }  // namespace
@@ -249,28 +229,16 @@ const char* to_string(ContactKind kind) noexcept {
   return "unknown";
 }
 
-namespace {
-
-void check_separation(double min_separation) {
-  if (!(min_separation >= 0.0) || !std::isfinite(min_separation))
-    throw std::invalid_argument("exactccd: contact_geometry: min_separation must be finite and "
-                                ">= 0");
-}
-
-}  // namespace
-
 ContactGeometry contact_geometry(const VertexFaceQuery& q, const CcdResult& r,
                                  double min_separation) {
-  check_separation(min_separation);
-  const Points x{q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1, q.c_t1};
-  return min_separation > 0.0 ? vertex_face_separation(x, r) : vertex_face(x, r);
+  contact::check_separation(min_separation);
+  return min_separation > 0.0 ? separation(q, r) : vertex_face(q, r);
 }
 
 ContactGeometry contact_geometry(const EdgeEdgeQuery& q, const CcdResult& r,
                                  double min_separation) {
-  check_separation(min_separation);
-  const Points x{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1};
-  return min_separation > 0.0 ? edge_edge_separation(x, r) : edge_edge(x, r);
+  contact::check_separation(min_separation);
+  return min_separation > 0.0 ? separation(q, r) : edge_edge(q, r);
 }
 
 }  // namespace exactccd

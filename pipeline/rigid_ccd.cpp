@@ -20,6 +20,7 @@
 #include "pipeline/ccd_options_check.hpp"
 #include "pipeline/dispatch.hpp"
 #include "pipeline/rigid_problems.hpp"
+#include "pipeline/rigid_query_check.hpp"
 
 namespace exactccd {
 
@@ -51,27 +52,6 @@ void add_side(const SideMotion& side, int vertices, const char* name,
       throw std::invalid_argument(std::string("exactccd: unknown PathKind in ") + name);
     for (int i = 0; i < vertices; ++i) out->end[i] = checked(side.linear_end[i], name, "linear_end");
   }
-}
-
-/// The query in doubles, every input checked to be finite (no heap allocation unless it throws).
-predicates::DoubleRigidQuery checked_query(const RigidVertexFaceQuery& query) {
-  predicates::DoubleRigidQuery q;
-  q.type = QueryType::vertex_face;
-  q.start = {checked(query.p, "p"), checked(query.a, "a"), checked(query.b, "b"),
-             checked(query.c, "c")};
-  add_side(query.vertex, 1, "vertex", &q.side[0]);
-  add_side(query.face, 3, "face", &q.side[1]);
-  return q;
-}
-
-predicates::DoubleRigidQuery checked_query(const RigidEdgeEdgeQuery& query) {
-  predicates::DoubleRigidQuery q;
-  q.type = QueryType::edge_edge;
-  q.start = {checked(query.ea0, "ea0"), checked(query.ea1, "ea1"), checked(query.eb0, "eb0"),
-             checked(query.eb1, "eb1")};
-  add_side(query.edge_a, 2, "edge_a", &q.side[0]);
-  add_side(query.edge_b, 2, "edge_b", &q.side[1]);
-  return q;
 }
 
 bool is_zero(const Vec3<double>& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
@@ -175,13 +155,38 @@ template <class Query>
 RigidCcdResult rigid_ccd(const Query& query, const CcdOptions& options) {
   const predicates::RoundToNearestGuard nearest;
   check_ccd_options(options);
-  const predicates::DoubleRigidQuery q = checked_query(query);
+  const predicates::DoubleRigidQuery q = pipeline::checked_query(query);
   if (options.min_separation > 0)
     return with_time(pipeline::certified_ccd<pipeline::RigidSeparation>(q, options), q);
   return with_time(pipeline::certified_ccd<pipeline::RigidContact>(q, options), q);
 }
 
 }  // namespace
+
+namespace pipeline {
+
+/// The query in doubles, every input checked to be finite (no heap allocation unless it throws).
+predicates::DoubleRigidQuery checked_query(const RigidVertexFaceQuery& query) {
+  predicates::DoubleRigidQuery q;
+  q.type = QueryType::vertex_face;
+  q.start = {checked(query.p, "p"), checked(query.a, "a"), checked(query.b, "b"),
+             checked(query.c, "c")};
+  add_side(query.vertex, 1, "vertex", &q.side[0]);
+  add_side(query.face, 3, "face", &q.side[1]);
+  return q;
+}
+
+predicates::DoubleRigidQuery checked_query(const RigidEdgeEdgeQuery& query) {
+  predicates::DoubleRigidQuery q;
+  q.type = QueryType::edge_edge;
+  q.start = {checked(query.ea0, "ea0"), checked(query.ea1, "ea1"), checked(query.eb0, "eb0"),
+             checked(query.eb1, "eb1")};
+  add_side(query.edge_a, 2, "edge_a", &q.side[0]);
+  add_side(query.edge_b, 2, "edge_b", &q.side[1]);
+  return q;
+}
+
+}  // namespace pipeline
 
 RigidMotion RigidMotion::turn(const Eigen::Vector3d& pivot, const Eigen::Vector3d& axis,
                               double angle, const Eigen::Vector3d& translation) {
