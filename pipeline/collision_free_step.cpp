@@ -19,10 +19,12 @@ namespace exactccd {
 
 namespace {
 
+/// t_max and min_separation as every CCD option; the step's own two options.
 void check_step_options(const StepOptions& o) {
-  if (!(o.t_max >= 0.0 && o.t_max <= 1.0)) throw_bad_option("t_max must lie in [0, 1]", o.t_max);
-  if (!(o.min_separation >= 0.0) || !std::isfinite(o.min_separation))
-    throw_bad_option("min_separation must be finite and >= 0", o.min_separation);
+  CcdOptions ccd;
+  ccd.t_max = o.t_max;
+  ccd.min_separation = o.min_separation;
+  check_ccd_options(ccd);
   if (!(o.conservative_rescaling > 0.0 && o.conservative_rescaling <= 1.0))
     throw_bad_option("conservative_rescaling must lie in (0, 1]", o.conservative_rescaling);
   if (!(o.max_margin >= 0.0))
@@ -107,30 +109,24 @@ double largest_coordinate(const Vectors&... v) {
 
 Eigen::Vector3d in_plane_z0(const Eigen::Vector2d& v) { return {v.x(), v.y(), 0.0}; }
 
-/// The distance estimates: plain doubles, rounded to nearest (nothing relies on them).
+/// The distance estimates, in plain doubles (nothing relies on them).
 double start_distance(const VertexFaceQuery& q) {
-  const predicates::RoundToNearestGuard nearest;
   return methods::point_triangle_distance(q.p_t0, q.a_t0, q.b_t0, q.c_t0);
 }
 double start_distance(const EdgeEdgeQuery& q) {
-  const predicates::RoundToNearestGuard nearest;
   return methods::segment_segment_distance(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0);
 }
 double start_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& e0,
                       const Eigen::Vector3d& e1) {
-  const predicates::RoundToNearestGuard nearest;
   return methods::point_segment_distance(p, e0, e1);
 }
 double start_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& q) {
-  const predicates::RoundToNearestGuard nearest;
   return (p - q).norm();
 }
 double start_distance(const RigidVertexFaceQuery& q) {
-  const predicates::RoundToNearestGuard nearest;
   return methods::point_triangle_distance(q.p, q.a, q.b, q.c);
 }
 double start_distance(const RigidEdgeEdgeQuery& q) {
-  const predicates::RoundToNearestGuard nearest;
   return methods::segment_segment_distance(q.ea0, q.ea1, q.eb0, q.eb1);
 }
 
@@ -153,58 +149,65 @@ CcdResult ccd_of(const RigidEdgeEdgeQuery& q, const CcdOptions& c) {
   return edge_edge_ccd(q, c).ccd;
 }
 
-/// The step of a query whose CCD function returns a CcdResult.
-template <class Query>
-StepResult step_of_query(const Query& q, double start, double slack, const StepOptions& o) {
-  return collision_free(start, slack, o, [&](const CcdOptions& c) { return ccd_of(q, c); });
+/// The step of a query: `start()` estimates the distance at t = 0, `largest` is its largest
+/// |coordinate| (negative: no rounding slack, rigid queries). Rounding to nearest for the
+/// estimate and the margins, the caller's FP state restored on return (each query sets its
+/// own).
+template <class Query, class Start>
+StepResult step_of_query(const Query& q, Start&& start, double largest, const StepOptions& o) {
+  const predicates::RoundToNearestGuard nearest;
+  return collision_free(start(), largest < 0 ? 0.0 : rounding_slack(largest), o,
+                        [&](const CcdOptions& c) { return ccd_of(q, c); });
 }
 
 }  // namespace
 
 StepResult collision_free_step(const VertexFaceQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q),
-                       rounding_slack(largest_coordinate(q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1,
-                                                         q.a_t1, q.b_t1, q.c_t1)),
-                       o);
+  return step_of_query(
+      q, [&] { return start_distance(q); },
+      largest_coordinate(q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1, q.c_t1), o);
 }
 
 StepResult collision_free_step(const EdgeEdgeQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q),
-                       rounding_slack(largest_coordinate(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0,
-                                                         q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1)),
+  return step_of_query(q, [&] { return start_distance(q); },
+                       largest_coordinate(q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1,
+                                          q.ea1_t1, q.eb0_t1, q.eb1_t1),
                        o);
 }
 
 StepResult collision_free_step(const PointEdgeQuery& q, const StepOptions& o) {
   return step_of_query(
-      q, start_distance(q.p_t0, q.e0_t0, q.e1_t0),
-      rounding_slack(largest_coordinate(q.p_t0, q.e0_t0, q.e1_t0, q.p_t1, q.e0_t1, q.e1_t1)), o);
+      q, [&] { return start_distance(q.p_t0, q.e0_t0, q.e1_t0); },
+      largest_coordinate(q.p_t0, q.e0_t0, q.e1_t0, q.p_t1, q.e0_t1, q.e1_t1), o);
 }
 
 StepResult collision_free_step(const PointPointQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q.p_t0, q.q_t0),
-                       rounding_slack(largest_coordinate(q.p_t0, q.q_t0, q.p_t1, q.q_t1)), o);
+  return step_of_query(q, [&] { return start_distance(q.p_t0, q.q_t0); },
+                       largest_coordinate(q.p_t0, q.q_t0, q.p_t1, q.q_t1), o);
 }
 
 StepResult collision_free_step(const PointEdgeQuery2d& q, const StepOptions& o) {
   return step_of_query(
-      q, start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.e0_t0), in_plane_z0(q.e1_t0)),
-      rounding_slack(largest_coordinate(q.p_t0, q.e0_t0, q.e1_t0, q.p_t1, q.e0_t1, q.e1_t1)), o);
+      q,
+      [&] {
+        return start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.e0_t0), in_plane_z0(q.e1_t0));
+      },
+      largest_coordinate(q.p_t0, q.e0_t0, q.e1_t0, q.p_t1, q.e0_t1, q.e1_t1), o);
 }
 
 StepResult collision_free_step(const PointPointQuery2d& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.q_t0)),
-                       rounding_slack(largest_coordinate(q.p_t0, q.q_t0, q.p_t1, q.q_t1)), o);
+  return step_of_query(q, [&] { return start_distance(in_plane_z0(q.p_t0), in_plane_z0(q.q_t0)); },
+                       largest_coordinate(q.p_t0, q.q_t0, q.p_t1, q.q_t1), o);
 }
 
 // Rigid positions are formed by the rigid motion's rational formula, whose rounding the slack
-// above does not bound: no slack.
+// does not bound: no slack.
 StepResult collision_free_step(const RigidVertexFaceQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q), 0.0, o);
+  return step_of_query(q, [&] { return start_distance(q); }, -1.0, o);
 }
 
 StepResult collision_free_step(const RigidEdgeEdgeQuery& q, const StepOptions& o) {
-  return step_of_query(q, start_distance(q), 0.0, o);
+  return step_of_query(q, [&] { return start_distance(q); }, -1.0, o);
 }
 
 }  // namespace exactccd
