@@ -76,16 +76,51 @@ void write_enclosures(double* out, const Enclosure* e, int k) {
   }
 }
 
+/// Calls body(i) for i in [0, n) without the GIL, serially on the calling thread (threads 1)
+/// or in parallel; the first query that throws (lowest index) is raised afterwards.
+template <class Body>
+void for_each_query(std::size_t n, const std::optional<int>& threads, Body&& body) {
+  FirstFailure failure;
+  {
+    py::gil_scoped_release release;
+    const auto run = [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        try {
+          body(i);
+        } catch (...) {
+          failure.record(i, std::current_exception());
+          return;  // later queries of this range cannot lower the index
+        }
+      }
+    };
+    if (threads && *threads == 1) {
+      run(0, n);
+    } else {
+      tbb::task_arena arena(threads ? *threads : tbb::task_arena::automatic);
+      arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                            run(r.begin(), r.end());
+                          });
+      });
+    }
+  }
+  failure.raise_if_any();
+}
+
+void check_threads(const std::optional<int>& threads) {
+  if (threads && (*threads < 1 || *threads > kMaxThreads))
+    throw py::value_error("threads must be in [1, " + std::to_string(kMaxThreads) +
+                          "] (or None for every core), not " + std::to_string(*threads));
+}
+
 py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
                        double toi_width, const std::string& mode,
                        const std::optional<int>& threads, double min_separation, bool contact) {
   const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
   if (contact && options.mode == Mode::float_only)
     throw py::value_error("contact=True needs a certified mode (\"filtered\" or \"exact\")");
-  if (threads && (*threads < 1 || *threads > kMaxThreads))
-    throw py::value_error("threads must be in [1, " + std::to_string(kMaxThreads) +
-                          "] (or None for every core), not " +
-                          std::to_string(*threads));
+  check_threads(threads);
   const DoubleArray array = as_double_array(queries, {-1, 8, 3}, "queries");
   const auto n = static_cast<std::size_t>(array.shape(0));
   py::array_t<bool> collides(static_cast<py::ssize_t>(n));
@@ -111,52 +146,29 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
   std::int8_t* out_kind = kind.mutable_data();
   bool* out_oriented = oriented.mutable_data();
 
-  FirstFailure failure;
-  {
-    py::gil_scoped_release release;
-    const auto run = [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        try {
-          const CcdResult r = decide(type, data + 24 * i, options);
-          out_collides[i] = r.collides;
-          out_lo[i] = r.toi_lo;
-          out_hi[i] = r.toi_hi;
-          out_stage[i] = static_cast<std::uint8_t>(r.decided_by);
-          if (!contact) continue;
-          if (!r.collides) {
-            constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-            std::fill(out_parameters + 2 * k * i, out_parameters + 2 * k * (i + 1), nan);
-            std::fill(out_normal + 6 * i, out_normal + 6 * (i + 1), nan);
-            std::fill(out_point + 6 * i, out_point + 6 * (i + 1), nan);
-            out_kind[i] = -1;
-            out_oriented[i] = false;
-            continue;
-          }
-          const ContactGeometry g = geometry(type, data + 24 * i, r, options.min_separation);
-          write_enclosures(out_parameters + 2 * k * i, g.parameters.data(), k);
-          write_enclosures(out_normal + 6 * i, g.normal.data(), 3);
-          write_enclosures(out_point + 6 * i, g.point.data(), 3);
-          out_kind[i] = static_cast<std::int8_t>(g.kind);
-          out_oriented[i] = g.normal_oriented;
-        } catch (...) {
-          failure.record(i, std::current_exception());
-          return;  // later queries of this range cannot lower the index
-        }
-      }
-    };
-    if (threads && *threads == 1) {
-      run(0, n);
-    } else {
-      tbb::task_arena arena(threads ? *threads : tbb::task_arena::automatic);
-      arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64),
-                          [&](const tbb::blocked_range<std::size_t>& r) {
-                            run(r.begin(), r.end());
-                          });
-      });
+  for_each_query(n, threads, [&](std::size_t i) {
+    const CcdResult r = decide(type, data + 24 * i, options);
+    out_collides[i] = r.collides;
+    out_lo[i] = r.toi_lo;
+    out_hi[i] = r.toi_hi;
+    out_stage[i] = static_cast<std::uint8_t>(r.decided_by);
+    if (!contact) return;
+    if (!r.collides) {
+      constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+      std::fill(out_parameters + 2 * k * i, out_parameters + 2 * k * (i + 1), nan);
+      std::fill(out_normal + 6 * i, out_normal + 6 * (i + 1), nan);
+      std::fill(out_point + 6 * i, out_point + 6 * (i + 1), nan);
+      out_kind[i] = -1;
+      out_oriented[i] = false;
+      return;
     }
-  }
-  failure.raise_if_any();
+    const ContactGeometry g = geometry(type, data + 24 * i, r, options.min_separation);
+    write_enclosures(out_parameters + 2 * k * i, g.parameters.data(), k);
+    write_enclosures(out_normal + 6 * i, g.normal.data(), 3);
+    write_enclosures(out_point + 6 * i, g.point.data(), 3);
+    out_kind[i] = static_cast<std::int8_t>(g.kind);
+    out_oriented[i] = g.normal_oriented;
+  });
   if (!contact) return py::make_tuple(collides, toi_lo, toi_hi, stage);
   return py::make_tuple(collides, toi_lo, toi_hi, stage,
                         py::make_tuple(parameters, normal, point, kind, oriented));
@@ -167,9 +179,7 @@ py::tuple decide_point_plane_batch(const py::handle& queries, double t_max, doub
                                    const std::string& mode, const std::optional<int>& threads,
                                    double min_separation) {
   const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
-  if (threads && (*threads < 1 || *threads > kMaxThreads))
-    throw py::value_error("threads must be in [1, " + std::to_string(kMaxThreads) +
-                          "] (or None for every core), not " + std::to_string(*threads));
+  check_threads(threads);
   const DoubleArray array = as_double_array(queries, {-1, 6, 3}, "queries");
   const auto n = static_cast<std::size_t>(array.shape(0));
   py::array_t<bool> collides(static_cast<py::ssize_t>(n));
@@ -181,39 +191,16 @@ py::tuple decide_point_plane_batch(const py::handle& queries, double t_max, doub
   double* out_lo = toi_lo.mutable_data();
   double* out_hi = toi_hi.mutable_data();
   std::uint8_t* out_stage = stage.mutable_data();
-  FirstFailure failure;
-  {
-    py::gil_scoped_release release;
-    const auto run = [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) {
-        try {
-          const double* d = data + 18 * i;
-          const CcdResult r = point_plane_ccd(
-              {row_of(d, 0), row_of(d, 1), row_of(d, 2), row_of(d, 3), row_of(d, 4), row_of(d, 5)},
-              options);
-          out_collides[i] = r.collides;
-          out_lo[i] = r.toi_lo;
-          out_hi[i] = r.toi_hi;
-          out_stage[i] = static_cast<std::uint8_t>(r.decided_by);
-        } catch (...) {
-          failure.record(i, std::current_exception());
-          return;
-        }
-      }
-    };
-    if (threads && *threads == 1) {
-      run(0, n);
-    } else {
-      tbb::task_arena arena(threads ? *threads : tbb::task_arena::automatic);
-      arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64),
-                          [&](const tbb::blocked_range<std::size_t>& r) {
-                            run(r.begin(), r.end());
-                          });
-      });
-    }
-  }
-  failure.raise_if_any();
+  for_each_query(n, threads, [&](std::size_t i) {
+    const double* d = data + 18 * i;
+    const CcdResult r = point_plane_ccd(
+        {row_of(d, 0), row_of(d, 1), row_of(d, 2), row_of(d, 3), row_of(d, 4), row_of(d, 5)},
+        options);
+    out_collides[i] = r.collides;
+    out_lo[i] = r.toi_lo;
+    out_hi[i] = r.toi_hi;
+    out_stage[i] = static_cast<std::uint8_t>(r.decided_by);
+  });
   return py::make_tuple(collides, toi_lo, toi_hi, stage);
 }
 
