@@ -41,7 +41,14 @@ const char* to_string(Mode mode) noexcept {
 }
 
 const char* to_string(QueryType type) noexcept {
-  return type == QueryType::vertex_face ? "vertex-face" : "edge-edge";
+  switch (type) {
+    case QueryType::vertex_face: return "vertex-face";
+    case QueryType::edge_edge: return "edge-edge";
+    case QueryType::point_edge: return "point-edge";
+    case QueryType::point_point: return "point-point";
+    case QueryType::point_plane: return "point-plane";
+  }
+  return "unknown";
 }
 
 namespace {

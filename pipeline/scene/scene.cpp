@@ -21,6 +21,7 @@
 
 #include "pipeline/ccd_options_check.hpp"
 #include "pipeline/scene/bvh.hpp"
+#include "pipeline/scene/plane_cull.hpp"
 #include "pipeline/scene/rigid_boxes.hpp"
 #include "pipeline/scene/rigid_cylinder_ranges.hpp"
 #include "pipeline/scene/time_span.hpp"
@@ -66,13 +67,23 @@ struct Hierarchies {
   double raised_by = 0.0;  ///< the min_separation the boxes' upper corners were raised by
 };
 
+/// What a mesh holds (scene.hpp): triangles with their sides, edges only, points only, or an
+/// infinite static plane.
+enum class MeshKind : std::uint8_t { triangles, edges, points, plane };
+
 struct Mesh {
+  MeshKind kind = MeshKind::triangles;
   bool is_static = false;
   bool is_rigid = false;  ///< a rigid body: moves with `motion`; `end` is for display only
   RigidMotion motion;     ///< a rigid body's motion (zero until set_rigid_motion)
   Positions start, end;
   Triangles triangles;
   Edges edges;
+  /// Per vertex, whether it is a point (edge meshes and point sets: on none of the edges).
+  std::vector<char> is_point;
+  bool has_points = false;
+  /// A plane's origin and normal (kind plane).
+  Eigen::Vector3d plane_origin = Eigen::Vector3d::Zero(), plane_normal = Eigen::Vector3d::Zero();
   Hierarchies spans[3];
   /// Cylinder ranges of the start positions about recently used lines (rigid_cylinder_ranges.hpp),
   /// dropped when the start positions change.
@@ -400,6 +411,12 @@ bool triangle_has_vertex(const Triangles& t, std::uint32_t f, std::int32_t v) {
   return t(fi, 0) == v || t(fi, 1) == v || t(fi, 2) == v;
 }
 
+bool edge_has_vertex(const Edges& e, std::uint32_t i, std::uint32_t v) {
+  const auto a = static_cast<Eigen::Index>(i);
+  const auto w = static_cast<std::int32_t>(v);
+  return e(a, 0) == w || e(a, 1) == w;
+}
+
 bool edges_share_vertex(const Edges& e, std::uint32_t i, std::uint32_t j) {
   const auto a = static_cast<Eigen::Index>(i), b = static_cast<Eigen::Index>(j);
   return e(a, 0) == e(b, 0) || e(a, 0) == e(b, 1) || e(a, 1) == e(b, 0) || e(a, 1) == e(b, 1);
@@ -453,6 +470,22 @@ struct Candidates {
 
 struct Scene::Impl {
   std::vector<Mesh> meshes;
+  SceneDimension dimension = SceneDimension::three;
+
+  bool planar() const { return dimension == SceneDimension::two; }
+
+  /// Rigid bodies cannot meet planes yet (a rigid point-plane test does not exist).
+  void check_kinds() const {
+    const auto plane = std::find_if(meshes.begin(), meshes.end(),
+                                    [](const Mesh& m) { return m.kind == MeshKind::plane; });
+    const auto rigid = std::find_if(meshes.begin(), meshes.end(),
+                                    [](const Mesh& m) { return m.is_rigid; });
+    if (plane != meshes.end() && rigid != meshes.end())
+      throw std::invalid_argument(
+          "exactccd: rigid body " + std::to_string(rigid - meshes.begin()) + " and plane " +
+          std::to_string(plane - meshes.begin()) +
+          " in one scene: rigid bodies cannot meet planes yet (use a static mesh as the floor)");
+  }
 
   bool any_rigid() const {
     return std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return m.is_rigid; });
@@ -483,13 +516,27 @@ struct Scene::Impl {
             side_of(a, v),      side_of(b, t)};
   }
 
+  /// The segments of an edge-edge, point-edge or point-point pair: a point is the zero-length
+  /// segment [v, v], exactly as point_edge_ccd and point_point_ccd reduce their queries to
+  /// edge_edge_ccd (PROOF: proofs/api_reductions.md#point-primitives), so deciding the
+  /// segments is deciding the pair.
+  static std::array<std::int32_t, 2> segment(const Mesh& m, std::uint32_t index, bool is_edge) {
+    if (!is_edge) return {static_cast<std::int32_t>(index), static_cast<std::int32_t>(index)};
+    const auto e = static_cast<Eigen::Index>(index);
+    return {m.edges(e, 0), m.edges(e, 1)};
+  }
+  static std::array<std::int32_t, 2> first_segment(const Mesh& m, const ScenePair& p) {
+    return segment(m, p.first_index, p.type == QueryType::edge_edge);
+  }
+  static std::array<std::int32_t, 2> second_segment(const Mesh& m, const ScenePair& p) {
+    return segment(m, p.second_index, p.type != QueryType::point_point);
+  }
+
   RigidEdgeEdgeQuery rigid_edge_edge(const ScenePair& p) const {
     const Mesh& a = mesh(p.first_mesh);
     const Mesh& b = mesh(p.second_mesh);
-    const auto i = static_cast<Eigen::Index>(p.first_index);
-    const auto j = static_cast<Eigen::Index>(p.second_index);
-    const std::array<std::int32_t, 2> ea{a.edges(i, 0), a.edges(i, 1)};
-    const std::array<std::int32_t, 2> eb{b.edges(j, 0), b.edges(j, 1)};
+    const std::array<std::int32_t, 2> ea = first_segment(a, p);
+    const std::array<std::int32_t, 2> eb = second_segment(b, p);
     return {row(a.start, ea[0]), row(a.start, ea[1]), row(b.start, eb[0]), row(b.start, eb[1]),
             side_of(a, ea),      side_of(b, eb)};
   }
@@ -536,11 +583,7 @@ struct Scene::Impl {
           std::array<std::int32_t, 3>{b.triangles(f, 0), b.triangles(f, 1), b.triangles(f, 2)},
           window, delta);
     }
-    const auto i = static_cast<Eigen::Index>(p.first_index);
-    const auto j = static_cast<Eigen::Index>(p.second_index);
-    return rigid_sides_disjoint(a, std::array<std::int32_t, 2>{a.edges(i, 0), a.edges(i, 1)}, b,
-                                std::array<std::int32_t, 2>{b.edges(j, 0), b.edges(j, 1)}, window,
-                                delta);
+    return rigid_sides_disjoint(a, first_segment(a, p), b, second_segment(b, p), window, delta);
   }
 
   const Mesh& mesh(MeshId id) const {
@@ -558,15 +601,23 @@ struct Scene::Impl {
             row(b.end, b.triangles(f, 1)), row(b.end, b.triangles(f, 2))};
   }
 
+  /// The edge-edge query of an edge-edge, point-edge or point-point pair (first_segment).
   EdgeEdgeQuery edge_edge(const ScenePair& p) const {
     const Mesh& a = mesh(p.first_mesh);
     const Mesh& b = mesh(p.second_mesh);
-    const auto i = static_cast<Eigen::Index>(p.first_index);
-    const auto j = static_cast<Eigen::Index>(p.second_index);
-    return {row(a.start, a.edges(i, 0)), row(a.start, a.edges(i, 1)),
-            row(b.start, b.edges(j, 0)), row(b.start, b.edges(j, 1)),
-            row(a.end, a.edges(i, 0)),   row(a.end, a.edges(i, 1)),
-            row(b.end, b.edges(j, 0)),   row(b.end, b.edges(j, 1))};
+    const std::array<std::int32_t, 2> ea = first_segment(a, p);
+    const std::array<std::int32_t, 2> eb = second_segment(b, p);
+    return {row(a.start, ea[0]), row(a.start, ea[1]), row(b.start, eb[0]), row(b.start, eb[1]),
+            row(a.end, ea[0]),   row(a.end, ea[1]),   row(b.end, eb[0]),   row(b.end, eb[1])};
+  }
+
+  /// A point-plane pair's query: the vertex's motion against the static plane.
+  PointPlaneQuery point_plane(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& plane = mesh(p.second_mesh);
+    const auto v = static_cast<std::int32_t>(p.first_index);
+    return {row(a.start, v), plane.plane_origin, plane.plane_normal,
+            row(a.end, v),   plane.plane_origin, plane.plane_normal};
   }
 
   /// A mesh pair a call visits (a <= b) and its cylinder culls in both orders.
@@ -627,7 +678,7 @@ struct Scene::Impl {
   void gather_candidates(const At& at, const std::vector<MeshPair>& pairs, const Sink& sink,
                          PerThread<std::uint64_t>& culled, bool by_time,
                          const Until& until,
-                         PerThread<std::uint64_t>& time_culled) const {
+                         PerThread<std::uint64_t>& time_culled, double delta) const {
     // The motions of a mesh pair when culling by time applies to it, else nullptr.
     const auto motions = [&](MeshId a, MeshId b, auto member) {
       using Motion = Hierarchies::Motion;
@@ -714,13 +765,111 @@ struct Scene::Impl {
           ea.parallel_for_each_overlap(eb, pair);
       }
     };
+    // A mesh's points against another's edges: in 3D the points of edge meshes and point sets
+    // (a vertex on an edge meets an edge only where that edge does: edge-edge covers it), in
+    // 2D every vertex, which covers the edges too (proofs/scene.md#codimensional).
+    const bool every_vertex = planar();
+    const auto point_edge = [&](MeshId a, MeshId b, const std::optional<CylinderCull>& cull) {
+      const Mesh& ma = meshes[a];
+      const Mesh& mb = meshes[b];
+      if (!(every_vertex || ma.has_points) || mb.edges.rows() == 0) return;
+      const Bvh& va = at(ma).vertices;
+      const Bvh& eb = at(mb).edges;
+      const auto [mv, me] = motions(
+          a, b, std::make_pair(&Hierarchies::vertex_motion, &Hierarchies::edge_motion));
+      const auto pair = [&, mv = mv, me = me](std::uint32_t v, std::uint32_t e) {
+        if (!every_vertex && !ma.is_point[v]) return;
+        if (a == b && edge_has_vertex(mb.edges, e, v)) return;
+        if (cull && scene::apart(cull->first->vertices[v], cull->second->edges[e])) {
+          ++culled.local();
+          return;
+        }
+        const double start = time_start(mv, me, v, e);
+        if (start == std::numeric_limits<double>::infinity()) return;
+        sink(ScenePair{QueryType::point_edge, a, v, b, e}, start);
+      };
+      if (cull)
+        va.parallel_for_each_overlap(eb, pair,
+                                     node_cull(va, cull->first->vertices, eb, cull->second->edges,
+                                               culled));
+      else if (mv)
+        va.parallel_for_each_overlap(eb, pair, time_keep(mv, me));
+      else
+        va.parallel_for_each_overlap(eb, pair);
+    };
+    // Points against points (rigid bodies have none: no cylinder cull).
+    const auto point_point = [&](MeshId a, MeshId b) {
+      const Mesh& ma = meshes[a];
+      const Mesh& mb = meshes[b];
+      if (!ma.has_points || !mb.has_points) return;
+      const auto [m0, m1] = motions(
+          a, b, std::make_pair(&Hierarchies::vertex_motion, &Hierarchies::vertex_motion));
+      const auto pair = [&, m0 = m0, m1 = m1](std::uint32_t i, std::uint32_t j) {
+        if (!ma.is_point[i] || !mb.is_point[j]) return;
+        const double start = time_start(m0, m1, i, j);
+        if (start == std::numeric_limits<double>::infinity()) return;
+        if (a == b)
+          sink(ScenePair{QueryType::point_point, a, std::min(i, j), a, std::max(i, j)}, start);
+        else
+          sink(ScenePair{QueryType::point_point, a, i, b, j}, start);
+      };
+      const Bvh& va = at(ma).vertices;
+      if (a == b) {
+        if (m0)
+          va.parallel_for_each_self_overlap(pair, time_keep(m0, m0));
+        else
+          va.parallel_for_each_self_overlap(pair);
+      } else if (m0) {
+        va.parallel_for_each_overlap(at(mb).vertices, pair, time_keep(m0, m1));
+      } else {
+        va.parallel_for_each_overlap(at(mb).vertices, pair);
+      }
+    };
     // Many small meshes: the mesh pairs in parallel too (each traversal is itself parallel).
     tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
       const MeshPair& p = pairs[k];
-      vertex_face(p.a, p.b, p.ab);
-      if (p.a != p.b) vertex_face(p.b, p.a, p.ba);
-      edge_edge(p.a, p.b, p.ab);
+      if (!planar()) {  // a 2D scene has no triangles, and point-edge covers its edges
+        vertex_face(p.a, p.b, p.ab);
+        if (p.a != p.b) vertex_face(p.b, p.a, p.ba);
+        edge_edge(p.a, p.b, p.ab);
+      }
+      point_edge(p.a, p.b, p.ab);
+      if (p.a != p.b) point_edge(p.b, p.a, p.ba);
+      point_point(p.a, p.b);
     });
+    plane_candidates(sink, until, delta);
+  }
+
+  /// Every vertex of a moving mesh against every plane, cut by apart_from_plane over
+  /// [0, until()] (one certified test per vertex: no hierarchy, no cost per triangle).
+  /// PROOF: proofs/scene.md#planes
+  template <class Sink, class Until>
+  void plane_candidates(const Sink& sink, const Until& until, double delta) const {
+    for (MeshId plane = 0; plane < meshes.size(); ++plane) {
+      const Mesh& pm = meshes[plane];
+      if (pm.kind != MeshKind::plane) continue;
+      for (MeshId id = 0; id < meshes.size(); ++id) {
+        const Mesh& m = meshes[id];
+        if (m.is_static || m.is_rigid) continue;  // planes and static meshes never move
+        tbb::parallel_for(
+            tbb::blocked_range<Eigen::Index>(0, m.start.rows(), 4096),
+            [&](const tbb::blocked_range<Eigen::Index>& r) {
+              std::vector<std::uint32_t> near;  // the sink runs in the caller's FP state
+              {
+                const double window = std::min(1.0, until());
+                const predicates::RoundingGuard upward;
+                for (Eigen::Index v = r.begin(); v != r.end(); ++v) {
+                  const auto vi = static_cast<std::int32_t>(v);
+                  if (!scene::apart_from_plane(row(m.start, vi), row(m.end, vi),
+                                               pm.plane_origin, pm.plane_normal, delta, window))
+                    near.push_back(static_cast<std::uint32_t>(v));
+                }
+              }
+              for (const std::uint32_t v : near)
+                sink(ScenePair{QueryType::point_plane, id, v, plane, 0}, 0.0);
+            });
+      }
+    }
   }
 
   /// The node test of a traversal with a cylinder cull: a node's ranges merge those of the
@@ -754,6 +903,7 @@ struct Scene::Impl {
   struct SweptScene {
     std::vector<MeshPair> pairs;
     bool by_time = false;
+    double delta = 0.0;  ///< the minimum separation the boxes are raised by
   };
   SweptScene prepare_swept(const SceneOptions& o, SceneStats& stats) {
     SweptScene s;
@@ -761,6 +911,7 @@ struct Scene::Impl {
                   return !m.is_rigid && moves_far(m);
                 });
     for (Mesh& m : meshes) prepare(m, Span::swept, o.min_separation, stats, s.by_time);
+    s.delta = o.min_separation;
     s.pairs = close_mesh_pairs(o, swept);
     return s;
   }
@@ -771,7 +922,7 @@ struct Scene::Impl {
   void swept_candidates(const SweptScene& s, const Sink& sink, const Until& until,
                         SceneStats& stats) {
     PerThread<std::uint64_t> culled(0), time_culled(0);
-    gather_candidates(swept, s.pairs, sink, culled, s.by_time, until, time_culled);
+    gather_candidates(swept, s.pairs, sink, culled, s.by_time, until, time_culled, s.delta);
     stats.cylinder_culled += total(culled);
     stats.time_culled += total(time_culled);
   }
@@ -813,7 +964,7 @@ struct Scene::Impl {
       gather_candidates(
           at, close_mesh_pairs(o, at),
           [&](const ScenePair& p, double start) { found.local().add(p, start); }, culled, false,
-          [] { return 1.0; }, unused);
+          [] { return 1.0; }, unused, o.min_separation);
     }
     stats.cylinder_culled += total(culled);
     std::vector<ScenePair> all = std::move(concatenate(found).pairs);
@@ -828,11 +979,18 @@ struct Scene::Impl {
   static CcdResult decide_query(const EdgeEdgeQuery& q, const CcdOptions& options) {
     return edge_edge_ccd(q, options);
   }
+  static CcdResult decide_query(const PointPlaneQuery& q, const CcdOptions& options) {
+    return point_plane_ccd(q, options);
+  }
 
-  /// The pair's test over [0, options.t_max].
+  /// The pair's test over [0, options.t_max] (point-edge and point-point as the edge-edge
+  /// query of their zero-length segments: exactly point_edge_ccd and point_point_ccd).
   CcdResult test(const ScenePair& p, const CcdOptions& options) const {
-    return p.type == QueryType::vertex_face ? vertex_face_ccd(vertex_face(p), options)
-                                            : edge_edge_ccd(edge_edge(p), options);
+    switch (p.type) {
+      case QueryType::vertex_face: return vertex_face_ccd(vertex_face(p), options);
+      case QueryType::point_plane: return point_plane_ccd(point_plane(p), options);
+      default: return edge_edge_ccd(edge_edge(p), options);
+    }
   }
 
   static Decision with_time(const RigidCcdResult& r) {
@@ -888,7 +1046,7 @@ struct Scene::Impl {
     SceneResult result;
     struct Local {
       std::vector<SceneContact> contacts;
-      std::uint64_t vertex_face = 0, edge_edge = 0;
+      SceneStats counts;  // candidates per type
     };
     PerThread<Local> locals;
     const double t_max = o.ccd.t_max;
@@ -896,18 +1054,18 @@ struct Scene::Impl {
         prepare_swept(o, result.stats),
         [&](const ScenePair& p, double) {
           Local& local = locals.local();
-          ++(p.type == QueryType::vertex_face ? local.vertex_face : local.edge_edge);
+          ++candidates_of(p.type, local.counts);
           const Decision d = decide(p, o.ccd);
           if (d.ccd.collides) local.contacts.push_back(d.contact(p));
         },
         [t_max] { return t_max; }, result.stats);
     for (const Local& local : locals) {
       result.contacts.insert(result.contacts.end(), local.contacts.begin(), local.contacts.end());
-      result.stats.vertex_face_candidates += local.vertex_face;
-      result.stats.edge_edge_candidates += local.edge_edge;
+      add_candidates(local.counts, result.stats);
     }
-    result.stats.narrow_phase_tests =
-        result.stats.vertex_face_candidates + result.stats.edge_edge_candidates;
+    result.stats.narrow_phase_tests = result.stats.vertex_face_candidates +
+                                      result.stats.edge_edge_candidates +
+                                      result.stats.point_candidates;
     // Sorted output: the same whatever the number of threads and the order they ran in.
     tbb::parallel_sort(result.contacts.begin(), result.contacts.end(),
                        [](const SceneContact& a, const SceneContact& b) { return a.pair < b.pair; });
@@ -915,10 +1073,20 @@ struct Scene::Impl {
     return result;
   }
 
+  static std::uint64_t& candidates_of(QueryType type, SceneStats& stats) {
+    switch (type) {
+      case QueryType::vertex_face: return stats.vertex_face_candidates;
+      case QueryType::edge_edge: return stats.edge_edge_candidates;
+      default: return stats.point_candidates;
+    }
+  }
+  static void add_candidates(const SceneStats& from, SceneStats& to) {
+    to.vertex_face_candidates += from.vertex_face_candidates;
+    to.edge_edge_candidates += from.edge_edge_candidates;
+    to.point_candidates += from.point_candidates;
+  }
   static void count(const std::vector<ScenePair>& candidates, SceneStats& stats) {
-    for (const ScenePair& p : candidates)
-      ++(p.type == QueryType::vertex_face ? stats.vertex_face_candidates
-                                          : stats.edge_edge_candidates);
+    for (const ScenePair& p : candidates) ++candidates_of(p.type, stats);
   }
 
   /// Smallest toi_lo, ties broken by pair order (`contacts` sorted by pair). A contact's toi_lo
@@ -977,7 +1145,8 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
   ScenePair zero_pair;
   struct Local {
     std::vector<SceneContact> contacts;
-    std::uint64_t tests = 0, vertex_face = 0, edge_edge = 0;
+    std::uint64_t tests = 0;
+    SceneStats counts;  // candidates per type
     std::uint64_t seen_version = 0;
     ScenePair below;  // zero_pair as of seen_version (> 0)
   };
@@ -1022,9 +1191,12 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
                       ? vertex_face_ccd(rigid_vertex_face(p), options).ccd
                       : edge_edge_ccd(rigid_edge_edge(p), options).ccd;
       }
+    } else if (p.type == QueryType::vertex_face) {
+      decided = decide_linear(vertex_face(p));
+    } else if (p.type == QueryType::point_plane) {
+      decided = decide_linear(point_plane(p));
     } else {
-      decided = p.type == QueryType::vertex_face ? decide_linear(vertex_face(p))
-                                                 : decide_linear(edge_edge(p));
+      decided = decide_linear(edge_edge(p));
     }
     if (!decided || !decided->collides) return;
     const CcdResult& r = *decided;
@@ -1052,7 +1224,7 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
       swept_scene,
       [&](const ScenePair& p, double start) {
         Local& local = locals.local();
-        ++(p.type == QueryType::vertex_face ? local.vertex_face : local.edge_edge);
+        ++candidates_of(p.type, local.counts);
         if (start == 0.0)
           decide_one(p, local);
         else
@@ -1075,8 +1247,7 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
   std::vector<SceneContact> found;
   for (Local& local : locals) {
     out.stats.narrow_phase_tests += local.tests;
-    out.stats.vertex_face_candidates += local.vertex_face;
-    out.stats.edge_edge_candidates += local.edge_edge;
+    Impl::add_candidates(local.counts, out.stats);
     for (const SceneContact& c : local.contacts)
       if (c.toi_lo <= final_bound) found.push_back(c);
   }
@@ -1092,11 +1263,112 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
 }
 
 Scene::Scene() : impl_(std::make_unique<Impl>()) {}
+Scene::Scene(SceneDimension dimension) : impl_(std::make_unique<Impl>()) {
+  if (dimension != SceneDimension::three && dimension != SceneDimension::two)
+    throw std::invalid_argument("exactccd: a scene's dimension is three or two");
+  impl_->dimension = dimension;
+}
 Scene::~Scene() = default;
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 
+namespace {
+
+/// In a 2D scene every z coordinate is 0 (the plane the scene lives in).
+void check_planar(const Positions& x, const char* what) {
+  for (Eigen::Index v = 0; v < x.rows(); ++v)
+    if (x(v, 2) != 0.0)
+      throw std::invalid_argument(std::string("exactccd: a 2D scene lives in the plane z = 0, but ") +
+                                  what + " has z = " + shortest_decimal(x(v, 2)) + " at row " +
+                                  std::to_string(v));
+}
+
+/// Edges of an edge mesh: in range, two distinct vertices, none given twice (either way round).
+void check_edges(const Edges& edges, Eigen::Index vertex_count) {
+  if (vertex_count > std::numeric_limits<std::int32_t>::max())
+    throw std::invalid_argument("exactccd: too many vertices in one mesh");
+  std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, Eigen::Index>> seen;
+  seen.reserve(static_cast<std::size_t>(edges.rows()));
+  for (Eigen::Index e = 0; e < edges.rows(); ++e) {
+    const std::int32_t a = edges(e, 0), b = edges(e, 1);
+    if (a < 0 || a >= vertex_count || b < 0 || b >= vertex_count)
+      throw std::invalid_argument("exactccd: edge " + std::to_string(e) +
+                                  " has a vertex index out of range");
+    if (a == b)
+      throw std::invalid_argument("exactccd: edge " + std::to_string(e) + " repeats a vertex");
+    seen.push_back({{std::min(a, b), std::max(a, b)}, e});
+  }
+  std::sort(seen.begin(), seen.end());
+  for (std::size_t k = 1; k < seen.size(); ++k)
+    if (seen[k].first == seen[k - 1].first)
+      throw std::invalid_argument("exactccd: edge " + std::to_string(seen[k].second) +
+                                  " repeats edge " + std::to_string(seen[k - 1].second));
+}
+
+/// Marks the vertices on none of the mesh's edges as points.
+void mark_points(Mesh& m) {
+  m.is_point.assign(static_cast<std::size_t>(m.start.rows()), 1);
+  for (Eigen::Index e = 0; e < m.edges.rows(); ++e) {
+    m.is_point[static_cast<std::size_t>(m.edges(e, 0))] = 0;
+    m.is_point[static_cast<std::size_t>(m.edges(e, 1))] = 0;
+  }
+  m.has_points = std::find(m.is_point.begin(), m.is_point.end(), 1) != m.is_point.end();
+}
+
+}  // namespace
+
+SceneDimension Scene::dimension() const { return impl_->dimension; }
+
+MeshId Scene::add_edge_mesh(const Positions& positions, const Edges& edges) {
+  check_positions(positions, "the mesh's positions");
+  if (impl_->planar()) check_planar(positions, "the mesh's positions");
+  check_edges(edges, positions.rows());
+  Mesh m;
+  m.kind = MeshKind::edges;
+  m.start = positions;
+  m.end = positions;
+  m.edges = edges;
+  mark_points(m);
+  impl_->meshes.push_back(std::move(m));
+  return static_cast<MeshId>(impl_->meshes.size() - 1);
+}
+
+MeshId Scene::add_static_edge_mesh(const Positions& positions, const Edges& edges) {
+  const MeshId id = add_edge_mesh(positions, edges);
+  impl_->meshes[id].is_static = true;
+  return id;
+}
+
+MeshId Scene::add_points(const Positions& positions) {
+  const MeshId id = add_edge_mesh(positions, Edges(0, 2));
+  impl_->meshes[id].kind = MeshKind::points;
+  return id;
+}
+
+MeshId Scene::add_plane(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal) {
+  if (impl_->planar())
+    throw std::invalid_argument(
+        "exactccd: add_plane in a 2D scene (a wall of a 2D scene is a static edge mesh)");
+  if (!origin.allFinite() || !normal.allFinite())
+    throw std::invalid_argument("exactccd: add_plane: non-finite origin or normal");
+  if (normal.isZero(0))
+    throw std::invalid_argument("exactccd: add_plane: the normal is zero");
+  Mesh m;
+  m.kind = MeshKind::plane;
+  m.is_static = true;
+  m.plane_origin = origin;
+  m.plane_normal = normal;
+  m.start = Positions(0, 3);
+  m.end = m.start;
+  m.edges = Edges(0, 2);
+  impl_->meshes.push_back(std::move(m));
+  return static_cast<MeshId>(impl_->meshes.size() - 1);
+}
+
 MeshId Scene::add_mesh(const Positions& positions, const Triangles& triangles) {
+  if (impl_->planar())
+    throw std::invalid_argument("exactccd: a 2D scene holds edge meshes and point sets, not "
+                                "triangle meshes (add_edge_mesh, add_points)");
   check_positions(positions, "the mesh's positions");
   check_triangles(triangles, positions.rows());
   Mesh m;
@@ -1112,6 +1384,10 @@ void Scene::set_edges(MeshId id, const Edges& edges) {
   if (id >= impl_->meshes.size())
     throw std::invalid_argument("exactccd: set_edges: no mesh " + std::to_string(id));
   Mesh& m = impl_->meshes[id];
+  if (m.kind != MeshKind::triangles)
+    throw std::invalid_argument("exactccd: set_edges: mesh " + std::to_string(id) +
+                                " is not a triangle mesh (an edge mesh keeps the edges "
+                                "add_edge_mesh was given)");
   const Edges sides = edges_of(m.triangles);  // sorted (i, j), i < j, each side once
   std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, Eigen::Index>> given;
   given.reserve(static_cast<std::size_t>(edges.rows()));
@@ -1211,6 +1487,9 @@ void Scene::set_rigid_motion(MeshId id, const Positions& start, const RigidMotio
 void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) {
   impl_->mesh(id);
   Mesh& m = impl_->meshes[id];
+  if (m.kind == MeshKind::plane)
+    throw std::invalid_argument("exactccd: set_motion on plane " + std::to_string(id) +
+                                " (a plane never moves)");
   if (m.is_static) throw std::invalid_argument("exactccd: set_motion on a static mesh");
   if (m.is_rigid)
     throw std::invalid_argument("exactccd: set_motion on rigid body " + std::to_string(id) +
@@ -1219,6 +1498,10 @@ void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) 
     throw std::invalid_argument("exactccd: set_motion needs one row per vertex of the mesh");
   check_positions(start, "the start positions");
   check_positions(end, "the end positions");
+  if (impl_->planar()) {
+    check_planar(start, "the start positions");
+    check_planar(end, "the end positions");
+  }
   m.start = start;
   m.end = end;
   m.cylinder_cache.clear();
@@ -1228,6 +1511,14 @@ void Scene::set_motion(MeshId id, const Positions& start, const Positions& end) 
 std::size_t Scene::mesh_count() const { return impl_->meshes.size(); }
 bool Scene::is_static(MeshId id) const { return impl_->mesh(id).is_static; }
 bool Scene::is_rigid(MeshId id) const { return impl_->mesh(id).is_rigid; }
+bool Scene::is_plane(MeshId id) const { return impl_->mesh(id).kind == MeshKind::plane; }
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> Scene::plane(MeshId id) const {
+  const Mesh& m = impl_->mesh(id);
+  if (m.kind != MeshKind::plane)
+    throw std::invalid_argument("exactccd: plane(" + std::to_string(id) + "): not a plane");
+  return {m.plane_origin, m.plane_normal};
+}
 
 const RigidMotion& Scene::rigid_motion(MeshId id) const {
   const Mesh& m = impl_->mesh(id);
@@ -1256,6 +1547,7 @@ auto with_threads(int max_threads, F&& f) {
 SceneResult Scene::find_contacts(const SceneOptions& options) {
   const predicates::RoundToNearestGuard fp;
   check_options(options);
+  impl_->check_kinds();
   const SceneOptions o = with_pair_separation(options);
   return with_threads(o.max_threads, [&] { return impl_->find_contacts(o); });
 }
@@ -1263,6 +1555,7 @@ SceneResult Scene::find_contacts(const SceneOptions& options) {
 EarliestContact Scene::earliest_contact(const SceneOptions& options) {
   const predicates::RoundToNearestGuard fp;
   check_options(options);
+  impl_->check_kinds();
   if (options.broad_phase != BroadPhase::swept_bvh)
     throw std::invalid_argument("exactccd: earliest_contact needs the swept_bvh broad phase");
   const SceneOptions o = with_pair_separation(options);
@@ -1271,7 +1564,8 @@ EarliestContact Scene::earliest_contact(const SceneOptions& options) {
 
 VertexFaceQuery Scene::vertex_face_query(const ScenePair& pair) const {
   if (pair.type != QueryType::vertex_face)
-    throw std::invalid_argument("exactccd: vertex_face_query of an edge-edge pair");
+    throw std::invalid_argument(std::string("exactccd: vertex_face_query of a ") +
+                                to_string(pair.type) + " pair");
   const Mesh& a = impl_->mesh(pair.first_mesh);
   const Mesh& b = impl_->mesh(pair.second_mesh);
   if (pair.first_index >= a.start.rows() || pair.second_index >= b.triangles.rows())
@@ -1282,9 +1576,58 @@ VertexFaceQuery Scene::vertex_face_query(const ScenePair& pair) const {
   return impl_->vertex_face(pair);
 }
 
+namespace {
+
+/// The pair's indices against its meshes' sizes (each kind indexes what it names).
+void check_indices(const ScenePair& pair, std::size_t first_count, std::size_t second_count) {
+  if (pair.first_index >= first_count || pair.second_index >= second_count)
+    throw std::invalid_argument("exactccd: pair index out of range");
+}
+
+std::size_t rows_of(const Positions& x) { return static_cast<std::size_t>(x.rows()); }
+std::size_t rows_of(const Edges& e) { return static_cast<std::size_t>(e.rows()); }
+
+}  // namespace
+
+PointEdgeQuery Scene::point_edge_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::point_edge)
+    throw std::invalid_argument(std::string("exactccd: point_edge_query of a ") +
+                                to_string(pair.type) + " pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  check_indices(pair, rows_of(a.start), rows_of(b.edges));
+  const EdgeEdgeQuery q = impl_->edge_edge(pair);
+  return {q.ea0_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.eb0_t1, q.eb1_t1};
+}
+
+PointPointQuery Scene::point_point_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::point_point)
+    throw std::invalid_argument(std::string("exactccd: point_point_query of a ") +
+                                to_string(pair.type) + " pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  check_indices(pair, rows_of(a.start), rows_of(b.start));
+  const EdgeEdgeQuery q = impl_->edge_edge(pair);
+  return {q.ea0_t0, q.eb0_t0, q.ea0_t1, q.eb0_t1};
+}
+
+PointPlaneQuery Scene::point_plane_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::point_plane)
+    throw std::invalid_argument(std::string("exactccd: point_plane_query of a ") +
+                                to_string(pair.type) + " pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (b.kind != MeshKind::plane)
+    throw std::invalid_argument("exactccd: point_plane_query: mesh " +
+                                std::to_string(pair.second_mesh) + " is not a plane");
+  check_indices(pair, rows_of(a.start), 1);
+  return impl_->point_plane(pair);
+}
+
 EdgeEdgeQuery Scene::edge_edge_query(const ScenePair& pair) const {
   if (pair.type != QueryType::edge_edge)
-    throw std::invalid_argument("exactccd: edge_edge_query of a vertex-face pair");
+    throw std::invalid_argument(std::string("exactccd: edge_edge_query of a ") +
+                                to_string(pair.type) + " pair");
   const Mesh& a = impl_->mesh(pair.first_mesh);
   const Mesh& b = impl_->mesh(pair.second_mesh);
   if (pair.first_index >= a.edges.rows() || pair.second_index >= b.edges.rows())
@@ -1297,7 +1640,8 @@ EdgeEdgeQuery Scene::edge_edge_query(const ScenePair& pair) const {
 
 RigidVertexFaceQuery Scene::rigid_vertex_face_query(const ScenePair& pair) const {
   if (pair.type != QueryType::vertex_face)
-    throw std::invalid_argument("exactccd: rigid_vertex_face_query of an edge-edge pair");
+    throw std::invalid_argument(std::string("exactccd: rigid_vertex_face_query of a ") +
+                                to_string(pair.type) + " pair");
   const Mesh& a = impl_->mesh(pair.first_mesh);
   const Mesh& b = impl_->mesh(pair.second_mesh);
   if (pair.first_index >= a.start.rows() || pair.second_index >= b.triangles.rows())
@@ -1313,6 +1657,10 @@ ContactGeometry Scene::contact_geometry(const SceneContact& contact,
   r.toi_lo = contact.toi_lo;
   r.toi_hi = contact.toi_hi;
   r.starts_within = contact.starts_within;
+  if (pair.type == QueryType::point_plane)
+    throw std::invalid_argument(
+        "exactccd: contact_geometry of a point-plane pair: not available yet (the contact "
+        "normal is the plane's normal, towards the side the point came from)");
   const bool rigid = is_rigid(pair.first_mesh) || is_rigid(pair.second_mesh);
   if (rigid) {
     RigidCcdResult rr;
@@ -1323,16 +1671,24 @@ ContactGeometry Scene::contact_geometry(const SceneContact& contact,
   }
   if (pair.type == QueryType::vertex_face)
     return exactccd::contact_geometry(vertex_face_query(pair), r, min_separation);
-  return exactccd::contact_geometry(edge_edge_query(pair), r, min_separation);
+  if (pair.type == QueryType::edge_edge)
+    return exactccd::contact_geometry(edge_edge_query(pair), r, min_separation);
+  // A point as the zero-length segment its test decides (parameter [0, 0] on it).
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  check_indices(pair, rows_of(a.start),
+                pair.type == QueryType::point_point ? rows_of(b.start) : rows_of(b.edges));
+  return exactccd::contact_geometry(impl_->edge_edge(pair), r, min_separation);
 }
 
 RigidEdgeEdgeQuery Scene::rigid_edge_edge_query(const ScenePair& pair) const {
-  if (pair.type != QueryType::edge_edge)
-    throw std::invalid_argument("exactccd: rigid_edge_edge_query of a vertex-face pair");
+  if (pair.type == QueryType::vertex_face || pair.type == QueryType::point_plane)
+    throw std::invalid_argument(std::string("exactccd: rigid_edge_edge_query of a ") +
+                                to_string(pair.type) + " pair");
   const Mesh& a = impl_->mesh(pair.first_mesh);
   const Mesh& b = impl_->mesh(pair.second_mesh);
-  if (pair.first_index >= a.edges.rows() || pair.second_index >= b.edges.rows())
-    throw std::invalid_argument("exactccd: pair index out of range");
+  check_indices(pair, pair.type == QueryType::edge_edge ? rows_of(a.edges) : rows_of(a.start),
+                pair.type == QueryType::point_point ? rows_of(b.start) : rows_of(b.edges));
   return impl_->rigid_edge_edge(pair);
 }
 

@@ -23,10 +23,15 @@ import numpy as np
 
 class QueryType(str, enum.Enum):
     """The kind of a pair of primitives (ScenePair.type): an enum whose members are also the
-    strings that name them in query files, so `pair.type == "vertex-face"` holds as well."""
+    strings that name them in query files, so `pair.type == "vertex-face"` holds as well.
+    point_edge, point_point and point_plane: the pairs of a Scene's edge meshes, point sets
+    and planes (and of 2D scenes)."""
 
     vertex_face = "vertex-face"
     edge_edge = "edge-edge"
+    point_edge = "point-edge"
+    point_point = "point-point"
+    point_plane = "point-plane"
 
     def __str__(self):
         return self.value

@@ -1,4 +1,5 @@
-// The Scene API over numpy arrays: vertices (V, 3) float64, faces (F, 3) integer.
+// The Scene API over numpy arrays: vertices (V, 3) float64 ((V, 2) too in a 2D scene), faces
+// (F, 3) and edges (E, 2) integer.
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -14,6 +15,25 @@
 #include "exactccd/scene.hpp"
 
 namespace exactccd::python {
+/// Scene's `dimension` argument: any Python object, checked by parse_dimension (ValueError for
+/// anything but 3 or 2, floats and strings included), shown as "int" in signatures.
+struct DimensionArgument {
+  pybind11::object value;
+};
+}  // namespace exactccd::python
+
+namespace pybind11::detail {
+template <>
+struct type_caster<exactccd::python::DimensionArgument> {
+  PYBIND11_TYPE_CASTER(exactccd::python::DimensionArgument, const_name("int"));
+  bool load(handle source, bool) {
+    value.value = reinterpret_borrow<object>(source);
+    return true;
+  }
+};
+}  // namespace pybind11::detail
+
+namespace exactccd::python {
 
 namespace {
 
@@ -22,6 +42,48 @@ Positions positions_of(const py::handle& object, const char* what) {
   Positions positions(array.shape(0), 3);
   std::copy(array.data(), array.data() + array.size(), positions.data());
   return positions;
+}
+
+// Positions of a scene of the given dimension: (V, 3) in 3D; (V, 3) or (V, 2) in 2D, a (V, 2)
+// array embedded in the plane z = 0 (appending the double 0 rounds nothing; the scene checks
+// that a (V, 3) array's z are 0).
+Positions positions_of(const py::handle& object, const char* what, SceneDimension dimension) {
+  if (dimension == SceneDimension::three) return positions_of(object, what);
+  py::module_ numpy = py::module_::import("numpy");
+  const DoubleArray array = DoubleArray::ensure(
+      numpy.attr("ascontiguousarray")(object, py::arg("dtype") = numpy.attr("float64")));
+  if (!array) throw py::type_error(std::string(what) + " must be an array of numbers");
+  const py::ssize_t columns = array.ndim() == 2 ? array.shape(1) : 0;
+  if (columns != 2 && columns != 3) {
+    std::string got = "(";
+    for (py::ssize_t k = 0; k < array.ndim(); ++k)
+      got += (k > 0 ? ", " : "") + std::to_string(array.shape(k));
+    throw py::value_error(std::string(what) + " must have shape (N, 2) or (N, 3) in a 2D "
+                          "scene, not " + got + (array.ndim() == 1 ? ",)" : ")"));
+  }
+  Positions positions = Positions::Zero(array.shape(0), 3);
+  for (py::ssize_t v = 0; v < array.shape(0); ++v)
+    for (py::ssize_t k = 0; k < columns; ++k) positions(v, k) = array.data()[v * columns + k];
+  return positions;
+}
+
+// The Python name of a dimension (3 or 2) and back.
+int dimension_number(SceneDimension dimension) {
+  return dimension == SceneDimension::two ? 2 : 3;
+}
+
+SceneDimension parse_dimension(const py::handle& object) {
+  // An int (or numpy integer), not a bool or a float: Scene(2.5) is no dimension.
+  const bool integral =
+      !py::isinstance<py::bool_>(object) &&
+      py::isinstance(object, py::module_::import("numbers").attr("Integral"));
+  if (integral) {
+    const py::int_ value(py::reinterpret_borrow<py::object>(object));
+    if (value.equal(py::int_(3))) return SceneDimension::three;
+    if (value.equal(py::int_(2))) return SceneDimension::two;
+  }
+  throw py::value_error("Scene(): dimension must be 3 or 2, not " +
+                        std::string(py::repr(object)));
 }
 
 // Index rows (faces: 3 columns, edges: 2) from any integer array, each index checked against
@@ -71,6 +133,23 @@ py::array copy_to_array(const Matrix& matrix) {
   return array;
 }
 
+// A scene pair's type: the query-file names ("vertex-face" / "vf", "edge-edge" / "ee", as
+// parse_query_type) and the point kinds of scenes ("point-edge" / "pe", "point-point" / "pp",
+// "point-plane" / "pl", the primitive query files' kind names), or an exactccd.QueryType (a str).
+QueryType parse_pair_type(const std::string& name) {
+  for (const QueryType t : {QueryType::vertex_face, QueryType::edge_edge, QueryType::point_edge,
+                            QueryType::point_point, QueryType::point_plane})
+    if (name == to_string(t)) return t;
+  if (name == "vf") return QueryType::vertex_face;
+  if (name == "ee") return QueryType::edge_edge;
+  if (name == "pe") return QueryType::point_edge;
+  if (name == "pp") return QueryType::point_point;
+  if (name == "pl") return QueryType::point_plane;
+  throw py::value_error("type must be \"vertex-face\" (\"vf\"), \"edge-edge\" (\"ee\"), "
+                        "\"point-edge\" (\"pe\"), \"point-point\" (\"pp\") or \"point-plane\" "
+                        "(\"pl\"), not \"" + name + "\"");
+}
+
 BroadPhase parse_broad_phase(const std::string& name) {
   for (const BroadPhase b : {BroadPhase::swept_bvh, BroadPhase::static_bvh})
     if (name == to_string(b)) return b;
@@ -116,15 +195,41 @@ std::string contact_repr(const SceneContact& c) {
   return "SceneContact(" + pair_repr(c.pair) + toi;
 }
 
-// Checks a pair's indices against the scene, which indexes its arrays without checks.
+// Checks a pair's indices against the scene, which indexes its arrays without checks: per
+// type, first_index a vertex (an edge for edge-edge) of first_mesh, second_index a triangle
+// (vertex-face), an edge (edge-edge, point-edge) or a vertex (point-point) of second_mesh; a
+// point-plane pair's second_mesh must be a plane and its second_index 0.
 const ScenePair& checked_pair(const Scene& scene, const ScenePair& p) {
   checked_mesh(scene, p.first_mesh);
   checked_mesh(scene, p.second_mesh);
-  const bool vf = p.type == QueryType::vertex_face;
-  const auto first_count = vf ? scene.start_positions(p.first_mesh).rows()
-                              : scene.edges(p.first_mesh).rows();
-  const auto second_count = vf ? scene.triangles(p.second_mesh).rows()
-                               : scene.edges(p.second_mesh).rows();
+  const auto vertices = [&](MeshId m) { return scene.start_positions(m).rows(); };
+  const auto edges = [&](MeshId m) { return scene.edges(m).rows(); };
+  Eigen::Index first_count = 0, second_count = 0;
+  switch (p.type) {
+    case QueryType::vertex_face:
+      first_count = vertices(p.first_mesh);
+      second_count = scene.triangles(p.second_mesh).rows();
+      break;
+    case QueryType::edge_edge:
+      first_count = edges(p.first_mesh);
+      second_count = edges(p.second_mesh);
+      break;
+    case QueryType::point_edge:
+      first_count = vertices(p.first_mesh);
+      second_count = edges(p.second_mesh);
+      break;
+    case QueryType::point_point:
+      first_count = vertices(p.first_mesh);
+      second_count = vertices(p.second_mesh);
+      break;
+    case QueryType::point_plane:
+      if (!scene.is_plane(p.second_mesh))
+        throw py::value_error("mesh " + std::to_string(p.second_mesh) +
+                              " is not a plane (Scene.add_plane): " + pair_repr(p));
+      first_count = vertices(p.first_mesh);
+      second_count = 1;  // a plane's only index
+      break;
+  }
   if (p.first_index >= first_count || p.second_index >= second_count)
     throw py::index_error("pair index out of range: " + pair_repr(p));
   return p;
@@ -134,7 +239,10 @@ const ScenePair& checked_pair(const Scene& scene, const ScenePair& p) {
 // run without the GIL, so calls from several Python threads take turns. The GIL is released
 // before the lock is taken (never held while waiting for it).
 struct GuardedScene {
+  explicit GuardedScene(SceneDimension d) : scene(d), dimension(d) {}
+
   Scene scene;
+  const SceneDimension dimension;  // never changes: read without the lock
   std::mutex mutex;
 
   template <class Call>
@@ -145,22 +253,36 @@ struct GuardedScene {
   }
 };
 
-py::array rows_of(const std::array<Eigen::Vector3d, 8>& points) {
-  Positions rows(8, 3);
-  for (int r = 0; r < 8; ++r) rows.row(r) = points[r].transpose();
+template <std::size_t N>
+py::array rows_of(const std::array<Eigen::Vector3d, N>& points) {
+  Positions rows(static_cast<Eigen::Index>(N), 3);
+  for (std::size_t r = 0; r < N; ++r)
+    rows.row(static_cast<Eigen::Index>(r)) = points[r].transpose();
   return copy_to_array(rows);
+}
+
+py::array vector_array(const Eigen::Vector3d& v) {
+  py::array_t<double> array(3);
+  std::copy(v.data(), v.data() + 3, array.mutable_data());
+  return array;
 }
 
 }  // namespace
 
 void bind_scene(py::module_& m) {
   py::class_<ScenePair>(m, "ScenePair",
-                        "A vertex-face pair (vertex first_index of first_mesh, triangle "
-                        "second_index of second_mesh) or an edge-edge pair (indices into "
-                        "Scene.edges(mesh)).")
+                        "A pair of primitives of a Scene: vertex-face (vertex first_index of "
+                        "first_mesh, triangle second_index of second_mesh), edge-edge (indices "
+                        "into Scene.edges(mesh)), point-edge (vertex first_index, edge "
+                        "second_index), point-point (vertex first_index, vertex second_index) or "
+                        "point-plane (vertex first_index, the plane second_mesh, second_index "
+                        "0). ScenePair(type, first_mesh, first_index, second_mesh, "
+                        "second_index), type a QueryType or its name (\"vertex-face\" / \"vf\", "
+                        "\"edge-edge\" / \"ee\", \"point-edge\" / \"pe\", \"point-point\" / "
+                        "\"pp\", \"point-plane\" / \"pl\").")
       .def(py::init([](const std::string& type, MeshId first_mesh, std::uint32_t first_index,
                        MeshId second_mesh, std::uint32_t second_index) {
-             return ScenePair{parse_query_type(type), first_mesh, first_index, second_mesh,
+             return ScenePair{parse_pair_type(type), first_mesh, first_index, second_mesh,
                               second_index};
            }),
            py::arg("type"), py::arg("first_mesh"), py::arg("first_index"),
@@ -171,8 +293,9 @@ void bind_scene(py::module_& m) {
             // exactccd.QueryType: an enum whose members are also their names as strings.
             return py::module_::import("exactccd").attr("QueryType")(to_string(p.type));
           },
-          "exactccd.QueryType.vertex_face or .edge_edge (equal to \"vertex-face\", "
-          "\"edge-edge\").")
+          "The pair's kind, an exactccd.QueryType: .vertex_face, .edge_edge, .point_edge, "
+          ".point_point or .point_plane (equal to \"vertex-face\", \"edge-edge\", "
+          "\"point-edge\", \"point-point\", \"point-plane\").")
       .def_readonly("first_mesh", &ScenePair::first_mesh)
       .def_readonly("first_index", &ScenePair::first_index)
       .def_readonly("second_mesh", &ScenePair::second_mesh)
@@ -204,6 +327,9 @@ void bind_scene(py::module_& m) {
   py::class_<SceneStats>(m, "SceneStats")
       .def_readonly("vertex_face_candidates", &SceneStats::vertex_face_candidates)
       .def_readonly("edge_edge_candidates", &SceneStats::edge_edge_candidates)
+      .def_readonly("point_candidates", &SceneStats::point_candidates,
+                    "Point-edge, point-point and point-plane pairs that reached the narrow "
+                    "phase.")
       .def_readonly("narrow_phase_tests", &SceneStats::narrow_phase_tests)
       .def_readonly("hierarchies_built", &SceneStats::hierarchies_built)
       .def_readonly("hierarchies_refitted", &SceneStats::hierarchies_refitted)
@@ -212,6 +338,7 @@ void bind_scene(py::module_& m) {
       .def("__repr__", [](const SceneStats& s) {
         return "SceneStats(vertex_face_candidates=" + std::to_string(s.vertex_face_candidates) +
                ", edge_edge_candidates=" + std::to_string(s.edge_edge_candidates) +
+               ", point_candidates=" + std::to_string(s.point_candidates) +
                ", narrow_phase_tests=" + std::to_string(s.narrow_phase_tests) +
                ", hierarchies_built=" + std::to_string(s.hierarchies_built) +
                ", hierarchies_refitted=" + std::to_string(s.hierarchies_refitted) +
@@ -236,13 +363,29 @@ void bind_scene(py::module_& m) {
       .def_readonly("stats", &EarliestContact::stats);
 
   py::class_<GuardedScene>(m, "Scene",
-                           "Whole triangle meshes over one time step (exactccd/scene.hpp). Calls "
-                           "from several Python threads are serialised.")
-      .def(py::init<>())
+                           "Meshes over one time step (exactccd/scene.hpp): triangle meshes, "
+                           "edge meshes (rods), point sets, rigid bodies and static planes in 3D; "
+                           "edge meshes and point sets in the plane z = 0 in a 2D scene "
+                           "(Scene(dimension=2)). Calls from several Python threads are "
+                           "serialised.")
+      // Scene() and Scene(dimension), as C++'s two constructors (pybind11 lists both in the
+      // message for wrong arguments).
+      .def(py::init([] { return std::make_unique<GuardedScene>(SceneDimension::three); }),
+           "An empty 3D scene.")
+      .def(py::init([](const DimensionArgument& dimension) {
+             return std::make_unique<GuardedScene>(parse_dimension(dimension.value));
+           }),
+           py::arg("dimension"),
+           "An empty scene: dimension 3 (the default) or 2 (the plane z = 0: add_edge_mesh and "
+           "add_points only; vertex arrays (V, 2), or (V, 3) with every z 0). ValueError for "
+           "another dimension.")
+      .def_property_readonly(
+          "dimension", [](GuardedScene& g) { return dimension_number(g.dimension); },
+          "3, or 2 for a scene in the plane z = 0.")
       .def(
           "add_mesh",
           [](GuardedScene& g, const py::handle& vertices, const py::handle& faces) {
-            const Positions positions = positions_of(vertices, "vertices");
+            const Positions positions = positions_of(vertices, "vertices", g.dimension);
             const Triangles triangles = triangles_of(faces);
             return g.run([&](Scene& s) { return s.add_mesh(positions, triangles); });
           },
@@ -252,7 +395,7 @@ void bind_scene(py::module_& m) {
       .def(
           "add_static_mesh",
           [](GuardedScene& g, const py::handle& vertices, const py::handle& faces) {
-            const Positions positions = positions_of(vertices, "vertices");
+            const Positions positions = positions_of(vertices, "vertices", g.dimension);
             const Triangles triangles = triangles_of(faces);
             return g.run([&](Scene& s) { return s.add_static_mesh(positions, triangles); });
           },
@@ -260,13 +403,69 @@ void bind_scene(py::module_& m) {
       .def(
           "add_rigid_body",
           [](GuardedScene& g, const py::handle& vertices, const py::handle& faces) {
-            const Positions positions = positions_of(vertices, "vertices");
+            const Positions positions = positions_of(vertices, "vertices", g.dimension);
             const Triangles triangles = triangles_of(faces);
             return g.run([&](Scene& s) { return s.add_rigid_body(positions, triangles); });
           },
           py::arg("vertices"), py::arg("faces"),
           "A rigid body, at rest at `vertices` (V, 3), its pose at s = 0 in world coordinates, "
           "until set_rigid_motion; never paired with itself. Returns its mesh id.")
+      .def(
+          "add_edge_mesh",
+          [](GuardedScene& g, const py::handle& vertices, const py::handle& edges,
+             bool is_static) {
+            const Positions positions = positions_of(vertices, "vertices", g.dimension);
+            const Edges rows = index_rows_of<Edges>(edges, "edges", "(E, 2)");
+            return g.run([&](Scene& s) {
+              return is_static ? s.add_static_edge_mesh(positions, rows)
+                               : s.add_edge_mesh(positions, rows);
+            });
+          },
+          py::arg("vertices"), py::arg("edges"), py::arg("static") = false,
+          "A mesh of edges only (rods, hair, seams; polylines in a 2D scene): `vertices` (V, 3) "
+          "(in a 2D scene (V, 2) too, or (V, 3) with z = 0), `edges` (E, 2) vertex indices, "
+          "two distinct per row, none twice; Scene.edges(mesh) is `edges` as given (the indices "
+          "of its edge pairs). Vertices on no edge are points. static=False: moving, at rest "
+          "until set_motion; static=True: one set of positions for every step. Returns its "
+          "mesh id.")
+      .def(
+          "add_points",
+          [](GuardedScene& g, const py::handle& vertices) {
+            const Positions positions = positions_of(vertices, "vertices", g.dimension);
+            return g.run([&](Scene& s) { return s.add_points(positions); });
+          },
+          py::arg("vertices"),
+          "A moving point set (particles), at rest at `vertices` (V, 3) (in a 2D scene (V, 2) "
+          "too, or (V, 3) with z = 0) until set_motion. Returns its mesh id.")
+      .def(
+          "add_plane",
+          [](GuardedScene& g, const py::handle& origin, const py::handle& normal) {
+            const Eigen::Vector3d o = vector_of(origin, "origin");
+            const Eigen::Vector3d n = vector_of(normal, "normal");
+            return g.run([&](Scene& s) { return s.add_plane(o, n); });
+          },
+          py::arg("origin"), py::arg("normal"),
+          "A static infinite plane {x : (x - origin) . normal = 0} (a floor; 3D scenes only): "
+          "every vertex of every moving mesh is paired with it (point-plane pairs, decided as "
+          "point_plane_ccd). `normal` any non-zero finite length. A mesh of no vertices; rigid "
+          "bodies cannot meet a plane yet (find_contacts refuses a scene with both). ValueError "
+          "for a non-finite value, a zero normal or a 2D scene. Returns its mesh id.")
+      .def(
+          "is_plane",
+          [](GuardedScene& g, MeshId mesh) {
+            return g.run([&](Scene& s) { return s.is_plane(checked_mesh(s, mesh)); });
+          },
+          py::arg("mesh"), "Whether the mesh was added by add_plane.")
+      .def(
+          "plane",
+          [](GuardedScene& g, MeshId mesh) {
+            const auto [origin, normal] =
+                g.run([&](Scene& s) { return s.plane(checked_mesh(s, mesh)); });
+            return py::make_tuple(vector_array(origin), vector_array(normal));
+          },
+          py::arg("mesh"),
+          "A plane's (origin, normal) as given to add_plane, two float64 arrays of shape (3,). "
+          "ValueError for a mesh that is not a plane.")
       .def(
           "set_rigid_motion",
           [](GuardedScene& g, MeshId body, const py::handle& motion, const py::handle& pivot,
@@ -291,7 +490,7 @@ void bind_scene(py::module_& m) {
                 return 0;
               });
             } else {
-              const Positions from = positions_of(start, "start");
+              const Positions from = positions_of(start, "start", g.dimension);
               g.run([&](Scene& s) {
                 s.set_rigid_motion(checked_mesh(s, body), from, m);
                 return 0;
@@ -322,14 +521,17 @@ void bind_scene(py::module_& m) {
       .def(
           "set_motion",
           [](GuardedScene& g, MeshId mesh, const py::handle& start, const py::handle& end) {
-            const Positions from = positions_of(start, "start"), to = positions_of(end, "end");
+            const Positions from = positions_of(start, "start", g.dimension),
+                            to = positions_of(end, "end", g.dimension);
             g.run([&](Scene& s) {
               s.set_motion(checked_mesh(s, mesh), from, to);
               return 0;
             });
           },
           py::arg("mesh"), py::arg("start"), py::arg("end"),
-          "The step's motion of a moving mesh: vertex i from start[i] to end[i].")
+          "The step's motion of a moving mesh (triangle mesh, edge mesh or point set): vertex "
+          "i from start[i] to end[i], (V, 3) arrays (in a 2D scene (V, 2) too, or (V, 3) with "
+          "z = 0).")
       .def(
           "set_edges",
           [](GuardedScene& g, MeshId mesh, const py::handle& edges) {
@@ -365,21 +567,27 @@ void bind_scene(py::module_& m) {
             return copy_to_array(g.run([&](Scene& s) { return s.edges(checked_mesh(s, mesh)); }));
           },
           py::arg("mesh"),
-          "The mesh's edges (E, 2), i < j, sorted: the indices of edge-edge pairs (a copy).")
+          "The mesh's edges (E, 2), a copy: the indices of its edge-edge and point-edge pairs. "
+          "For a triangle mesh its sides, i < j, sorted (or as given to set_edges); for an edge "
+          "mesh the edges as given to add_edge_mesh; none for a point set or a plane.")
       .def(
           "start_positions",
           [](GuardedScene& g, MeshId mesh) {
             return copy_to_array(
                 g.run([&](Scene& s) { return s.start_positions(checked_mesh(s, mesh)); }));
           },
-          py::arg("mesh"))
+          py::arg("mesh"),
+          "The positions at the start of the step, (V, 3), a copy; in a 2D scene too (V, 3), "
+          "z = 0 (take [:, :2] for the plane's coordinates); (0, 3) for a plane.")
       .def(
           "end_positions",
           [](GuardedScene& g, MeshId mesh) {
             return copy_to_array(
                 g.run([&](Scene& s) { return s.end_positions(checked_mesh(s, mesh)); }));
           },
-          py::arg("mesh"))
+          py::arg("mesh"),
+          "The positions at the end of the step, (V, 3) as start_positions (the start "
+          "positions for a static mesh).")
       .def(
           "find_contacts",
           [](GuardedScene& g, double t_max, double toi_width, const std::string& mode,
@@ -394,8 +602,10 @@ void bind_scene(py::module_& m) {
           py::arg("mode") = "filtered", py::arg("broad_phase") = "swept_bvh",
           py::arg("self_collision") = true, py::arg("max_threads") = 0,
           py::arg("record_candidates") = false, py::arg("min_separation") = 0.0,
-          "Every colliding pair of the step (SceneResult); with min_separation delta > 0, every "
-          "pair that comes within delta (rigid bodies included).")
+          "Every colliding pair of the step (SceneResult): vertex-face, edge-edge, point-edge, "
+          "point-point and point-plane pairs; with min_separation delta > 0, every pair that "
+          "comes within delta (rigid bodies included). ValueError for a scene with both a "
+          "plane and a rigid body.")
       .def(
           "earliest_contact",
           [](GuardedScene& g, double t_max, double toi_width, const std::string& mode,
@@ -419,7 +629,7 @@ void bind_scene(py::module_& m) {
               throw py::value_error("vertex_face_query needs a vertex-face pair");
             const VertexFaceQuery q =
                 g.run([&](Scene& s) { return s.vertex_face_query(checked_pair(s, p)); });
-            return rows_of({q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1, q.c_t1});
+            return rows_of<8>({q.p_t0, q.a_t0, q.b_t0, q.c_t0, q.p_t1, q.a_t1, q.b_t1, q.c_t1});
           },
           py::arg("pair"), "The pair's query as an (8, 3) array in the benchmark's row order.")
       .def(
@@ -429,10 +639,47 @@ void bind_scene(py::module_& m) {
               throw py::value_error("edge_edge_query needs an edge-edge pair");
             const EdgeEdgeQuery q =
                 g.run([&](Scene& s) { return s.edge_edge_query(checked_pair(s, p)); });
-            return rows_of({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1,
+            return rows_of<8>({q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1,
                             q.eb1_t1});
           },
           py::arg("pair"), "The pair's query as an (8, 3) array in the benchmark's row order.")
+      .def(
+          "point_edge_query",
+          [](GuardedScene& g, const ScenePair& p) {
+            if (p.type != QueryType::point_edge)
+              throw py::value_error("point_edge_query needs a point-edge pair");
+            const PointEdgeQuery q =
+                g.run([&](Scene& s) { return s.point_edge_query(checked_pair(s, p)); });
+            return rows_of<6>({q.p_t0, q.e0_t0, q.e1_t0, q.p_t1, q.e0_t1, q.e1_t1});
+          },
+          py::arg("pair"),
+          "The pair's query as a (6, 3) array, rows p, e0, e1 at t0 then at t1 (as "
+          "point_edge_ccd takes it; in a 2D scene z = 0).")
+      .def(
+          "point_point_query",
+          [](GuardedScene& g, const ScenePair& p) {
+            if (p.type != QueryType::point_point)
+              throw py::value_error("point_point_query needs a point-point pair");
+            const PointPointQuery q =
+                g.run([&](Scene& s) { return s.point_point_query(checked_pair(s, p)); });
+            return rows_of<4>({q.p_t0, q.q_t0, q.p_t1, q.q_t1});
+          },
+          py::arg("pair"),
+          "The pair's query as a (4, 3) array, rows p, q at t0 then at t1 (as point_point_ccd "
+          "takes it; in a 2D scene z = 0).")
+      .def(
+          "point_plane_query",
+          [](GuardedScene& g, const ScenePair& p) {
+            if (p.type != QueryType::point_plane)
+              throw py::value_error("point_plane_query needs a point-plane pair");
+            const PointPlaneQuery q =
+                g.run([&](Scene& s) { return s.point_plane_query(checked_pair(s, p)); });
+            return rows_of<6>(
+                {q.p_t0, q.origin_t0, q.normal_t0, q.p_t1, q.origin_t1, q.normal_t1});
+          },
+          py::arg("pair"),
+          "The pair's query as a (6, 3) array, rows p, origin, normal at t0 then at t1 (the "
+          "static plane repeated), as point_plane_ccd takes it.")
       .def(
           "contact_geometry",
           [](GuardedScene& g, const SceneContact& c, double min_separation) {
@@ -443,7 +690,9 @@ void bind_scene(py::module_& m) {
           },
           py::arg("contact"), py::arg("min_separation") = 0.0,
           "The certified contact geometry (ContactGeometry) of a contact of this scene (from "
-          "find_contacts or earliest_contact with min_separation 0).");
+          "find_contacts or earliest_contact, `min_separation` the delta it was found with); "
+          "a point-edge or point-point contact as the edge-edge geometry of its zero-length "
+          "segments. ValueError for a point-plane contact (not available yet).");
 }
 
 }  // namespace exactccd::python

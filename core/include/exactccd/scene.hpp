@@ -33,6 +33,18 @@
 /// others the linear one.
 /// PROOF: proofs/scene.md (section 9, rigid bodies)
 ///
+/// Codimensional scenes (\ref scene_kinds "kinds of meshes"): `add_edge_mesh` adds a mesh of
+/// edges only (rods, hair, seams), `add_points` a point set (particles), `add_plane` an
+/// infinite plane that never moves (a floor). Their pairs are the pairs of the primitives
+/// present: every vertex against every triangle (vertex-face), every edge against every edge
+/// (edge-edge), a point (a vertex of an edge mesh or point set on none of its edges) against
+/// every edge (point-edge) and every other point (point-point), every vertex of a moving mesh
+/// against every plane (point-plane). A pair of closed primitives that first comes within
+/// delta at time t from apart at t = 0 holds a pair of these kinds that does so at t
+/// (proofs/scene.md, section 10). A 2D scene (`Scene(SceneDimension::two)`) holds edge
+/// meshes and point sets in the plane z = 0; its pairs are point-edge (every vertex against
+/// every edge it is not on) and point-point, decided as point_edge_ccd_2d / point_point_ccd_2d.
+///
 /// Threads: the narrow phase runs in parallel (TBB); the results do not depend on the number of
 /// threads. One Scene must not be used from two threads at once; distinct Scenes are independent.
 #pragma once
@@ -40,6 +52,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "exactccd/contact.hpp"
@@ -52,6 +65,12 @@ namespace exactccd {
 /// A mesh's number in its Scene: 0, 1, ... in the order of add_mesh / add_static_mesh /
 /// add_rigid_body.
 using MeshId = std::uint32_t;
+
+/// The space a scene lives in.
+enum class SceneDimension : std::uint8_t {
+  three,  ///< 3D: every kind of mesh
+  two,    ///< the plane z = 0: edge meshes and point sets only (point-edge, point-point pairs)
+};
 
 /// Vertex positions, one row (x, y, z) per vertex.
 using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
@@ -113,20 +132,25 @@ struct SceneOptions {
   bool cull_by_time = true;
 };
 
-/// A vertex-face or edge-edge pair of primitives of the scene.
+/// A pair of primitives of the scene.
 ///  vertex-face: vertex `first_index` of mesh `first_mesh`, triangle `second_index` of
 ///               `second_mesh` (the meshes may be equal: self-collision);
 ///  edge-edge:   edge `first_index` of `first_mesh` (an index into Scene::edges), edge
 ///               `second_index` of `second_mesh`, with (first_mesh, first_index) <
-///               (second_mesh, second_index).
-/// Pairs are ordered by (type, first_mesh, first_index, second_mesh, second_index), vertex-face
-/// before edge-edge.
+///               (second_mesh, second_index);
+///  point-edge:  vertex `first_index` of `first_mesh`, edge `second_index` of `second_mesh`;
+///  point-point: vertex `first_index` of `first_mesh`, vertex `second_index` of `second_mesh`,
+///               with (first_mesh, first_index) < (second_mesh, second_index);
+///  point-plane: vertex `first_index` of `first_mesh`, the plane `second_mesh` (added by
+///               add_plane; second_index 0).
+/// Pairs are ordered by (type, first_mesh, first_index, second_mesh, second_index), in the
+/// order of QueryType (vertex-face first).
 struct ScenePair {
-  QueryType type = QueryType::vertex_face;  ///< vertex-face or edge-edge
+  QueryType type = QueryType::vertex_face;  ///< the kind of the pair
   MeshId first_mesh = 0;                    ///< the mesh of the vertex, or of the first edge
   std::uint32_t first_index = 0;            ///< the vertex, or the first edge (Scene::edges)
-  MeshId second_mesh = 0;                   ///< the mesh of the triangle, or of the second edge
-  std::uint32_t second_index = 0;           ///< the triangle, or the second edge
+  MeshId second_mesh = 0;  ///< the mesh of the triangle, edge or second point, or the plane
+  std::uint32_t second_index = 0;  ///< the triangle, edge or second point (0 for a plane)
 
   /// Equal pairs: every field equal.
 
@@ -167,6 +191,9 @@ struct SceneStats {
   std::uint64_t vertex_face_candidates = 0;
   /// Edge-edge pairs whose boxes overlap.
   std::uint64_t edge_edge_candidates = 0;
+  /// Point-edge, point-point and point-plane pairs that reached the narrow phase (a point's
+  /// box overlaps the other's, or its path may come within delta of the plane).
+  std::uint64_t point_candidates = 0;
   /// Pairs the narrow phase decided (earliest_contact skips pairs that cannot lower the bound).
   std::uint64_t narrow_phase_tests = 0;
   /// Hierarchies built from scratch (first use or degradation) during the call.
@@ -213,8 +240,11 @@ struct EarliestContact {
 /// hierarchies). Movable, not copyable.
 class EXACTCCD_API Scene {
  public:
-  /// An empty scene.
+  /// An empty 3D scene.
   Scene();
+  /// An empty scene in the given space (SceneDimension::two: the plane z = 0).
+  /// \param dimension three or two.
+  explicit Scene(SceneDimension dimension);
   /// Frees the meshes and hierarchies.
   ~Scene();
   /// Takes the other scene's meshes; the other is left empty.
@@ -271,6 +301,39 @@ class EXACTCCD_API Scene {
   /// \param end positions at the end of the step, one row per vertex.
   /// \throws std::invalid_argument as above, or for an unknown mesh.
   void set_motion(MeshId mesh, const Positions& start, const Positions& end);
+  /// A moving mesh of edges only (rods, hair, seams; in a 2D scene, polylines), at rest at
+  /// `positions` until set_motion. Scene::edges(mesh) is `edges` as given (the numbering of its
+  /// pairs). Its vertices on no edge are points (point-edge, point-point pairs). In a 2D scene
+  /// every z coordinate must be 0.
+  /// \param positions the vertices, finite.
+  /// \param edges one row per edge, two distinct vertex indices, no edge twice.
+  /// \return the new mesh's id.
+  /// \throws std::invalid_argument for non-finite coordinates, an index out of range, an edge
+  ///         repeating a vertex or given twice, or (2D) a non-zero z.
+  MeshId add_edge_mesh(const Positions& positions, const Edges& edges);
+  /// A static mesh of edges only: one set of positions for every step (walls of a 2D scene).
+  /// \param positions the vertices, finite.
+  /// \param edges as add_edge_mesh.
+  /// \return the new mesh's id.
+  /// \throws std::invalid_argument as add_edge_mesh.
+  MeshId add_static_edge_mesh(const Positions& positions, const Edges& edges);
+  /// A moving point set (particles), at rest at `positions` until set_motion: every vertex is
+  /// a point. In a 2D scene every z coordinate must be 0.
+  /// \param positions the points, finite.
+  /// \return the new mesh's id.
+  /// \throws std::invalid_argument for non-finite coordinates or (2D) a non-zero z.
+  MeshId add_points(const Positions& positions);
+  /// An infinite plane that never moves, {x : (x - origin) . normal = 0} (the usual floor): a
+  /// mesh of no vertices, paired with every vertex of every moving (not static) mesh, decided
+  /// as point_plane_ccd. A vertex whose path stays more than delta to one side is cut by one
+  /// certified test per vertex, with no cost per triangle. 3D scenes only; rigid bodies
+  /// cannot meet a plane yet (find_contacts refuses a scene with both).
+  /// \param origin a point of the plane, finite.
+  /// \param normal its normal (any non-zero finite length).
+  /// \return the plane's mesh id (the second_mesh of its pairs).
+  /// \throws std::invalid_argument for a non-finite value, a zero normal, or a 2D scene.
+  MeshId add_plane(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal);
+
   /// The simulator's own numbering of a mesh's edges: `edges` must hold every side of the
   /// mesh's triangles exactly once, in any order and either orientation (libigl's `edges`, for
   /// one, sorts by (j, i)); from then on Scene::edges(mesh) is `edges` as given, and every
@@ -283,8 +346,18 @@ class EXACTCCD_API Scene {
   ///         missing (the message names the row or the side).
   void set_edges(MeshId mesh, const Edges& edges);
 
-  /// \return the number of meshes added.
+  /// \return the number of meshes added (planes included).
   std::size_t mesh_count() const;
+  /// \return the scene's space.
+  SceneDimension dimension() const;
+  /// Whether `mesh` was added by add_plane. Precondition: mesh < mesh_count().
+  /// \param mesh a mesh of this scene.
+  /// \return true for a plane.
+  bool is_plane(MeshId mesh) const;
+  /// A plane's origin and normal as given. Throws std::invalid_argument for another mesh.
+  /// \param plane a plane of this scene.
+  /// \return {origin, normal}.
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> plane(MeshId plane) const;
   /// Whether `mesh` was added by add_static_mesh. Precondition: mesh < mesh_count().
   /// \param mesh a mesh of this scene.
   /// \return true for a static mesh.
@@ -340,6 +413,20 @@ class EXACTCCD_API Scene {
   /// \param pair an edge-edge pair (e.g. from SceneResult::contacts).
   /// \return the query its test decides.
   EdgeEdgeQuery edge_edge_query(const ScenePair& pair) const;
+  /// The pair's query (start positions, then end positions). Precondition: a point-edge pair
+  /// of this scene (std::invalid_argument otherwise).
+  /// \param pair a point-edge pair.
+  /// \return the query its test decides (point_edge_ccd; in 2D, point_edge_ccd_2d's embedding).
+  PointEdgeQuery point_edge_query(const ScenePair& pair) const;
+  /// The pair's query. Precondition: a point-point pair of this scene.
+  /// \param pair a point-point pair.
+  /// \return the query its test decides (point_point_ccd).
+  PointPointQuery point_point_query(const ScenePair& pair) const;
+  /// The pair's query: the vertex's motion against the static plane (origin and normal
+  /// repeated at t1). Precondition: a point-plane pair of this scene.
+  /// \param pair a point-plane pair.
+  /// \return the query its test decides (point_plane_ccd).
+  PointPlaneQuery point_plane_query(const ScenePair& pair) const;
   /// Any vertex-face pair of this scene as a rigid query: a rigid body's side with its
   /// RigidMotion, a deformable or static mesh's side linear (PathKind::linear, end positions as
   /// set_motion gave them). For a pair involving a rigid body, the query its test decides; for
@@ -348,13 +435,16 @@ class EXACTCCD_API Scene {
   /// \param pair a vertex-face pair of this scene.
   /// \return the query.
   RigidVertexFaceQuery rigid_vertex_face_query(const ScenePair& pair) const;
-  /// Any edge-edge pair of this scene as a rigid query (as rigid_vertex_face_query).
-  /// \param pair an edge-edge pair of this scene.
+  /// Any edge-edge, point-edge or point-point pair of this scene as a rigid query (as
+  /// rigid_vertex_face_query; a point is the zero-length segment [v, v], as point_edge_ccd
+  /// decides it).
+  /// \param pair an edge-edge, point-edge or point-point pair of this scene.
   /// \return the query.
   RigidEdgeEdgeQuery rigid_edge_edge_query(const ScenePair& pair) const;
   /// The certified contact geometry of a contact of this scene (contact_geometry of its pair's
   /// query, the rigid one when a rigid body takes part, at the contact's enclosure of t*, in s
-  /// for rigid pairs). `min_separation`: the SceneOptions::min_separation the contact was found
+  /// for rigid pairs; a point-edge or point-point pair as the edge-edge query of its
+  /// zero-length segments; not yet for point-plane pairs: std::invalid_argument). `min_separation`: the SceneOptions::min_separation the contact was found
   /// with (the closest points' geometry when > 0).
   /// \param contact a contact of this scene.
   /// \param min_separation the delta of the call that found it (0: contact).

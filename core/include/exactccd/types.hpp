@@ -16,11 +16,15 @@ namespace exactccd {
 enum class QueryType : std::uint8_t {
   vertex_face,  ///< a vertex against a triangle
   edge_edge,    ///< a segment against a segment
+  point_edge,   ///< a point against a segment (scene pairs of edge meshes, point sets, 2D)
+  point_point,  ///< a point against a point (scene pairs of point sets)
+  point_plane,  ///< a point against a plane (scene pairs with Scene::add_plane)
 };
 
 /// The type's name, as the benchmark's folder names. Never throws.
 /// \param type a query type.
-/// \return "vertex-face" or "edge-edge" (a static string).
+/// \return "vertex-face", "edge-edge", "point-edge", "point-point" or "point-plane" (a static
+///         string).
 EXACTCCD_API const char* to_string(QueryType type) noexcept;
 
 /// Vertex p against the closed triangle (a, b, c); fields named as the benchmark's CSV rows.
