@@ -9,6 +9,7 @@
 
 #include "core/predicates/rigid_query.hpp"
 #include "exactccd/rational_query.hpp"
+#include "exactccd/rigid.hpp"
 #include "exactccd/types.hpp"
 
 namespace exactccd::pipeline {
@@ -33,6 +34,12 @@ inline PointPlaneQuery held_at_start(PointPlaneQuery q) {
   q.p_t1 = q.p_t0;
   q.origin_t1 = q.origin_t0;
   q.normal_t1 = q.normal_t0;
+  return q;
+}
+
+/// The body at rest: the zero motion keeps x(s) = p for every s.
+inline RigidPointPlaneQuery held_at_start(RigidPointPlaneQuery q) {
+  q.motion = {};
   return q;
 }
 

@@ -21,6 +21,7 @@
 #include "pipeline/dispatch.hpp"
 #include "pipeline/rigid_problems.hpp"
 #include "pipeline/rigid_query_check.hpp"
+#include "pipeline/rotation_time.hpp"
 
 namespace exactccd {
 
@@ -96,8 +97,10 @@ struct Mpfr {
   Mpfr& operator=(const Mpfr&) = delete;
 };
 
-/// A certified enclosure of t(s) = atan(s r) / atan(r) over s in [s_lo, s_hi], r = |q| > 0:
-/// every operation rounded outwards by MPFR. PROOF: proofs/rigid_ccd.md#time-of-rotation
+}  // namespace
+
+namespace pipeline {
+
 std::pair<double, double> rotation_time(const Vec3<double>& q, double s_lo, double s_hi) {
   Mpfr r_lo, r_hi, num, den;
   // |q|^2 rounded down and up (each square and sum), then its square root likewise.
@@ -125,6 +128,12 @@ std::pair<double, double> rotation_time(const Vec3<double>& q, double s_lo, doub
   const double hi = std::min(mpfr_get_d(num.x, MPFR_RNDU), 1.0);  // t(s) <= 1 for s <= 1
   return {std::max(lo, 0.0), hi};
 }
+
+}  // namespace pipeline
+
+namespace {
+
+using pipeline::rotation_time;
 
 RigidCcdResult with_time(const CcdResult& ccd, const predicates::DoubleRigidQuery& q) {
   RigidCcdResult r;

@@ -505,10 +505,8 @@ TEST(SceneCodimensional, BadInputIsRefusedWithAClearMessage) {
   EXPECT_NE(message([&] { scene.set_motion(plane, Positions(0, 3), Positions(0, 3)); })
                 .find("never moves"),
             std::string::npos);
-  scene.add_rigid_body(flat, (Triangles(1, 3) << 0, 1, 2).finished());
-  EXPECT_NE(message([&] { scene.find_contacts(); }).find("cannot meet planes"),
-            std::string::npos);
-  EXPECT_NE(message([&] { scene.earliest_contact(); }).find("cannot meet planes"),
+  EXPECT_NE(message([&] { scene.rigid_point_plane_query({QueryType::point_plane, rod, 0, plane, 0}); })
+                .find("not a rigid body"),
             std::string::npos);
 }
 

@@ -1,4 +1,5 @@
-// The broad phase of a plane (Scene::add_plane): one certified test per vertex, no hierarchy.
+// The broad phase of a plane (Scene::add_plane): one certified test per vertex, no hierarchy
+// (for a rigid body's vertex, its certified box over the step against the plane, at the end).
 //
 // For a static plane {x : (x - o) . n = 0}, f(t) = (p(t) - o) . n is linear in t along a
 // vertex's straight path, so it lies between f(0) and f(1). The vertex comes within delta of
@@ -10,6 +11,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <cmath>
 
 #include "core/predicates/interval.hpp"
 #include "exactccd/types.hpp"
@@ -41,6 +44,25 @@ EXACTCCD_CERTIFIED bool apart_from_plane(const Eigen::Vector3d& p0, const Eigen:
   }
   return (f0.inf() > reach && f_end.inf() > reach) ||
          (f0.sup() < -reach && f_end.sup() < -reach);
+}
+
+/// True when every point of the box lo <= x <= hi (a certified box of a rigid body's vertex
+/// over some s-range, rigid_boxes.hpp) is more than delta >= 0 from the plane: the offset
+/// (x - origin) . normal enclosed over the box is certainly beyond delta |n|. A box with a
+/// non-finite end cuts nothing. Needs upward rounding.
+EXACTCCD_CERTIFIED bool box_apart_from_plane(const std::array<double, 3>& lo,
+                                             const std::array<double, 3>& hi,
+                                             const Eigen::Vector3d& origin,
+                                             const Eigen::Vector3d& normal, double delta) {
+  using predicates::Interval;
+  Interval f(0.0), nn(0.0);
+  for (int k = 0; k < 3; ++k) {
+    if (!std::isfinite(lo[k]) || !std::isfinite(hi[k]) || !(lo[k] <= hi[k])) return false;
+    f += (Interval(lo[k], hi[k]) - Interval(origin[k])) * Interval(normal[k]);
+    nn += Interval(normal[k]) * Interval(normal[k]);
+  }
+  const double reach = delta > 0.0 ? (Interval(delta) * CGAL::sqrt(nn)).sup() : 0.0;
+  return f.inf() > reach || f.sup() < -reach;
 }
 
 /// The window cull of a point-plane query of the scene (a static plane: origin and normal as

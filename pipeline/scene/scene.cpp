@@ -474,18 +474,6 @@ struct Scene::Impl {
 
   bool planar() const { return dimension == SceneDimension::two; }
 
-  /// Rigid bodies cannot meet planes yet (a rigid point-plane test does not exist).
-  void check_kinds() const {
-    const auto plane = std::find_if(meshes.begin(), meshes.end(),
-                                    [](const Mesh& m) { return m.kind == MeshKind::plane; });
-    const auto rigid = std::find_if(meshes.begin(), meshes.end(),
-                                    [](const Mesh& m) { return m.is_rigid; });
-    if (plane != meshes.end() && rigid != meshes.end())
-      throw std::invalid_argument(
-          "exactccd: rigid body " + std::to_string(rigid - meshes.begin()) + " and plane " +
-          std::to_string(plane - meshes.begin()) +
-          " in one scene: rigid bodies cannot meet planes yet (use a static mesh as the floor)");
-  }
 
   bool any_rigid() const {
     return std::any_of(meshes.begin(), meshes.end(), [](const Mesh& m) { return m.is_rigid; });
@@ -576,6 +564,12 @@ struct Scene::Impl {
   bool rigid_disjoint_over_window(const ScenePair& p, double window, double delta) const {
     const Mesh& a = meshes[p.first_mesh];
     const Mesh& b = meshes[p.second_mesh];
+    if (p.type == QueryType::point_plane) {
+      Box box = scene::empty_box();
+      grow_over_window(box, a, std::array<std::int32_t, 1>{static_cast<std::int32_t>(p.first_index)},
+                       window);
+      return scene::box_apart_from_plane(box.lo, box.hi, b.plane_origin, b.plane_normal, delta);
+    }
     if (p.type == QueryType::vertex_face) {
       const auto f = static_cast<Eigen::Index>(p.second_index);
       return rigid_sides_disjoint(
@@ -609,6 +603,14 @@ struct Scene::Impl {
     const std::array<std::int32_t, 2> eb = second_segment(b, p);
     return {row(a.start, ea[0]), row(a.start, ea[1]), row(b.start, eb[0]), row(b.start, eb[1]),
             row(a.end, ea[0]),   row(a.end, ea[1]),   row(b.end, eb[0]),   row(b.end, eb[1])};
+  }
+
+  /// A point-plane pair of a rigid body's vertex: its motion against the static plane.
+  RigidPointPlaneQuery rigid_point_plane(const ScenePair& p) const {
+    const Mesh& a = mesh(p.first_mesh);
+    const Mesh& plane = mesh(p.second_mesh);
+    return {row(a.start, static_cast<std::int32_t>(p.first_index)), a.motion, plane.plane_origin,
+            plane.plane_normal};
   }
 
   /// A point-plane pair's query: the vertex's motion against the static plane.
@@ -840,6 +842,25 @@ struct Scene::Impl {
     plane_candidates(sink, until, delta);
   }
 
+  /// A rigid body's vertices against a plane: each vertex's certified box over the step
+  /// (rigid_vertex_boxes) against the plane (box_apart_from_plane). PROOF: proofs/scene.md#planes
+  template <class Sink>
+  void rigid_plane_candidates(MeshId id, MeshId plane, const Sink& sink, double delta) const {
+    const Mesh& m = meshes[id];
+    const Mesh& pm = meshes[plane];
+    const std::vector<Box> boxes = rigid_vertex_boxes(m, Span::swept);
+    std::vector<std::uint32_t> near;
+    {
+      const predicates::RoundingGuard upward;
+      for (std::size_t v = 0; v < boxes.size(); ++v)
+        if (!scene::box_apart_from_plane(boxes[v].lo, boxes[v].hi, pm.plane_origin,
+                                         pm.plane_normal, delta))
+          near.push_back(static_cast<std::uint32_t>(v));
+    }
+    for (const std::uint32_t v : near)
+      sink(ScenePair{QueryType::point_plane, id, v, plane, 0}, 0.0);
+  }
+
   /// Every vertex of a moving mesh against every plane, cut by apart_from_plane over
   /// [0, until()] (one certified test per vertex: no hierarchy, no cost per triangle).
   /// PROOF: proofs/scene.md#planes
@@ -850,7 +871,11 @@ struct Scene::Impl {
       if (pm.kind != MeshKind::plane) continue;
       for (MeshId id = 0; id < meshes.size(); ++id) {
         const Mesh& m = meshes[id];
-        if (m.is_static || m.is_rigid) continue;  // planes and static meshes never move
+        if (m.is_static) continue;  // planes and static meshes never move
+        if (m.is_rigid) {
+          rigid_plane_candidates(id, plane, sink, delta);
+          continue;
+        }
         tbb::parallel_for(
             tbb::blocked_range<Eigen::Index>(0, m.start.rows(), 4096),
             [&](const tbb::blocked_range<Eigen::Index>& r) {
@@ -993,6 +1018,15 @@ struct Scene::Impl {
     }
   }
 
+  /// The rigid test of a pair involving a rigid body (rigid.hpp).
+  RigidCcdResult rigid_test(const ScenePair& p, const CcdOptions& options) const {
+    switch (p.type) {
+      case QueryType::vertex_face: return vertex_face_ccd(rigid_vertex_face(p), options);
+      case QueryType::point_plane: return point_plane_ccd(rigid_point_plane(p), options);
+      default: return edge_edge_ccd(rigid_edge_edge(p), options);
+    }
+  }
+
   static Decision with_time(const RigidCcdResult& r) {
     return {r.ccd, r.has_time, r.time_lo, r.time_hi};
   }
@@ -1000,10 +1034,7 @@ struct Scene::Impl {
   /// The pair's answer over [0, options.t_max]: a pair involving a rigid body by the rigid test
   /// of rigid.hpp, any other by `test` (time = s).
   Decision decide(const ScenePair& p, const CcdOptions& options) const {
-    if (involves_rigid(p))
-      return with_time(p.type == QueryType::vertex_face
-                           ? vertex_face_ccd(rigid_vertex_face(p), options)
-                           : edge_edge_ccd(rigid_edge_edge(p), options));
+    if (involves_rigid(p)) return with_time(rigid_test(p, options));
     const CcdResult c = test(p, options);
     return {c, true, c.toi_lo, c.toi_hi};
   }
@@ -1187,9 +1218,7 @@ EarliestContact Scene::Impl::earliest_contact(const SceneOptions& o) {
       if (!culled_over_window(
               [&] { return rigid_disjoint_over_window(p, window, o.min_separation); })) {
         ++local.tests;
-        decided = p.type == QueryType::vertex_face
-                      ? vertex_face_ccd(rigid_vertex_face(p), options).ccd
-                      : edge_edge_ccd(rigid_edge_edge(p), options).ccd;
+        decided = rigid_test(p, options).ccd;
       }
     } else if (p.type == QueryType::vertex_face) {
       decided = decide_linear(vertex_face(p));
@@ -1547,7 +1576,6 @@ auto with_threads(int max_threads, F&& f) {
 SceneResult Scene::find_contacts(const SceneOptions& options) {
   const predicates::RoundToNearestGuard fp;
   check_options(options);
-  impl_->check_kinds();
   const SceneOptions o = with_pair_separation(options);
   return with_threads(o.max_threads, [&] { return impl_->find_contacts(o); });
 }
@@ -1555,7 +1583,6 @@ SceneResult Scene::find_contacts(const SceneOptions& options) {
 EarliestContact Scene::earliest_contact(const SceneOptions& options) {
   const predicates::RoundToNearestGuard fp;
   check_options(options);
-  impl_->check_kinds();
   if (options.broad_phase != BroadPhase::swept_bvh)
     throw std::invalid_argument("exactccd: earliest_contact needs the swept_bvh broad phase");
   const SceneOptions o = with_pair_separation(options);
@@ -1621,7 +1648,27 @@ PointPlaneQuery Scene::point_plane_query(const ScenePair& pair) const {
     throw std::invalid_argument("exactccd: point_plane_query: mesh " +
                                 std::to_string(pair.second_mesh) + " is not a plane");
   check_indices(pair, rows_of(a.start), 1);
+  if (a.is_rigid)
+    throw std::invalid_argument(
+        "exactccd: point_plane_query of a rigid body's vertex (use rigid_point_plane_query)");
   return impl_->point_plane(pair);
+}
+
+RigidPointPlaneQuery Scene::rigid_point_plane_query(const ScenePair& pair) const {
+  if (pair.type != QueryType::point_plane)
+    throw std::invalid_argument(std::string("exactccd: rigid_point_plane_query of a ") +
+                                to_string(pair.type) + " pair");
+  const Mesh& a = impl_->mesh(pair.first_mesh);
+  const Mesh& b = impl_->mesh(pair.second_mesh);
+  if (b.kind != MeshKind::plane)
+    throw std::invalid_argument("exactccd: rigid_point_plane_query: mesh " +
+                                std::to_string(pair.second_mesh) + " is not a plane");
+  if (!a.is_rigid)
+    throw std::invalid_argument("exactccd: rigid_point_plane_query: mesh " +
+                                std::to_string(pair.first_mesh) +
+                                " is not a rigid body (use point_plane_query)");
+  check_indices(pair, rows_of(a.start), 1);
+  return impl_->rigid_point_plane(pair);
 }
 
 EdgeEdgeQuery Scene::edge_edge_query(const ScenePair& pair) const {

@@ -58,6 +58,7 @@ from ._exactccd import (
     query_type_from_path,
     StepResult,
     rigid_edge_edge_ccd,
+    rigid_point_plane_ccd,
     rigid_edge_edge_collision_free_step,
     rigid_vertex_face_ccd,
     rigid_vertex_face_collision_free_step,
@@ -83,6 +84,8 @@ find_query_files = _arguments.one_line_type_errors(find_query_files, "find_query
 query_type_from_path = _arguments.one_line_type_errors(query_type_from_path,
                                                        "query_type_from_path")
 rigid_edge_edge_ccd = _arguments.one_line_type_errors(rigid_edge_edge_ccd, "rigid_edge_edge_ccd")
+rigid_point_plane_ccd = _arguments.one_line_type_errors(rigid_point_plane_ccd,
+                                                       "rigid_point_plane_ccd")
 rigid_vertex_face_ccd = _arguments.one_line_type_errors(rigid_vertex_face_ccd,
                                                         "rigid_vertex_face_ccd")
 rigid_edge_edge_collision_free_step = _arguments.one_line_type_errors(
@@ -149,6 +152,7 @@ __all__ = [
     "point_plane_ccd_batch", "point_point_ccd", "point_point_ccd_batch",
     "point_point_collision_free_step", "query_type_from_path", "read_query_file",
     "read_query_file_exact", "rigid_edge_edge_ccd", "rigid_edge_edge_collision_free_step",
+    "rigid_point_plane_ccd",
     "rigid_vertex_face_ccd", "rigid_vertex_face_collision_free_step", "vertex_face_ccd",
     "vertex_face_ccd_batch", "vertex_face_collision_free_step", "write_query_file",
 ]

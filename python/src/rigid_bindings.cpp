@@ -169,6 +169,26 @@ void bind_rigid(py::module_& m) {
       "Closed segment [ea0, ea1] against [eb0, eb1]: points = (4, 3) positions at s = 0; each "
       "motion a RigidMotion or an array of end positions (straight lines). mode and "
       "min_separation: as rigid_vertex_face_ccd (delta: the distance between the segments).");
+  m.def(
+      "rigid_point_plane_ccd",
+      [](const py::handle& p, const py::handle& motion, const py::handle& origin,
+         const py::handle& normal, double t_max, double toi_width, const std::string& mode,
+         double min_separation) {
+        if (!py::isinstance<RigidMotion>(motion))
+          throw py::type_error("rigid_point_plane_ccd: motion must be an exactccd.RigidMotion");
+        const RigidPointPlaneQuery q{vector_of(p, "p"), motion.cast<RigidMotion>(),
+                                     vector_of(origin, "origin"), vector_of(normal, "normal")};
+        const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
+        py::gil_scoped_release release;
+        return point_plane_ccd(q, options);
+      },
+      py::arg("p"), py::arg("motion"), py::arg("origin"), py::arg("normal"), py::kw_only(),
+      py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "filtered",
+      py::arg("min_separation") = 0.0,
+      "A point of a rigid body (at p at s = 0, moving with the RigidMotion `motion`) against the "
+      "static plane through `origin` with normal `normal` (non-zero): contact when the point is "
+      "on the plane, with min_separation delta when within delta of it. mode as "
+      "rigid_vertex_face_ccd. Returns a RigidCcdResult.");
 }
 
 }  // namespace exactccd::python

@@ -509,13 +509,34 @@ def test_plane_errors():
         scene.plane(7)
     with pytest.raises(ValueError):
         scene.set_motion(floor, np.zeros((0, 3)), np.zeros((0, 3)))
-    # A plane and a rigid body: refused by find_contacts and earliest_contact.
-    box = np.array([[0.0, 0.0, 2.0], [1.0, 0.0, 2.0], [0.0, 1.0, 2.0]])
-    scene.add_rigid_body(box, [[0, 1, 2]])
-    with pytest.raises(ValueError, match="rigid"):
-        scene.find_contacts()
-    with pytest.raises(ValueError, match="rigid"):
-        scene.earliest_contact()
+
+
+def test_rigid_body_falling_on_a_plane():
+    # A rigid triangle turning and falling onto a floor: its point-plane contacts are exactly
+    # each vertex decided by rigid_point_plane_ccd.
+    scene = exactccd.Scene()
+    tri = np.array([[0.0, 0.0, 0.5], [1.0, 0.0, 0.75], [0.0, 1.0, 1.0]])
+    body = scene.add_rigid_body(tri, [[0, 1, 2]])
+    motion = exactccd.RigidMotion(pivot=(0.25, 0.25, 0.75), translation=(0, 0, -0.75),
+                                  cayley=(0.25, -0.125, 0))
+    scene.set_rigid_motion(body, motion)
+    floor = scene.add_plane([0, 0, 0], [0, 0, 2])
+    for delta in (0.0, 0.05):
+        got = [c for c in scene.find_contacts(min_separation=delta).contacts
+               if c.pair.type == "point-plane"]
+        want = []
+        for v in range(3):
+            r = exactccd.rigid_point_plane_ccd(tri[v], motion, [0, 0, 0], [0, 0, 2],
+                                               min_separation=delta)
+            if r.collides:
+                want.append((v, r.toi_lo, r.toi_hi))
+        assert want, "the body should reach the floor"
+        assert [(c.pair.first_index, c.toi_lo, c.toi_hi) for c in got] == want
+        assert all(c.pair.first_mesh == body and c.pair.second_mesh == floor for c in got)
+    with pytest.raises(TypeError, match="RigidMotion"):
+        exactccd.rigid_point_plane_ccd(tri[0], None, [0, 0, 0], [0, 0, 1])
+    with pytest.raises(ValueError, match="normal"):
+        exactccd.rigid_point_plane_ccd(tri[0], motion, [0, 0, 0], [0, 0, 0])
 
 
 def test_pair_query_errors():

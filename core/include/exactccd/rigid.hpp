@@ -90,6 +90,27 @@ struct RigidEdgeEdgeQuery {
   SideMotion edge_b;    ///< edge b's motion
 };
 
+/// A point of a rigid body against a static plane {x : (x - origin) . normal = 0} (the floor a
+/// body falls on): the point is at position_at(motion, p, s) for s in [0, 1].
+struct RigidPointPlaneQuery {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();       ///< the point at s = 0
+  RigidMotion motion;                                ///< its body's motion
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< a point of the plane
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< the plane's normal (non-zero)
+
+  /// All zero (set the fields before use).
+  RigidPointPlaneQuery() = default;
+  /// The query {p, motion, origin, normal}. A constructor, not an aggregate: six vectors in
+  /// braces, point_plane_ccd({p_t0, ..., normal_t1}), stay the linear PointPlaneQuery.
+  /// \param p the point at s = 0.
+  /// \param motion its body's motion.
+  /// \param origin a point of the plane.
+  /// \param normal the plane's normal.
+  RigidPointPlaneQuery(const Eigen::Vector3d& p, const RigidMotion& motion,
+                       const Eigen::Vector3d& origin, const Eigen::Vector3d& normal)
+      : p(p), motion(motion), origin(origin), normal(normal) {}
+};
+
 /// The answer to a rigid query: the verdict and the TOI enclosure in the motion parameter s
 /// (`ccd`, with options.t_max bounding s), and, when the query's time is defined, the same
 /// contact in time.
@@ -128,6 +149,20 @@ EXACTCCD_API RigidCcdResult vertex_face_ccd(const RigidVertexFaceQuery& query,
 /// \throws std::invalid_argument as the vertex-face function.
 EXACTCCD_API RigidCcdResult edge_edge_ccd(const RigidEdgeEdgeQuery& query,
                                           const CcdOptions& options = {});
+
+/// A point of a rigid body against a static plane, over s in [0, options.t_max]: contact when
+/// the point is on the plane; with min_separation delta > 0, when its distance to the plane is
+/// at most delta. Exact: the signed offset times the path's denominator 1 + s^2 |q|^2 is a
+/// polynomial of degree <= 3 in s (proofs/point_plane.md, the rigid section). Mode::float_only
+/// finds that cubic's roots in doubles (uncertified). The time is defined as for the other rigid
+/// queries (no rotation, or a pure rotation about a fixed axis).
+/// \param query finite values, a non-zero normal.
+/// \param options as for the vertex-face function.
+/// \return the verdict, the TOI enclosure in s, and in time when defined.
+/// \throws std::invalid_argument for non-finite input, a zero normal or options outside their
+///         domain.
+EXACTCCD_API RigidCcdResult point_plane_ccd(const RigidPointPlaneQuery& query,
+                                           const CcdOptions& options = {});
 
 /// The position at parameter s of the point that is at x0 at s = 0, in double arithmetic
 /// (for display and for the chord approximation; not certified).

@@ -326,8 +326,9 @@ class EXACTCCD_API Scene {
   /// An infinite plane that never moves, {x : (x - origin) . normal = 0} (the usual floor): a
   /// mesh of no vertices, paired with every vertex of every moving (not static) mesh, decided
   /// as point_plane_ccd. A vertex whose path stays more than delta to one side is cut by one
-  /// certified test per vertex, with no cost per triangle. 3D scenes only; rigid bodies
-  /// cannot meet a plane yet (find_contacts refuses a scene with both).
+  /// certified test per vertex, with no cost per triangle. 3D scenes only. A rigid body's
+  /// vertices meet it by the rigid point_plane_ccd (rigid.hpp), each cut first by its
+  /// certified box over the step.
   /// \param origin a point of the plane, finite.
   /// \param normal its normal (any non-zero finite length).
   /// \return the plane's mesh id (the second_mesh of its pairs).
@@ -423,10 +424,16 @@ class EXACTCCD_API Scene {
   /// \return the query its test decides (point_point_ccd).
   PointPointQuery point_point_query(const ScenePair& pair) const;
   /// The pair's query: the vertex's motion against the static plane (origin and normal
-  /// repeated at t1). Precondition: a point-plane pair of this scene.
+  /// repeated at t1). Precondition: a point-plane pair of this scene whose vertex is not a
+  /// rigid body's (std::invalid_argument otherwise).
   /// \param pair a point-plane pair.
   /// \return the query its test decides (point_plane_ccd).
   PointPlaneQuery point_plane_query(const ScenePair& pair) const;
+  /// A point-plane pair of a rigid body's vertex as the rigid query its test decides.
+  /// \param pair a point-plane pair whose first mesh is a rigid body.
+  /// \return the query (point_plane_ccd of rigid.hpp).
+  /// \throws std::invalid_argument for another pair.
+  RigidPointPlaneQuery rigid_point_plane_query(const ScenePair& pair) const;
   /// Any vertex-face pair of this scene as a rigid query: a rigid body's side with its
   /// RigidMotion, a deformable or static mesh's side linear (PathKind::linear, end positions as
   /// set_motion gave them). For a pair involving a rigid body, the query its test decides; for
