@@ -339,6 +339,54 @@ void BM_ImpactStep(benchmark::State& state) {
 BENCHMARK(BM_ImpactStep)->Name("impact_step")->ArgsProduct({{0, 1}, {1, 2}})
     ->ArgNames({"earliest", "threads"})->Unit(benchmark::kMillisecond)->UseRealTime();
 
+/// A floor (issue 28): the same sphere falling onto the floor z = 0, its lowest point from 0.25
+/// above to 0.25 below it within one step, the floor given three ways: Scene::add_plane (one certified test
+/// per vertex), a static 256 x 256-cell grid (131,072 triangles, the usual mesh floor) and two
+/// static triangles. Contacts are point-plane pairs for the plane, vertex-face and edge-edge
+/// pairs for the meshes; the earliest contact is the same time.
+void BM_FloorStep(benchmark::State& state) {
+  static const auto grid = exactccd::scenes::grid_sheet(256, 4.0, {0.5, 0.5, 0.0});
+  static const auto body = exactccd::scenes::uv_sphere({0.5013, 0.4987, 0.45}, 0.2, 48, 24);
+  static const exactccd::Positions end =
+      exactccd::scenes::translated(body.positions, {0.0123, -0.0077, -0.5});
+  exactccd::Scene scene;
+  const int floor = static_cast<int>(state.range(0));
+  const char* const names[] = {"plane", "grid_256x256", "two_triangles"};
+  state.SetLabel(names[floor]);
+  if (floor == 0) {
+    scene.add_plane(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 1));
+  } else if (floor == 1) {
+    scene.add_static_mesh(grid.positions, grid.triangles);
+  } else {
+    exactccd::Positions x(4, 3);
+    x << -1.5, -1.5, 0, 2.5, -1.5, 0, 2.5, 2.5, 0, -1.5, 2.5, 0;
+    exactccd::Triangles t(2, 3);
+    t << 0, 1, 2, 0, 2, 3;
+    scene.add_static_mesh(x, t);
+  }
+  const exactccd::MeshId id = scene.add_mesh(body.positions, body.triangles);
+  exactccd::SceneOptions options;
+  options.max_threads = 2;
+  options.self_collision = false;
+  scene.set_motion(id, body.positions, end);
+  scene.find_contacts(options);
+  std::size_t contacts = 0, tests = 0;
+  double toi = 0;
+  for (auto _ : state) {
+    scene.set_motion(id, body.positions, end);
+    const auto r = scene.find_contacts(options);
+    contacts = r.contacts.size();
+    tests = r.stats.narrow_phase_tests;
+    toi = r.earliest.toi_lo;
+  }
+  state.counters["contacts"] = static_cast<double>(contacts);
+  state.counters["narrow_tests"] = static_cast<double>(tests);
+  state.counters["earliest_toi"] = toi;
+}
+// Argument: the floor (0 plane, 1 grid mesh, 2 two triangles).
+BENCHMARK(BM_FloorStep)->Name("floor_step")->DenseRange(0, 2)->ArgNames({"floor"})
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+
 /// Candidates against the pairs whose swept boxes overlap, counted by a different broad phase
 /// (uniform grid) over all primitive pairs, pairs sharing a vertex excluded.
 void report_candidate_ratio(int scenario) {

@@ -15,6 +15,7 @@
 #include "core/predicates/fp_environment.hpp"
 #include "core/predicates/interval.hpp"
 #include "exact/arithmetic/rational.hpp"
+#include "exact/arithmetic/stack_dyadic.hpp"
 #include "exact/polynomials/polynomial.hpp"
 #include "exact/reference/point_plane.hpp"
 #include "exactccd/ccd.hpp"
@@ -120,20 +121,66 @@ struct PointPlane {
     if (s0 == 0 || predicates::certain_strict_sign(slope) == 0 ||
         predicates::certain_strict_sign(value_at(o.t_max)) != -s0)
       return;
-    std::optional<exact::Polynomial> exact_f;  // built on the first uncertain sign
-    double lo = 0.0, hi = o.t_max;             // f has sign s0 at lo, -s0 at hi
-    for (;;) {
-      const double mid = lo + (hi - lo) / 2;  // upward rounding: in [lo, hi]
-      if (mid <= lo || mid >= hi || (o.toi_width > 0.0 && hi - lo <= o.toi_width)) break;
-      int s = predicates::certain_strict_sign(value_at(mid));
-      if (s == 0) {
-        if (!exact_f) exact_f = exact_polynomial(q);
-        s = exact_f->sign_at(exact::Rational(mid));
-        out->exact_used = true;
-        if (s == 0) {  // t* is this double
-          lo = hi = mid;
+    // Built on the first uncertain sign: f's exact coefficients on the stack (StackDyadic: no
+    // heap), over the rationals only if those overflow.
+    std::optional<predicates::FixedPoly<exact::StackDyadic, 2>> dyadic_f;
+    std::optional<exact::Polynomial> exact_f;
+    // f's sign at the double t: intervals first, f's exact coefficients where they cannot tell.
+    const auto sign_at = [&](double t) {
+      const int s = predicates::certain_strict_sign(value_at(t));
+      if (s != 0) return s;
+      out->exact_used = true;
+      if (!dyadic_f) dyadic_f = polynomial_over<exact::StackDyadic>(q);
+      const exact::StackDyadic T(t);
+      const exact::StackDyadic v = dyadic_f->c[0] + T * (dyadic_f->c[1] + T * dyadic_f->c[2]);
+      if (!v.overflow()) return v.sign();
+      if (!exact_f) exact_f = exact_polynomial(q);
+      return exact_f->sign_at(exact::Rational(t));
+    };
+    double lo = 0.0, hi = o.t_max;  // f has sign s0 at lo, -s0 at hi
+    // A guess of the root (the coefficients' midpoints: a secant step, then Newton steps), and
+    // a few units in the last place around it: when f's certified signs bracket the root there,
+    // bisection starts from that bracket instead of [0, t_max] (a speed-up only: every bracket
+    // is certified as in the bisection). PROOF: proofs/point_plane.md#filter
+    {
+      const auto mid = [](const Interval& x) { return 0.5 * (x.inf() + x.sup()); };
+      const double m0 = mid(f.c[0]), m1 = mid(f.c[1]), m2 = mid(f.c[2]);
+      const auto g_at = [&](double t) { return m0 + t * (m1 + t * m2); };
+      double g = lo - g_at(lo) * (hi - lo) / (g_at(hi) - g_at(lo));
+      for (int k = 0; k < 3; ++k) g -= g_at(g) / (m1 + 2 * m2 * g);
+      double d = std::max(std::abs(g) * 0x1p-50, 0x1p-1060);
+      for (int tries = 0; tries < 3 && std::isfinite(g); ++tries, d *= 0x1p12) {
+        const double a = g - d, b = g + d;
+        if (!(a > lo && b < hi)) break;
+        const int sa = sign_at(a);
+        if (sa == 0) {  // t* is this double
+          lo = hi = a;
           break;
         }
+        if (sa != s0) {  // the root is below a
+          hi = a;
+          continue;
+        }
+        lo = a;
+        const int sb = sign_at(b);
+        if (sb == 0) {
+          lo = hi = b;
+          break;
+        }
+        if (sb != s0) {
+          hi = b;
+          break;
+        }
+        lo = b;  // the root is above b
+      }
+    }
+    while (lo < hi) {
+      const double mid = lo + (hi - lo) / 2;  // upward rounding: in [lo, hi]
+      if (mid <= lo || mid >= hi || (o.toi_width > 0.0 && hi - lo <= o.toi_width)) break;
+      const int s = sign_at(mid);
+      if (s == 0) {  // t* is this double
+        lo = hi = mid;
+        break;
       }
       (s == s0 ? lo : hi) = mid;
     }
@@ -142,13 +189,17 @@ struct PointPlane {
     out->toi_hi = hi;
     out->toi_final = true;
   }
-  /// f = (p - o) . n with the doubles' exact rational coefficients.
+  /// f = (p - o) . n over NT (every double converted exactly).
+  template <class NT>
+  static predicates::FixedPoly<NT, 2> polynomial_over(const Query& q) {
+    const auto p = predicates::moving_point<NT>(q.p_t0, q.p_t1),
+               org = predicates::moving_point<NT>(q.origin_t0, q.origin_t1),
+               n = predicates::moving_point<NT>(q.normal_t0, q.normal_t1);
+    return predicates::dot(p - org, n);
+  }
+  /// f with the doubles' exact rational coefficients.
   static exact::Polynomial exact_polynomial(const Query& q) {
-    using exact::Rational;
-    const auto p = predicates::moving_point<Rational>(q.p_t0, q.p_t1),
-               org = predicates::moving_point<Rational>(q.origin_t0, q.origin_t1),
-               n = predicates::moving_point<Rational>(q.normal_t0, q.normal_t1);
-    return exact::Polynomial(predicates::dot(p - org, n));
+    return exact::Polynomial(polynomial_over<exact::Rational>(q));
   }
   static std::pair<double, double> tighten(NoStage&, double lo, double hi, const CcdOptions&) {
     return {lo, hi};
