@@ -389,7 +389,12 @@ TEST(SceneCodimensional, QueriesAndContactGeometryOfPointPairs) {
   EXPECT_EQ(pl.normal_t1, Eigen::Vector3d(0, 0, 2));
   EXPECT_LE(on_plane.toi_lo, 0.5);  // the second point: z from 1 to 0 crosses 0.5 at t = 1/2
   EXPECT_GE(on_plane.toi_hi, 0.5);
-  EXPECT_THROW(scene.contact_geometry(on_plane), std::invalid_argument);
+  const ContactGeometry on = scene.contact_geometry(on_plane);  // from above: +z
+  EXPECT_EQ(on.kind, ContactKind::point);
+  EXPECT_TRUE(on.normal_oriented);
+  EXPECT_EQ(on.normal[2].lo, 1.0);
+  EXPECT_EQ(on.normal[2].hi, 1.0);
+  EXPECT_EQ(on.parameter_count, 0);
   const PointPointQuery pp = scene.point_point_query(res.contacts[1].pair);
   EXPECT_EQ(pp.q_t0, Eigen::Vector3d(0.5, 0.5, 1));
   EXPECT_LE(res.contacts[1].toi_lo, 1.0);  // both points end at (0.25, -0.5, 0)

@@ -1704,11 +1704,13 @@ ContactGeometry Scene::contact_geometry(const SceneContact& contact,
   r.toi_lo = contact.toi_lo;
   r.toi_hi = contact.toi_hi;
   r.starts_within = contact.starts_within;
-  if (pair.type == QueryType::point_plane)
-    throw std::invalid_argument(
-        "exactccd: contact_geometry of a point-plane pair: not available yet (the contact "
-        "normal is the plane's normal, towards the side the point came from)");
   const bool rigid = is_rigid(pair.first_mesh) || is_rigid(pair.second_mesh);
+  if (pair.type == QueryType::point_plane) {
+    if (!rigid) return exactccd::contact_geometry(point_plane_query(pair), r, min_separation);
+    RigidCcdResult rr;
+    rr.ccd = r;
+    return exactccd::contact_geometry(rigid_point_plane_query(pair), rr, min_separation);
+  }
   if (rigid) {
     RigidCcdResult rr;
     rr.ccd = r;

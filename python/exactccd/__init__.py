@@ -348,13 +348,17 @@ _POINT_PLANE_ROWS = ("p_t0", "origin_t0", "normal_t0", "p_t1", "origin_t1", "nor
 
 
 def point_plane_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
-                    mode: str = "filtered", min_separation: float = 0.0) -> CcdResult:
+                    mode: str = "filtered", min_separation: float = 0.0,
+                    contact: bool = False) -> CcdResult:
     """Point p against the plane through `origin` with normal `normal`, each moving linearly,
     over [0, t_max]: contact when p(t) is on the plane {x : (x - origin(t)) . normal(t) = 0}
     (with min_separation delta: within distance delta of it).
 
     point_plane_ccd(p_t0, origin_t0, normal_t0, p_t1, origin_t1, normal_t1) with 3-vectors, or
     one (6, 3) array; a static plane repeats origin and normal. Options as vertex_face_ccd.
+    contact=True: a colliding result's `contact` is the certified contact geometry at t*
+    (no parameters; `point` the point at t*, with min_separation its closest point on the plane;
+    `normal` the plane's unit normal towards the side the point came from).
     Raises ValueError for non-finite coordinates, a zero normal, or options outside their
     domain.
     """
@@ -365,8 +369,17 @@ def point_plane_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
     else:
         raise TypeError(f"point_plane_ccd(): expected the 6 points {', '.join(_POINT_PLANE_ROWS)} "
                         f"or one (6, 3) array, got {len(points)} arguments")
-    return _exactccd._point_plane_ccd(
-        rows, *_options("point_plane_ccd", t_max, toi_width, mode, min_separation))
+    options = _options("point_plane_ccd", t_max, toi_width, mode, min_separation)
+    result = _exactccd._point_plane_ccd(rows, *options)
+    if contact:
+        if _exactccd._mode_name(options[2]) == "float_only":
+            raise ValueError("point_plane_ccd(): contact=True needs a certified mode "
+                             "(\"filtered\" or \"exact\"): float_only's time of impact is not an "
+                             "enclosure")
+        if result.collides:
+            result.__dict__["contact"] = _exactccd._point_plane_contact_geometry(
+                rows, result, options[3])
+    return result
 
 
 def point_plane_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,

@@ -88,6 +88,16 @@ void bind_ccd(py::module_& m) {
                                 result, min_separation);
       },
       py::arg("points"), py::arg("type"), py::arg("result"), py::arg("min_separation") = 0.0);
+  m.def(
+      "_point_plane_contact_geometry",
+      [](const py::handle& points, const CcdResult& result, double min_separation) {
+        const DoubleArray array = as_double_array(points, {6, 3}, "the query's points");
+        const double* d = array.data();
+        return contact_geometry(PointPlaneQuery{row_of(d, 0), row_of(d, 1), row_of(d, 2),
+                                                row_of(d, 3), row_of(d, 4), row_of(d, 5)},
+                                result, min_separation);
+      },
+      py::arg("points"), py::arg("result"), py::arg("min_separation") = 0.0);
 
   py::class_<CcdResult>(m, "CcdResult",
                         "The result of one query: collides, [toi_lo, toi_hi] (the certified "

@@ -108,3 +108,24 @@ def test_batch_equals_single_calls():
         bad[1, 2] = 0
         bad[1, 5] = 0
         exactccd.point_plane_ccd_batch(bad)
+
+
+def test_contact_geometry_on_request():
+    # A point falling from above onto the floor z = 0 (normal 3z): the point at t* = 1/2 and the
+    # unit normal +z; from below, -z; float_only refuses contact=True.
+    r = exactccd.point_plane_ccd([0.25, 0.5, 1.0], [0, 0, 0], [0, 0, 3],
+                                 [0.25, 0.5, -1.0], [0, 0, 0], [0, 0, 3], contact=True)
+    assert r.collides and r.toi_lo == 0.5
+    g = r.contact
+    assert g.kind == "point" and g.normal_oriented
+    assert g.parameters.shape == (0, 2)
+    assert np.array_equal(g.normal[2], [1.0, 1.0])
+    assert (g.point[:, 0] <= [0.25, 0.5, 0.0]).all() and ([0.25, 0.5, 0.0] <= g.point[:, 1]).all()
+    up = exactccd.point_plane_ccd([0, 0, -1.0], [0, 0, 0], [0, 0, 3],
+                                  [0, 0, 1.0], [0, 0, 0], [0, 0, 3], contact=True)
+    assert np.array_equal(up.contact.normal[2], [-1.0, -1.0])
+    assert exactccd.point_plane_ccd([0, 0, 1.0], [0, 0, 0], [0, 0, 3],
+                                    [0, 0, 2.0], [0, 0, 0], [0, 0, 3], contact=True).contact is None
+    with pytest.raises(ValueError, match="certified mode"):
+        exactccd.point_plane_ccd([0, 0, -1.0], [0, 0, 0], [0, 0, 3],
+                                 [0, 0, 1.0], [0, 0, 0], [0, 0, 3], contact=True, mode="float_only")

@@ -413,8 +413,11 @@ def test_a_rod_through_a_point_set_on_a_floor():
     assert (geometry.point[:, 0] <= [0.5, 0.0, 0.5]).all()  # an enclosure [lo, hi] per axis
     assert ([0.5, 0.0, 0.5] <= geometry.point[:, 1]).all()
     pl = next(c for c in result.contacts if c.pair.type == "point-plane")
-    with pytest.raises(ValueError, match="point-plane"):
-        scene.contact_geometry(pl)
+    plane_geometry = scene.contact_geometry(pl)  # the floor's unit normal, from above
+    assert plane_geometry.kind == "point"
+    assert plane_geometry.normal_oriented
+    assert (plane_geometry.normal[:, 0] <= [0, 0, 1]).all()
+    assert ([0, 0, 1] <= plane_geometry.normal[:, 1]).all()
     assert np.array_equal(scene.point_plane_query(pl.pair),
                           [rod_start[0], [0, 0, 0], [0, 0, 1], rod_end[0], [0, 0, 0], [0, 0, 1]])
     # A point set against itself: point-point pairs.

@@ -120,6 +120,35 @@ EXACTCCD_API ContactGeometry contact_geometry(const EdgeEdgeQuery& query,
                                               const CcdResult& result,
                                               double min_separation = 0.0);
 
+/// The contact geometry of a point against a plane at t* (point_plane_ccd): no parameters
+/// (parameter_count 0); `point` the point at t* (with min_separation delta > 0: its closest
+/// point on the plane); `normal` the plane's unit normal at t*, pointing towards the side the
+/// point came from (the sign of (p - origin) . normal at t = 0, exact: the point is off the
+/// plane, or more than delta from it, on all of [0, t*)). Kind `point`; `at_start` when
+/// t* = 0 (the unoriented normal along `normal`); `unresolved` when the normal's length is not
+/// certainly positive over the enclosure (a turning normal through zero). No scaling: extreme
+/// magnitudes may leave enclosures wide.
+/// \param query the query that was decided.
+/// \param result its certified answer (point_plane_ccd).
+/// \param min_separation the delta of that answer (0: contact).
+/// \return the enclosures at t*.
+/// \throws std::invalid_argument for a non-finite coordinate, a negative or non-finite delta, or
+///         when `result` does not collide or its enclosure is not in [0, 1].
+EXACTCCD_API ContactGeometry contact_geometry(const PointPlaneQuery& query,
+                                              const CcdResult& result,
+                                              double min_separation = 0.0);
+
+/// The contact geometry of a rigid body's point against a static plane at s* (as for the linear
+/// point-plane query, with the point on its rigid path).
+/// \param query the rigid query that was decided.
+/// \param result its certified answer (point_plane_ccd of the rigid query).
+/// \param min_separation the delta of that answer (0: contact).
+/// \return the enclosures at s*.
+/// \throws std::invalid_argument as for the linear point-plane query.
+EXACTCCD_API ContactGeometry contact_geometry(const RigidPointPlaneQuery& query,
+                                              const RigidCcdResult& result,
+                                              double min_separation = 0.0);
+
 /// The contact geometry of a rigid vertex-face query at the exact earliest contact parameter s*
 /// that `result` encloses (in s, result.ccd): as for linear motion, with the positions of the
 /// rigid motion (or a side's straight lines) at s*; the normal points to the side the vertex

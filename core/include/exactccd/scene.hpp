@@ -451,7 +451,7 @@ class EXACTCCD_API Scene {
   /// The certified contact geometry of a contact of this scene (contact_geometry of its pair's
   /// query, the rigid one when a rigid body takes part, at the contact's enclosure of t*, in s
   /// for rigid pairs; a point-edge or point-point pair as the edge-edge query of its
-  /// zero-length segments; not yet for point-plane pairs: std::invalid_argument). `min_separation`: the SceneOptions::min_separation the contact was found
+  /// zero-length segments; a point-plane pair as its point-plane query). `min_separation`: the SceneOptions::min_separation the contact was found
   /// with (the closest points' geometry when > 0).
   /// \param contact a contact of this scene.
   /// \param min_separation the delta of the call that found it (0: contact).
