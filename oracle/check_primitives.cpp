@@ -4,13 +4,12 @@
 
 #include "exact/arithmetic/rational.hpp"
 #include "exactccd/ccd.hpp"
+#include "corpus/point_families.hpp"
 #include "oracle/check.hpp"
 
 namespace exactccd::oracle {
 
 namespace {
-
-Eigen::Vector2d flat(const Eigen::Vector3d& x) { return {x.x(), x.y()}; }
 
 /// The edge-edge query that a point-edge or point-point query is (proofs/api_reductions.md,
 /// point-primitives): each point the zero-length segment [p, p], rows copied.
@@ -47,27 +46,11 @@ CcdResult decide(const PrimitiveQueryFile& file, const PrimitiveQueryRecord& r,
   }
   const auto start = std::chrono::steady_clock::now();
   CcdResult result;
-  switch (file.kind) {
-    case PrimitiveKind::point_edge:
-      result = point_edge_ccd({x[0], x[1], x[2], x[3], x[4], x[5]}, options);
-      break;
-    case PrimitiveKind::point_edge_2d:
-      result = point_edge_ccd_2d(
-          {flat(x[0]), flat(x[1]), flat(x[2]), flat(x[3]), flat(x[4]), flat(x[5])}, options);
-      break;
-    case PrimitiveKind::point_point:
-      result = point_point_ccd({x[0], x[1], x[2], x[3]}, options);
-      break;
-    case PrimitiveKind::point_point_2d:
-      result = point_point_ccd_2d({flat(x[0]), flat(x[1]), flat(x[2]), flat(x[3])}, options);
-      break;
-    case PrimitiveKind::point_plane:
-      try {
-        result = point_plane_ccd({x[0], x[1], x[2], x[3], x[4], x[5]}, options);
-      } catch (const std::invalid_argument& e) {  // a zero normal: the file's fault, at its line
-        throw InputError(file.path, r.first_line, e.what());
-      }
-      break;
+  try {
+    result = families::decide_point_query(file.kind, x, options);
+  } catch (const std::invalid_argument& e) {  // a zero normal: the file's fault, at its line
+    if (file.kind != PrimitiveKind::point_plane) throw;
+    throw InputError(file.path, r.first_line, e.what());
   }
   *seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -139,5 +139,37 @@ TEST_F(CliTest, BenchTimesThePointKindsAsTheirEdgeEdgeQueries) {
                    {"pl.csv:", "grade and bench do not take them yet"});
 }
 
+TEST_F(CliTest, GenerateWritesThePointKindsFamiliesThatCheckAgrees) {
+  for (const char* type : {"pe", "pe2d", "pp", "pp2d", "pl"}) {
+    SCOPED_TRACE(type);
+    const fs::path out = dir_ / (std::string("families_") + type);
+    const RunResult r =
+        run({"generate", "--type", type, "--per-family", "8", "--out", out.string()});
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::size_t files = 0;
+    for (const auto& entry : fs::directory_iterator(out)) {
+      ++files;
+      // The truth column (the exact verdicts) agrees with the filtered path: exit status 0.
+      const RunResult c = run({"check", "--type", type, entry.path().string()});
+      EXPECT_EQ(c.status, 0) << entry.path() << c.out << c.err;
+    }
+    EXPECT_GE(files, 4u);
+    // Nothing is overwritten without --force; then it is.
+    const RunResult again =
+        run({"generate", "--type", type, "--per-family", "8", "--out", out.string()});
+    EXPECT_EQ(again.status, 2) << again.err;
+    EXPECT_EQ(run({"generate", "--type", type, "--per-family", "8", "--out", out.string(),
+                   "--force"}).status, 0);
+  }
+  const RunResult unknown = run({"generate", "--type", "pe", "--families", "vf_interior",
+                                 "--out", (dir_ / "x").string()});
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("pe_through_endpoint"), std::string::npos) << unknown.err;
+  const RunResult separation = run({"generate", "--type", "pl", "--min-separation", "0.5",
+                                    "--out", (dir_ / "y").string()});
+  EXPECT_EQ(separation.status, 2);
+  EXPECT_NE(separation.err.find("not with --type"), std::string::npos) << separation.err;
+}
+
 }  // namespace
 }  // namespace cli_test

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "corpus/corpus_writer.hpp"
+#include "corpus/point_families.hpp"
 #include "oracle/common.hpp"
 #include "oracle/output_file.hpp"
 
@@ -80,6 +81,61 @@ void write_corpus_files(const families::Corpus& corpus, const fs::path& root,
   warn_files_left_in_place(left, root.string());
 }
 
+// --type KIND: the point kind's families, DIR/<family>.csv each (the kind's file form, truth
+// from the exact path), every target checked before the first is written.
+int run_generate_points(const GenerateOptions& options, PrimitiveKind kind) {
+  if (options.min_separation)
+    throw UsageError("--min-separation: not with --type (the point kinds' families are of "
+                     "contact)");
+  std::vector<families::PointFamily> all =
+      families::generate_point_families(kind, options.seed, options.per_family);
+  std::vector<families::PointFamily> chosen;
+  for (const std::string& name : options.families)
+    if (std::none_of(all.begin(), all.end(),
+                     [&](const families::PointFamily& f) { return f.name == name; })) {
+      std::string names;
+      for (const families::PointFamily& f : all) names += (names.empty() ? "" : ", ") + f.name;
+      throw UsageError("--families: unknown family '" + name + "' of --type " +
+                       to_string(kind) + " (" + names + ")");
+    }
+  for (families::PointFamily& f : all)
+    if (options.families.empty() ||
+        std::find(options.families.begin(), options.families.end(), f.name) !=
+            options.families.end())
+      chosen.push_back(std::move(f));
+  if (options.out_dir.empty()) throw UsageError("--out: the folder name is empty");
+  const fs::path root(options.out_dir);
+  const Overwrite overwrite = options.force ? Overwrite::replace : Overwrite::refuse;
+  check_output_folder(root);
+  for (const families::PointFamily& f : chosen) {
+    std::error_code error;
+    const fs::path path = root / (f.name + ".csv");
+    if (fs::exists(path, error)) check_output_path(path.string(), overwrite, "--out");
+  }
+  std::size_t mismatches = 0;
+  std::printf("seed %llu, %d queries per family, --type %s (exactccd check --type %s FILE)\n",
+              static_cast<unsigned long long>(options.seed), options.per_family, to_string(kind),
+              to_string(kind));
+  std::printf("%-28s %8s %11s  %s\n", "family", "queries", "collisions", "construction");
+  for (const families::PointFamily& f : chosen) {
+    write_file_atomically((root / (f.name + ".csv")).string(), families::point_family_csv(f),
+                          overwrite, "--out");
+    std::size_t collisions = 0;
+    for (const CcdResult& r : f.exact) collisions += r.collides;
+    std::printf("%-28s %8zu %11zu  %s (%s)\n", f.name.c_str(), f.members.size(), collisions,
+                f.what.c_str(), f.collides ? "collides" : "misses");
+    for (const std::string& line : families::point_claim_mismatches(f)) {
+      std::cerr << "exactccd: construction mismatch: " << line << '\n';
+      ++mismatches;
+    }
+  }
+  if (mismatches > 0) {
+    std::printf("%zu members contradict their construction (listed on stderr)\n", mismatches);
+    return kExitDisagree;
+  }
+  return kExitAgree;
+}
+
 }  // namespace
 
 int run_generate(const GenerateOptions& options) {
@@ -87,6 +143,7 @@ int run_generate(const GenerateOptions& options) {
     throw UsageError("--per-family must lie in [" + std::to_string(families::kMinPerFamily) + ", " +
                      std::to_string(families::kMaxPerFamily) + "], got " +
                      std::to_string(options.per_family));
+  if (options.primitive) return run_generate_points(options, *options.primitive);
   if (options.min_separation) {
     const std::string problem = families::min_separation_delta_problem(*options.min_separation);
     if (!problem.empty())

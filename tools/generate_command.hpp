@@ -4,6 +4,8 @@
 // truth, TOI sidecars and a manifest.
 #pragma once
 
+#include "exactccd/query_file.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +25,9 @@ struct GenerateOptions {
   /// --min-separation: the minimum-separation families (min_separation_families.hpp) for this
   /// delta instead of the degenerate families.
   std::optional<double> min_separation;
+  /// --type: the degenerate families of this point kind (point_families.hpp) instead, one file
+  /// of the kind per family, DIR/<family>.csv.
+  std::optional<PrimitiveKind> primitive;
 };
 
 /// Runs the subcommand: 0 when every base-family member's exact verdict and TOI match its

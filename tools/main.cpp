@@ -339,6 +339,13 @@ int main(int argc, char** argv) {
       ->add_option("--families", generate_options.families,
                    "Comma-separated family names (default: all)")
       ->delimiter(',');
+  std::string generate_type;
+  generate
+      ->add_option("--type", generate_type,
+                   "Write the degenerate families of a point kind instead, DIR/<family>.csv "
+                   "each in the kind's file form (check them with exactccd check --type KIND): "
+                   "pe, pe2d, pp, pp2d or pl")
+      ->check(CLI::IsMember({"pe", "pe2d", "pp", "pp2d", "pl"}));
   double generate_min_separation = 0.0;
   CLI::Option* generate_min_separation_option =
       generate
@@ -468,6 +475,8 @@ int main(int argc, char** argv) {
     if (generate->parsed()) {
       if (generate_min_separation_option->count() > 0)
         generate_options.min_separation = generate_min_separation;
+      if (!generate_type.empty())
+        generate_options.primitive = exactccd::primitive_kind_from_name(generate_type);
       return run_generate(generate_options);
     }
     grade_options.type = parse_type_name(grade_type);
