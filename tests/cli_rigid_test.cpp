@@ -137,6 +137,54 @@ TEST_F(CliRigid, CubeTurnsIntoTheWallAtTwoThirds) {
   EXPECT_NE(text.out.find("first contact in step 1"), std::string::npos);
 }
 
+TEST_F(CliRigid, CubeTipsOntoAFloorPlaneAtTwoThirds) {
+  const RunResult r =
+      run_bounded({"rigid", "--json", (kData / "cube_tips_onto_floor.json").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = parse_json(r);
+  EXPECT_EQ(j["bodies"][1]["kind"], "plane");
+  const json& c = j["steps"][0]["contact"];
+  // The corners (5, 0, 0) and (5, 5, 0) reach z = -3 at s = 2/3 (tan(theta / 2) = 1/3): the
+  // tightest pair of doubles, the earlier vertex of the two in pair order.
+  const double lo = c["s_lo"], hi = c["s_hi"];
+  EXPECT_TRUE(encloses(lo, mpq_class(2, 3), hi)) << lo << " " << hi;
+  EXPECT_EQ(std::nextafter(lo, 1.0), hi);
+  const long double t = std::atan(1.0L / 3) / std::atan(0.5L);
+  EXPECT_LE(c["time_lo"].get<double>(), t + 1e-15L);
+  EXPECT_GE(c["time_hi"].get<double>(), t - 1e-15L);
+  EXPECT_EQ(c["type"], "point-plane");
+  EXPECT_EQ(c["first"]["body"], 0);
+  EXPECT_EQ(c["second"]["body"], 1);
+  EXPECT_EQ(c["second"]["name"], "floor");
+  EXPECT_EQ(c["second"]["plane"], 0);
+  const int vertex = c["first"]["vertex"];
+  Positions x;
+  Triangles triangles;
+  cube(x, triangles);
+  EXPECT_EQ(x(vertex, 0), 5.0);  // (5, 0, 0) or (5, 5, 0)
+  EXPECT_EQ(x(vertex, 2), 0.0);
+  const RunResult text = run_bounded({"rigid", (kData / "cube_tips_onto_floor.json").string()});
+  EXPECT_NE(text.out.find("point-plane, vertex " + std::to_string(vertex) +
+                          " of body 0 'cube' against the plane of body 1 'floor'"),
+            std::string::npos)
+      << text.out;
+  // A plane is an origin and a non-zero normal, nothing else.
+  json s = json::parse(std::ifstream(kData / "cube_tips_onto_floor.json"));
+  s["bodies"][0]["obj"] = (kData / "cube.obj").string();
+  json bad = s;
+  bad["bodies"][1]["normal"] = {0, 0, 0};
+  expect_rejected(bad, {"bodies[1].normal", "zero"});
+  bad = s;
+  bad["bodies"][1]["positions"] = {{0, 0, 0}};
+  expect_rejected(bad, {"bodies[1].positions", "only \"origin\" and \"normal\""});
+  bad = s;
+  bad["bodies"][1].erase("origin");
+  expect_rejected(bad, {"bodies[1]", "missing key \"origin\""});
+  bad = s;
+  bad["bodies"][0]["normal"] = {0, 0, 1};
+  expect_rejected(bad, {"bodies[0].normal", "only a plane"});
+}
+
 TEST_F(CliRigid, TheSameTurnClearOfTheWall) {
   const RunResult r = run_bounded({"rigid", (kData / "cube_turns_clear_of_wall.json").string()});
   EXPECT_EQ(r.status, 0) << r.err;

@@ -52,7 +52,9 @@ std::pair<Feature, Feature> features_of(const Scene& scene, const ScenePair& p) 
   a.index = p.first_index;
   b.body = p.second_mesh;
   b.index = p.second_index;
-  if (p.type == QueryType::vertex_face) {
+  if (p.type == QueryType::point_plane) {
+    b.primitive = "plane";
+  } else if (p.type == QueryType::vertex_face) {
     b.primitive = "triangle";
     const Triangles& t = scene.triangles(p.second_mesh);
     for (int k = 0; k < 3; ++k) b.vertices.push_back(t(p.second_index, k));
@@ -67,7 +69,10 @@ std::pair<Feature, Feature> features_of(const Scene& scene, const ScenePair& p) 
 }
 
 std::string text_of(const Feature& f, const RigidSceneFile& file) {
-  std::string s = std::string(f.primitive) + " " + std::to_string(f.index);
+  // A plane is one primitive: no index.
+  std::string s = std::string(f.primitive) == "plane"
+                      ? std::string("the plane")
+                      : std::string(f.primitive) + " " + std::to_string(f.index);
   if (!f.vertices.empty()) {
     s += " (vertices";
     for (std::int32_t v : f.vertices) s += " " + std::to_string(v);
@@ -189,6 +194,7 @@ int run_rigid(const RigidOptions& options) {
         case BodyKind::rigid: scene.add_rigid_body(b.positions, b.triangles); break;
         case BodyKind::fixed: scene.add_static_mesh(b.positions, b.triangles); break;
         case BodyKind::deformable: scene.add_mesh(b.positions, b.triangles); break;
+        case BodyKind::plane: scene.add_plane(b.origin, b.normal); break;
       }
     } catch (const std::invalid_argument& e) {  // validated already; kept as a bad-input error
       throw InputError(options.scene_path, 0, "bodies[" + std::to_string(i) + "]: " + e.what());

@@ -31,6 +31,7 @@ const char* to_string(BodyKind kind) {
     case BodyKind::rigid: return "rigid";
     case BodyKind::fixed: return "static";
     case BodyKind::deformable: return "deformable";
+    case BodyKind::plane: return "plane";
   }
   return "unknown";
 }
@@ -197,7 +198,7 @@ class Reader {
                  std::size_t index) const {
     expect(v.is_object(), v, where, "a body object");
     only_keys(v, where, {"name", "kind", "obj", "positions", "triangles", "end_positions",
-                         "motion", "steps", "comment"});
+                         "motion", "steps", "origin", "normal", "comment"});
     SceneBody b;
     b.name = "body " + std::to_string(index);
     if (const auto it = v.find("name"); it != v.end()) {
@@ -205,7 +206,8 @@ class Reader {
       b.name = it->get<std::string>();
     }
     const Json& kind = require(v, where, "kind");
-    expect(kind.is_string(), kind, where + ".kind", "\"rigid\", \"static\" or \"deformable\"");
+    expect(kind.is_string(), kind, where + ".kind",
+           "\"rigid\", \"static\", \"deformable\" or \"plane\"");
     const std::string k = kind.get<std::string>();
     if (k == "rigid")
       b.kind = BodyKind::rigid;
@@ -213,9 +215,15 @@ class Reader {
       b.kind = BodyKind::fixed;
     else if (k == "deformable")
       b.kind = BodyKind::deformable;
+    else if (k == "plane")
+      return plane(v, where, std::move(b));
     else
-      fail(where + ".kind", "expected \"rigid\", \"static\" or \"deformable\", found " +
+      fail(where + ".kind", "expected \"rigid\", \"static\", \"deformable\" or \"plane\", found " +
                                 quote_for_message(k));
+    for (const char* key : {"origin", "normal"})
+      if (v.contains(key))
+        fail(where + "." + key, std::string("only a plane has an ") + key + " (a " +
+                                    to_string(b.kind) + " body)");
     // The mesh: an OBJ file, or inline arrays.
     const bool obj = v.contains("obj");
     if (obj && (v.contains("positions") || v.contains("triangles")))
@@ -257,6 +265,20 @@ class Reader {
       for (std::size_t s = 0; s < steps.size(); ++s)
         b.steps.push_back(motion(steps[s], where + ".steps[" + std::to_string(s) + "]"));
     }
+    return b;
+  }
+
+  /// A static plane (Scene::add_plane): "origin" and "normal" (non-zero), nothing else.
+  SceneBody plane(const Json& v, const std::string& where, SceneBody b) const {
+    b.kind = BodyKind::plane;
+    for (const char* key : {"obj", "positions", "triangles", "end_positions", "motion", "steps"})
+      if (v.contains(key))
+        fail(where + "." + key, "a plane has only \"origin\" and \"normal\"");
+    b.origin = vector3(require(v, where, "origin"), where + ".origin");
+    b.normal = vector3(require(v, where, "normal"), where + ".normal");
+    if (b.normal.isZero(0)) fail(where + ".normal", "the normal is zero: no plane");
+    b.positions = Positions(0, 3);
+    b.end_positions = b.positions;
     return b;
   }
 

@@ -1,6 +1,6 @@
 // The scene files of `exactccd rigid` (the format: docs/rigid_scene_format.md): bodies as OBJ
-// files or inline arrays, each rigid, static or deformable, rigid bodies with one motion or a
-// list of steps; options t_max, toi_width, mode, min_separation.
+// files or inline arrays, each rigid, static or deformable, or a static plane (a floor), rigid
+// bodies with one motion or a list of steps; options t_max, toi_width, mode, min_separation.
 #pragma once
 
 #include <cstddef>
@@ -13,9 +13,9 @@
 
 namespace exactccd::cli {
 
-enum class BodyKind { rigid, fixed, deformable };
+enum class BodyKind { rigid, fixed, deformable, plane };
 
-/// "rigid", "static", "deformable".
+/// "rigid", "static", "deformable", "plane".
 const char* to_string(BodyKind kind);
 
 struct SceneBody {
@@ -28,6 +28,8 @@ struct SceneBody {
   Positions end_positions;
   /// A rigid body's motions, one per step (empty: at rest).
   std::vector<RigidMotion> steps;
+  /// A plane's point and normal (kind plane: Scene::add_plane; no positions).
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
 };
 
 struct RigidSceneFile {
