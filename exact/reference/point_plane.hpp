@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <gmpxx.h>
 
 #include "exactccd/types.hpp"
 
@@ -18,5 +19,10 @@ using PointPlanePoints = std::array<Eigen::Vector3d, 6>;
 /// The exact answer over [0, options.t_max] (options.min_separation: delta; the tightest TOI
 /// pair, or options.toi_width), every decision in rational arithmetic.
 CcdResult point_plane_ccd_exact(const PointPlanePoints& x, const CcdOptions& options);
+
+/// Whether the first contact (first time within min_separation) t* lies strictly before the
+/// rational time t (t in [0, 1]), exactly: the grading of a reported time of impact.
+bool point_plane_contact_before(const PointPlanePoints& x, const mpq_class& t,
+                                double min_separation);
 
 }  // namespace exactccd::exact
