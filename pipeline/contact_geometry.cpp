@@ -211,8 +211,9 @@ ContactGeometry separation(const Query& query, const CcdResult& r) {
     return contact::vertex_face_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
                                                 r.starts_within, q.e);
   else
-    return contact::edge_edge_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
-                                              r.starts_within, q.e);
+    return contact::edge_edge_separation_from(
+        at_row(0), at_row(1), at_row(2), at_row(3), r.starts_within, q.e,
+        q.x[0] == q.x[1] && q.x[4] == q.x[5], q.x[2] == q.x[3] && q.x[6] == q.x[7]);
 }
 
 }  // namespace

@@ -19,6 +19,17 @@ namespace {
 using predicates::Interval;
 namespace contact = pipeline::contact;
 
+/// Whether edge `side` of an edge-edge query is a point throughout: equal start rows, moved by
+/// one rigid motion or to equal end rows.
+bool is_point(const predicates::DoubleRigidQuery& q, int side) {
+  const int i = 2 * side;
+  const auto same = [](const predicates::Vec3<double>& a, const predicates::Vec3<double>& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+  };
+  const predicates::DoubleSide& m = q.side[side];
+  return same(q.start[i], q.start[i + 1]) && (m.rigid || same(m.end[0], m.end[1]));
+}
+
 /// The enclosures of a rigid query (vertex-face or edge-edge by q.type).
 ContactGeometry rigid_geometry(const predicates::DoubleRigidQuery& q, const CcdResult& r,
                                double min_separation) {
@@ -32,7 +43,8 @@ ContactGeometry rigid_geometry(const predicates::DoubleRigidQuery& q, const CcdR
     return vertex_face ? contact::vertex_face_separation_from(x[0], x[1], x[2], x[3],
                                                               r.starts_within, 0)
                        : contact::edge_edge_separation_from(x[0], x[1], x[2], x[3],
-                                                            r.starts_within, 0);
+                                                            r.starts_within, 0, is_point(q, 0),
+                                                            is_point(q, 1));
   const auto side_before = [&] {
     const auto& p = q.start;
     const auto g =

@@ -91,9 +91,9 @@ struct ContactGeometry {
 /// With min_separation delta > 0 (the delta `result` was decided with) it encloses the closest
 /// points at t*, where the distance is delta: `parameters` the barycentric coordinates of the
 /// closest point on the triangle, `point` that point, `normal` the unit direction from it
-/// towards the vertex (the triangle's normal towards the vertex's side); resolved (`point`) when
-/// the closest point lies certainly inside the triangle, otherwise `unresolved` (a closest point
-/// on a side or a corner: not yet resolved).
+/// towards the vertex (inside the triangle: its normal towards the vertex's side); resolved
+/// (`point`) when the closest point's region (inside, on a side, at a corner) is certain over
+/// the TOI enclosure, otherwise `unresolved`.
 /// \param query the query that was decided.
 /// \param result its certified answer (vertex_face_ccd, any toi_width).
 /// \param min_separation the delta of that answer (0: contact).
@@ -108,8 +108,9 @@ EXACTCCD_API ContactGeometry contact_geometry(const VertexFaceQuery& query,
 /// are points: point-edge and point-point contact); as for vertex-face.
 /// With min_separation delta > 0: the closest points' parameters on each edge, `point` the
 /// closest point on edge b, `normal` the unit direction from it towards edge a (along the edges'
-/// cross product); resolved when both closest points lie certainly inside their edges, otherwise
-/// `unresolved` (at an end, parallel edges, points: not yet resolved).
+/// cross product when both are inside their edges); resolved when the closest pair (inside both,
+/// an end against an edge, two ends, a point against a segment or a point) is certain over the
+/// TOI enclosure, otherwise `unresolved` (parallel edges among others).
 /// \param query the query that was decided.
 /// \param result its certified answer (edge_edge_ccd, point_edge_ccd, point_point_ccd or their 2D
 ///        forms embedded in z = 0).
