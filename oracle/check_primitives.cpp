@@ -61,8 +61,7 @@ CcdResult decide(const PrimitiveQueryFile& file, const PrimitiveQueryRecord& r,
 QueryFile as_edge_edge_file(const PrimitiveQueryFile& file) {
   if (file.kind == PrimitiveKind::point_plane)
     throw InputError(file.path, 0,
-                     "point-plane queries (--type pl) are not edge-edge queries: bench does "
-                     "not take them yet");
+                     "point-plane queries (--type pl) are not edge-edge queries");
   QueryFile out{file.path, QueryType::edge_edge, {}};
   out.queries.reserve(file.queries.size());
   for (const PrimitiveQueryRecord& r : file.queries) {

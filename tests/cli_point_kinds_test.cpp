@@ -140,7 +140,7 @@ TEST_F(CliTest, GradeJudgesPointPlaneAnswersAgainstTheExactPath) {
   EXPECT_EQ(j["false_negatives"].get<int>(), 0) << bad.out;
 }
 
-TEST_F(CliTest, BenchTimesThePointKindsAsTheirEdgeEdgeQueries) {
+TEST_F(CliTest, BenchTimesThePointKinds) {
   const fs::path pe = write_file("pe.csv", kPointEdge);
   const RunResult r = run({"bench", "--type", "pe", "--json", "--repetitions", "1", "--modes",
                            "filtered,exact", pe.string()});
@@ -152,8 +152,32 @@ TEST_F(CliTest, BenchTimesThePointKindsAsTheirEdgeEdgeQueries) {
     EXPECT_EQ(result["false_positives"].get<int>(), 0);
     EXPECT_EQ(result["false_negatives"].get<int>(), 0);
   }
-  expect_bad_input(run({"bench", "--type", "pl", write_file("pl.csv", kPointPlane).string()}),
-                   {"pl.csv:", "bench does not take them yet"});
+  // Point-plane files are timed as point_plane_ccd calls, every mode against the truth column.
+  const RunResult pl = run({"bench", "--type", "pl", "--json", "--repetitions", "1", "--modes",
+                            "filtered,exact,float_only",
+                            write_file("pl.csv", kPointPlane).string()});
+  ASSERT_EQ(pl.status, 0) << pl.err;
+  const auto planes = nlohmann::json::parse(pl.out);
+  ASSERT_EQ(planes.size(), 3u) << pl.out;
+  for (const auto& result : planes) {
+    EXPECT_EQ(result["queries"].get<int>(), 3);
+    if (result["mode"] != "float_only") {
+      EXPECT_EQ(result["false_positives"].get<int>(), 0);
+      EXPECT_EQ(result["false_negatives"].get<int>(), 0);
+    }
+  }
+  const RunResult wrong = run({"bench", "--type", "pl", "--repetitions", "1",
+                               write_file("wrong.csv", "0,1,0,1,1,1,0\n0,1,0,1,0,1,0\n"
+                                                       "0,1,0,1,1,1,0\n0,1,0,1,-1,1,0\n"
+                                                       "0,1,0,1,0,1,0\n0,1,0,1,1,1,0\n")
+                                   .string()});
+  EXPECT_EQ(wrong.status, 1) << wrong.out << wrong.err;  // a truth column that is wrong
+  expect_bad_input(run({"bench", "--type", "pl",
+                        write_file("zero.csv", "0,1,0,1,1,1,0\n0,1,0,1,0,1,0\n"
+                                               "0,1,0,1,0,1,0\n0,1,0,1,-1,1,0\n"
+                                               "0,1,0,1,0,1,0\n0,1,0,1,0,1,0\n")
+                            .string()}),
+                   {"zero.csv:1", "zero normal"});
 }
 
 TEST_F(CliTest, GenerateWritesThePointKindsFamiliesThatCheckAgrees) {

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "bench_timing.hpp"
+#include "exact/arithmetic/rational.hpp"
 #include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "oracle/check.hpp"
@@ -35,9 +36,44 @@ struct Dataset {
   std::vector<std::uint8_t> vertex_face_truth;
   std::vector<EdgeEdgeQuery> edge_edge;
   std::vector<std::uint8_t> edge_edge_truth;
+  std::vector<PointPlaneQuery> point_plane;  ///< files of --type pl
+  std::vector<std::uint8_t> point_plane_truth;
 
-  std::size_t size() const { return vertex_face.size() + edge_edge.size(); }
+  std::size_t size() const { return vertex_face.size() + edge_edge.size() + point_plane.size(); }
+  /// Query k of the data set in that order (vertex-face, edge-edge, point-plane), decided.
+  CcdResult decide(std::size_t k, const CcdOptions& options) const {
+    if (k < vertex_face.size()) return vertex_face_ccd(vertex_face[k], options);
+    k -= vertex_face.size();
+    if (k < edge_edge.size()) return edge_edge_ccd(edge_edge[k], options);
+    return point_plane_ccd(point_plane[k - edge_edge.size()], options);
+  }
+  /// Query k's truth column.
+  bool truth(std::size_t k) const {
+    if (k < vertex_face.size()) return vertex_face_truth[k];
+    k -= vertex_face.size();
+    if (k < edge_edge.size()) return edge_edge_truth[k];
+    return point_plane_truth[k - edge_edge.size()];
+  }
 };
+
+/// A point-plane file's queries as doubles (bench times the double API).
+void load_point_plane(const std::string& file, Dataset& d) {
+  const PrimitiveQueryFile input = read_primitive_query_file(file, PrimitiveKind::point_plane);
+  for (const PrimitiveQueryRecord& r : input.queries) {
+    Eigen::Vector3d x[6];
+    for (std::size_t k = 0; k < 6; ++k)
+      if (!exact::to_double_exactly(r.points[k].x, &x[k].x()) ||
+          !exact::to_double_exactly(r.points[k].y, &x[k].y()) ||
+          !exact::to_double_exactly(r.points[k].z, &x[k].z()))
+        throw InputError(file, r.first_line + k,
+                         "a coordinate is not exactly a double: point-plane queries are "
+                         "decided on doubles only");
+    if (x[2].isZero(0) || x[5].isZero(0))
+      throw InputError(file, r.first_line, "a zero normal: no plane");
+    d.point_plane.push_back({x[0], x[1], x[2], x[3], x[4], x[5]});
+    d.point_plane_truth.push_back(r.truth);
+  }
+}
 
 Dataset load_path(const std::string& path, const std::optional<QueryType>& type,
                   const std::optional<PrimitiveKind>& primitive) {
@@ -49,6 +85,12 @@ Dataset load_path(const std::string& path, const std::optional<QueryType>& type,
   const std::vector<std::string> files =
       primitive ? std::vector<std::string>{path} : find_query_files(path);
   std::vector<std::string> empty_files;
+  if (primitive == PrimitiveKind::point_plane) {
+    load_point_plane(path, d);
+    if (d.point_plane.empty()) empty_files.push_back(path);
+    require_some_queries(empty_files, files.size(), d.size());
+    return d;
+  }
   for (const std::string& file : files) {
     const QueryFile input =
         primitive ? as_edge_edge_file(read_primitive_query_file(file, *primitive))
@@ -109,7 +151,7 @@ constexpr int kWorstRetimes = 2;
 /// for that delta (a file's truth column is for contact), and the TOIs the errors are
 /// measured against.
 struct ExactAnswers {
-  std::vector<CcdResult> vertex_face, edge_edge;
+  std::vector<CcdResult> answers;  ///< in the data set's query order (Dataset::decide)
 };
 
 ExactAnswers exact_answers(const Dataset& d, double delta) {
@@ -117,14 +159,9 @@ ExactAnswers exact_answers(const Dataset& d, double delta) {
   options.mode = Mode::exact;
   options.min_separation = delta;
   ExactAnswers a;
-  a.vertex_face.resize(d.vertex_face.size());
-  a.edge_edge.resize(d.edge_edge.size());
-  tbb::parallel_for(std::size_t{0}, d.vertex_face.size(), [&](std::size_t i) {
-    a.vertex_face[i] = vertex_face_ccd(d.vertex_face[i], options);
-  });
-  tbb::parallel_for(std::size_t{0}, d.edge_edge.size(), [&](std::size_t i) {
-    a.edge_edge[i] = edge_edge_ccd(d.edge_edge[i], options);
-  });
+  a.answers.resize(d.size());
+  tbb::parallel_for(std::size_t{0}, d.size(),
+                    [&](std::size_t k) { a.answers[k] = d.decide(k, options); });
   return a;
 }
 
@@ -143,6 +180,8 @@ double dataset_size(const Dataset& d) {
     for (const auto* x : {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1,
                           &q.eb0_t1, &q.eb1_t1})
       add(*x);
+  for (const PointPlaneQuery& q : d.point_plane)  // the points and the planes' origins
+    for (const auto* x : {&q.p_t0, &q.origin_t0, &q.p_t1, &q.origin_t1}) add(*x);
   return d.size() == 0 ? 0.0 : (hi - lo).norm();
 }
 
@@ -181,28 +220,16 @@ Measurement measure(const Dataset& d, Mode mode, double delta, const ExactAnswer
   // One pass timing each query on its own; it also gives the verdicts.
   std::vector<double> per_query;
   per_query.reserve(d.size());
-  for (std::size_t i = 0; i < d.vertex_face.size(); ++i) {
+  for (std::size_t i = 0; i < d.size(); ++i) {
     const auto start = Clock::now();
-    const CcdResult r = vertex_face_ccd(d.vertex_face[i], options);
+    const CcdResult r = d.decide(i, options);
     const auto stop = Clock::now();
     per_query.push_back(nanoseconds(stop - start));
     if (exact) {
-      count_query(m.tally, r, exact->vertex_face[i].collides);
-      compare_toi(r, exact->vertex_face[i]);
+      count_query(m.tally, r, exact->answers[i].collides);
+      compare_toi(r, exact->answers[i]);
     } else {
-      count_query(m.tally, r, d.vertex_face_truth[i]);
-    }
-  }
-  for (std::size_t i = 0; i < d.edge_edge.size(); ++i) {
-    const auto start = Clock::now();
-    const CcdResult r = edge_edge_ccd(d.edge_edge[i], options);
-    const auto stop = Clock::now();
-    per_query.push_back(nanoseconds(stop - start));
-    if (exact) {
-      count_query(m.tally, r, exact->edge_edge[i].collides);
-      compare_toi(r, exact->edge_edge[i]);
-    } else {
-      count_query(m.tally, r, d.edge_edge_truth[i]);
+      count_query(m.tally, r, d.truth(i));
     }
   }
   // The slowest queries timed again, each keeping its fastest call: one interrupt or page fault
@@ -217,10 +244,7 @@ Measurement measure(const Dataset& d, Mode mode, double delta, const ExactAnswer
     double best = per_query[i];
     for (int again = 0; again < kWorstRetimes; ++again) {
       const auto start = Clock::now();
-      const bool collides = i < d.vertex_face.size()
-                                ? vertex_face_ccd(d.vertex_face[i], options).collides
-                                : edge_edge_ccd(d.edge_edge[i - d.vertex_face.size()], options)
-                                      .collides;
+      const bool collides = d.decide(i, options).collides;
       const auto stop = Clock::now();
       g_sink = collides;
       best = std::min(best, nanoseconds(stop - start));
@@ -237,6 +261,8 @@ Measurement measure(const Dataset& d, Mode mode, double delta, const ExactAnswer
     for (const VertexFaceQuery& q : d.vertex_face)
       collisions += vertex_face_ccd(q, options).collides;
     for (const EdgeEdgeQuery& q : d.edge_edge) collisions += edge_edge_ccd(q, options).collides;
+    for (const PointPlaneQuery& q : d.point_plane)
+      collisions += point_plane_ccd(q, options).collides;
     const auto stop = Clock::now();
     g_sink = collisions;
     if (d.size() > 0) per_pass.push_back(nanoseconds(stop - start) / static_cast<double>(d.size()));
@@ -375,9 +401,13 @@ int run_bench(const BenchOptions& options) {
         "repeated %d times, each keeping its fastest)\n",
         options.repetitions, overhead_ns, kWorstCandidates, kWorstRetimes);
     for (const Dataset& d : datasets)
-      std::printf("%s: %zu queries (%zu vertex-face, %zu edge-edge), truth: %s\n",
-                  d.label.c_str(), d.size(), d.vertex_face.size(), d.edge_edge.size(),
-                  d.truth_source.c_str());
+      if (d.point_plane.empty())
+        std::printf("%s: %zu queries (%zu vertex-face, %zu edge-edge), truth: %s\n",
+                    d.label.c_str(), d.size(), d.vertex_face.size(), d.edge_edge.size(),
+                    d.truth_source.c_str());
+      else
+        std::printf("%s: %zu point-plane queries, truth: %s\n", d.label.c_str(), d.size(),
+                    d.truth_source.c_str());
     for (const std::string& note : notes) std::printf("%s\n", note.c_str());
     std::printf("last columns: share of queries decided by each stage\n");
     if (std::any_of(results.begin(), results.end(), [](const Measurement& m) {
