@@ -3,9 +3,12 @@
 // worst, in units of the double spacing at 1: 2^-52), and what it costs (every query decided
 // with the geometry off and on, in one run, medians of the repetitions).
 //   ./build/bench/contact_geometry_bench [--repetitions R] [--full-simulation]
+//       [--min-separation D]   (every query decided within D, the closest points' geometry)
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -27,20 +30,25 @@ struct Query {
   Points p;
 };
 
+/// The minimum separation of the run (0: contact).
+double g_delta = 0.0;
+
 exactccd::CcdResult decide(const Query& q) {
   const auto& p = q.p;
+  exactccd::CcdOptions o;
+  o.min_separation = g_delta;
   if (q.type == exactccd::QueryType::vertex_face)
-    return exactccd::vertex_face_ccd({p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]});
-  return exactccd::edge_edge_ccd({p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]});
+    return exactccd::vertex_face_ccd({p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, o);
+  return exactccd::edge_edge_ccd({p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, o);
 }
 
 exactccd::ContactGeometry geometry(const Query& q, const exactccd::CcdResult& r) {
   const auto& p = q.p;
   if (q.type == exactccd::QueryType::vertex_face)
     return exactccd::contact_geometry(
-        exactccd::VertexFaceQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, r);
+        exactccd::VertexFaceQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, r, g_delta);
   return exactccd::contact_geometry(
-      exactccd::EdgeEdgeQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, r);
+      exactccd::EdgeEdgeQuery{p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]}, r, g_delta);
 }
 
 std::vector<Query> load(const std::string& path) {
@@ -136,11 +144,19 @@ int main(int argc, char** argv) {
       repetitions = std::max(1, std::atoi(argv[++i]));
     } else if (!std::strcmp(argv[i], "--full-simulation")) {
       full = true;
+    } else if (!std::strcmp(argv[i], "--min-separation") && i + 1 < argc) {
+      g_delta = std::strtod(argv[++i], nullptr);
+      if (!(g_delta >= 0.0) || !std::isfinite(g_delta)) {
+        std::fprintf(stderr, "--min-separation: a finite number >= 0\n");
+        return 2;
+      }
     } else {
-      std::fprintf(stderr, "usage: contact_geometry_bench [--repetitions R] [--full-simulation]\n");
+      std::fprintf(stderr, "usage: contact_geometry_bench [--repetitions R] [--full-simulation] "
+                           "[--min-separation D]\n");
       return 2;
     }
   }
+  if (g_delta > 0) std::printf("minimum separation %g: the closest points' geometry\n", g_delta);
   const std::string sample = EXACTCCD_SAMPLE_QUERIES;
   const std::string data = sample.substr(0, sample.rfind('/') + 1);
   std::vector<Query> simulation;
