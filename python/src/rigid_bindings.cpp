@@ -53,6 +53,9 @@ RigidCcdResult decide(const RigidVertexFaceQuery& q, const CcdOptions& o) {
 RigidCcdResult decide(const RigidEdgeEdgeQuery& q, const CcdOptions& o) {
   return edge_edge_ccd(q, o);
 }
+RigidCcdResult decide(const RigidPointPlaneQuery& q, const CcdOptions& o) {
+  return point_plane_ccd(q, o);
+}
 
 /// The result as a Python object, with its contact geometry in `contact` when asked for and it
 /// collides (certified modes and contact only: ValueError otherwise).
@@ -173,22 +176,23 @@ void bind_rigid(py::module_& m) {
       "rigid_point_plane_ccd",
       [](const py::handle& p, const py::handle& motion, const py::handle& origin,
          const py::handle& normal, double t_max, double toi_width, const std::string& mode,
-         double min_separation) {
+         double min_separation, bool contact) {
         if (!py::isinstance<RigidMotion>(motion))
           throw py::type_error("rigid_point_plane_ccd: motion must be an exactccd.RigidMotion");
         const RigidPointPlaneQuery q{vector_of(p, "p"), motion.cast<RigidMotion>(),
                                      vector_of(origin, "origin"), vector_of(normal, "normal")};
         const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
-        py::gil_scoped_release release;
-        return point_plane_ccd(q, options);
+        return with_contact(q, options, contact, "rigid_point_plane_ccd");
       },
       py::arg("p"), py::arg("motion"), py::arg("origin"), py::arg("normal"), py::kw_only(),
       py::arg("t_max") = 1.0, py::arg("toi_width") = 0.0, py::arg("mode") = "filtered",
-      py::arg("min_separation") = 0.0,
+      py::arg("min_separation") = 0.0, py::arg("contact") = false,
       "A point of a rigid body (at p at s = 0, moving with the RigidMotion `motion`) against the "
       "static plane through `origin` with normal `normal` (non-zero): contact when the point is "
       "on the plane, with min_separation delta when within delta of it. mode as "
-      "rigid_vertex_face_ccd. Returns a RigidCcdResult.");
+      "rigid_vertex_face_ccd. Returns a RigidCcdResult; contact=True: a colliding result's "
+      "`contact` is the certified contact geometry at s* (the point, the plane's unit normal "
+      "towards the side the point came from).");
 }
 
 }  // namespace exactccd::python

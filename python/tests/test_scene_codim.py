@@ -536,6 +536,19 @@ def test_rigid_body_falling_on_a_plane():
         assert want, "the body should reach the floor"
         assert [(c.pair.first_index, c.toi_lo, c.toi_hi) for c in got] == want
         assert all(c.pair.first_mesh == body and c.pair.second_mesh == floor for c in got)
+    # The contact geometry on request: the floor's unit normal, from above.
+    hits = [exactccd.rigid_point_plane_ccd(x, motion, [0, 0, 0], [0, 0, 2], contact=True)
+            for x in tri]
+    assert any(r.collides for r in hits)
+    for r in hits:
+        if r.collides:
+            assert r.contact.kind == "point" and r.contact.normal_oriented
+            assert np.array_equal(r.contact.normal[2], [1.0, 1.0])
+        else:
+            assert r.contact is None
+    with pytest.raises(ValueError, match="certified mode"):
+        exactccd.rigid_point_plane_ccd(tri[0], motion, [0, 0, 0], [0, 0, 2], contact=True,
+                                       mode="float_only")
     with pytest.raises(TypeError, match="RigidMotion"):
         exactccd.rigid_point_plane_ccd(tri[0], None, [0, 0, 0], [0, 0, 1])
     with pytest.raises(ValueError, match="normal"):
