@@ -175,8 +175,15 @@ struct PointPlane {
       }
     }
     while (lo < hi) {
-      const double mid = lo + (hi - lo) / 2;  // upward rounding: in [lo, hi]
-      if (mid <= lo || mid >= hi || (o.toi_width > 0.0 && hi - lo <= o.toi_width)) break;
+      if (o.toi_width > 0.0 && hi - lo <= o.toi_width) break;
+      double mid = lo + (hi - lo) / 2;  // upward rounding: in [lo, hi]
+      if (mid <= lo || mid >= hi) {
+        // Rounded onto an end: where the spacing of the doubles changes inside [lo, hi] (a
+        // power of two) the midpoint can round onto hi with doubles still between them. Then
+        // the double just above lo, unless lo and hi are consecutive (the tightest pair).
+        mid = std::nextafter(lo, hi);
+        if (mid >= hi) break;
+      }
       const int s = sign_at(mid);
       if (s == 0) {  // t* is this double
         lo = hi = mid;

@@ -153,5 +153,37 @@ TEST(PointPlane, BadInputIsAClearError) {
   EXPECT_THROW(point_plane_ccd({p, origin, up, p, origin, up}, o), std::invalid_argument);
 }
 
+// Contact times within a few units in the last place of a power of two 2^-k, where the spacing
+// of the doubles halves: the filter's bisection must still end on the tightest pair, the exact
+// path's (a midpoint rounded upwards lands on the upper end while a double is left between
+// them; the fuzzer found it). Planes z = 0 and n = (0, 0, 1), the point from z = a to z = b.
+TEST(PointPlane, TightestPairNextToPowersOfTwo) {
+  std::mt19937_64 rng(test_seed("point_plane_powers_of_two"));
+  std::uniform_int_distribution<int> ulps(-6, 6);
+  int checked = 0;
+  for (int k = 1; k <= 12; ++k)
+    for (int n = 0; n < 60; ++n) {
+      // t* = a / (a - b) near 2^-k: b = a (1 - 2^k), both nudged by a few ulps.
+      double a = 1.0 + ulps(rng) * 0x1p-52;
+      double b = a * (1.0 - std::ldexp(1.0, k));
+      for (int j = ulps(rng); j != 0; j += j > 0 ? -1 : 1)
+        b = std::nextafter(b, j > 0 ? 0.0 : -1e300);
+      const Vector3d o(0, 0, 0), up(0, 0, 1);
+      for (const double t_max : {1.0, 0.3, 0.7, std::ldexp(1.0, -k) * 1.5}) {
+        CcdOptions opt;
+        opt.t_max = std::min(t_max, 1.0);
+        const PointPlaneQuery q{Vector3d(0.5, 0.25, a), o, up, Vector3d(0.25, 0.5, b), o, up};
+        const CcdResult filtered = point_plane_ccd(q, opt);
+        opt.mode = Mode::exact;
+        const CcdResult exact = point_plane_ccd(q, opt);
+        ASSERT_EQ(filtered.collides, exact.collides) << k << " " << n;
+        EXPECT_EQ(filtered.toi_lo, exact.toi_lo) << "k " << k << " a " << a << " b " << b;
+        EXPECT_EQ(filtered.toi_hi, exact.toi_hi) << "k " << k << " a " << a << " b " << b;
+        checked += exact.collides;
+      }
+    }
+  EXPECT_GT(checked, 1000);
+}
+
 }  // namespace
 }  // namespace exactccd::test

@@ -22,6 +22,7 @@
 
 #include "exactccd/ccd.hpp"
 #include "exactccd/contact.hpp"
+#include "exactccd/rigid.hpp"
 #include "exactccd/step.hpp"
 #include "../result_text.hpp"
 
@@ -191,6 +192,36 @@ inline bool check_default_equals_exact(QueryType type, const Points& v, const Cc
                 plane_filtered.starts_within == plane_exact.starts_within,
             "point-plane: default " + describe(plane_filtered) + " != exact " +
                 describe(plane_exact) + " on " + where);
+    if (plane_exact.collides) {  // its contact geometry: certified ranges, no error
+      const ContactGeometry g = contact_geometry(plane, plane_exact);
+      for (const Enclosure& e : g.normal)
+        require(-1.0 <= e.lo && e.lo <= e.hi && e.hi <= 1.0,
+                "point-plane normal outside [-1, 1] on " + where);
+    }
+    // The point of rows 0 turned by the rigid motion (pivot row 4, translation row 5, Cayley
+    // vector row 7) against the static plane through row 1 with normal row 2: the filtered path
+    // equals the exact one (moderate values only: the exact path's cost grows with them).
+    const bool moderate = [&] {
+      for (int i : {0, 1, 2, 4, 5, 7})
+        if (!(v[i].cwiseAbs().maxCoeff() < 1e6)) return false;
+      return true;
+    }();
+    if (moderate) {
+      RigidMotion m;
+      m.pivot = v[4];
+      m.translation = v[5];
+      m.cayley = v[7];
+      const RigidPointPlaneQuery rigid(v[0], m, v[1], v[2]);
+      o.mode = Mode::exact;
+      const RigidCcdResult rigid_exact = point_plane_ccd(rigid, o);
+      o.mode = Mode::filtered;
+      const RigidCcdResult rigid_filtered = point_plane_ccd(rigid, o);
+      require(rigid_filtered.ccd.collides == rigid_exact.ccd.collides &&
+                  rigid_filtered.ccd.toi_lo == rigid_exact.ccd.toi_lo &&
+                  rigid_filtered.ccd.toi_hi == rigid_exact.ccd.toi_hi,
+              "rigid point-plane: default " + describe(rigid_filtered.ccd) + " != exact " +
+                  describe(rigid_exact.ccd) + " on " + where);
+    }
   }
   {
     // The collision-free step: in [0, t_max], and limited whenever the pair collides.
