@@ -207,13 +207,23 @@ ContactGeometry separation(const Query& query, const CcdResult& r) {
   const auto at_row = [&](int i) {
     return at(predicates::moving_point<Interval>(q.x[i], q.x[i + 4]), q.t);
   };
-  if constexpr (std::is_same_v<Query, VertexFaceQuery>)
-    return contact::vertex_face_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
-                                                r.starts_within, q.e);
-  else
-    return contact::edge_edge_separation_from(
-        at_row(0), at_row(1), at_row(2), at_row(3), r.starts_within, q.e,
-        q.x[0] == q.x[1] && q.x[4] == q.x[5], q.x[2] == q.x[3] && q.x[6] == q.x[7]);
+  constexpr bool vf = std::is_same_v<Query, VertexFaceQuery>;
+  const bool points = !vf && ((q.x[0] == q.x[1] && q.x[4] == q.x[5]) ||
+                              (q.x[2] == q.x[3] && q.x[6] == q.x[7]));
+  ContactGeometry g =
+      vf ? contact::vertex_face_separation_from(at_row(0), at_row(1), at_row(2), at_row(3),
+                                                r.starts_within, q.e)
+         : contact::edge_edge_separation_from(
+               at_row(0), at_row(1), at_row(2), at_row(3), r.starts_within, q.e,
+               q.x[0] == q.x[1] && q.x[4] == q.x[5], q.x[2] == q.x[3] && q.x[6] == q.x[7]);
+  // Closest points that are not unique: a triangle degenerate, or edges parallel, at every t
+  // (exactly); the enclosures stay the trivially valid ones. Not for points, which are
+  // "parallel" to everything and resolved above.
+  if (g.kind == ContactKind::unresolved && !points) {
+    const ContactKind k = degenerate_kind(q.x, vf);
+    if (k == ContactKind::degenerate_triangle || k == ContactKind::parallel_edges) g.kind = k;
+  }
+  return g;
 }
 
 }  // namespace

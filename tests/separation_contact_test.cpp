@@ -232,5 +232,28 @@ TEST(SeparationContact, PointsAgainstSegmentsAndPoints) {
   EXPECT_GT(resolved, 60);
 }
 
+/// Closest points that are not unique are named by their exact kind: parallel edges (a segment
+/// of closest pairs) and a degenerate triangle; their enclosures stay the trivial ones.
+TEST(SeparationContact, ParallelEdgesAndDegenerateTrianglesAreNamed) {
+  CcdOptions o;
+  o.min_separation = 0.1;
+  const EdgeEdgeQuery parallel{Vector3d(0, 0, 1), Vector3d(2, 0, 1), Vector3d(1, 0, 0),
+                               Vector3d(3, 0, 0), Vector3d(0, 0, -1), Vector3d(2, 0, -1),
+                               Vector3d(1, 0, 0), Vector3d(3, 0, 0)};
+  const CcdResult r = edge_edge_ccd(parallel, o);
+  ASSERT_TRUE(r.collides);
+  const ContactGeometry g = contact_geometry(parallel, r, 0.1);
+  EXPECT_EQ(g.kind, ContactKind::parallel_edges);
+  EXPECT_FALSE(g.normal_oriented);
+  EXPECT_LE(g.point[0].lo, 1.0);  // the closest points on b: x in [1, 2]
+  EXPECT_GE(g.point[0].hi, 2.0);
+  const VertexFaceQuery flat{Vector3d(0.5, 0.01, 1), Vector3d(0, 0, 0), Vector3d(1, 0, 0),
+                             Vector3d(0.25, 0, 0), Vector3d(0.5, 0.01, -1), Vector3d(0, 0, 0),
+                             Vector3d(1, 0, 0), Vector3d(0.25, 0, 0)};
+  const CcdResult f = vertex_face_ccd(flat, o);
+  ASSERT_TRUE(f.collides);
+  EXPECT_EQ(contact_geometry(flat, f, 0.1).kind, ContactKind::degenerate_triangle);
+}
+
 }  // namespace
 }  // namespace exactccd::test

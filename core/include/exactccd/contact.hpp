@@ -110,7 +110,8 @@ EXACTCCD_API ContactGeometry contact_geometry(const VertexFaceQuery& query,
 /// closest point on edge b, `normal` the unit direction from it towards edge a (along the edges'
 /// cross product when both are inside their edges); resolved when the closest pair (inside both,
 /// an end against an edge, two ends, a point against a segment or a point) is certain over the
-/// TOI enclosure, otherwise `unresolved` (parallel edges among others).
+/// TOI enclosure; `parallel_edges` for edges parallel at every t (closest points not unique,
+/// the trivial enclosures), otherwise `unresolved`.
 /// \param query the query that was decided.
 /// \param result its certified answer (edge_edge_ccd, point_edge_ccd, point_point_ccd or their 2D
 ///        forms embedded in z = 0).
