@@ -384,16 +384,24 @@ def point_plane_ccd(*points, t_max: float = 1.0, toi_width: float = 0.0,
 
 def point_plane_ccd_batch(queries, *, t_max: float = 1.0, toi_width: float = 0.0,
                           mode: str = "filtered", threads: Optional[int] = None,
-                          min_separation: float = 0.0) -> "BatchResult":
+                          min_separation: float = 0.0, contact: bool = False) -> "BatchResult":
     """Decides N point-plane queries: an (N, 6, 3) array, rows p, origin, normal at t0 then at
-    t1. As vertex_face_ccd_batch (no contact geometry); results equal one point_plane_ccd call
-    per query."""
+    t1. As vertex_face_ccd_batch; results equal one point_plane_ccd call per query (contact=True:
+    the BatchContact of every query, no parameters: (N, 0, 2))."""
     function = "point_plane_ccd_batch"
     t_max, toi_width, mode, min_separation = _options(function, t_max, toi_width, mode,
                                                       min_separation)
     threads = _arguments.count_or_none(function, "threads", threads)
-    return BatchResult(*_exactccd._point_plane_batch(queries, t_max, toi_width, mode, threads,
-                                                     min_separation))
+    if not isinstance(contact, (bool, np.bool_)):
+        raise TypeError(f"{function}(): contact must be True or False, not "
+                        f"{contact.__class__.__name__}")
+    fields = _exactccd._point_plane_batch(queries, t_max, toi_width, mode, threads,
+                                          min_separation, bool(contact))
+    if not contact:
+        return BatchResult(*fields)
+    result = _BatchResultWithContact(*fields[:4])
+    result.__dict__["contact"] = BatchContact(*fields[4])
+    return result
 
 
 class BatchResult(NamedTuple):

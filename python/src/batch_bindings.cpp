@@ -114,15 +114,21 @@ void check_threads(const std::optional<int>& threads) {
                           "] (or None for every core), not " + std::to_string(*threads));
 }
 
-py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
+/// The batch of one kind: `rows` points per query (the queries' (N, rows, 3) array), `k`
+/// contact parameters, decide(data, options) and geometry(data, result, delta) on a query's
+/// first double.
+template <class Decide, class Geometry>
+py::tuple decide_batch(const py::handle& queries, int rows_per_query, int k, double t_max,
                        double toi_width, const std::string& mode,
-                       const std::optional<int>& threads, double min_separation, bool contact) {
+                       const std::optional<int>& threads, double min_separation, bool contact,
+                       Decide&& decide, Geometry&& geometry) {
   const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
   if (contact && options.mode == Mode::float_only)
     throw py::value_error("contact=True needs a certified mode (\"filtered\" or \"exact\")");
   check_threads(threads);
-  const DoubleArray array = as_double_array(queries, {-1, 8, 3}, "queries");
+  const DoubleArray array = as_double_array(queries, {-1, rows_per_query, 3}, "queries");
   const auto n = static_cast<std::size_t>(array.shape(0));
+  const std::size_t stride = 3 * static_cast<std::size_t>(rows_per_query);
   py::array_t<bool> collides(static_cast<py::ssize_t>(n));
   py::array_t<double> toi_lo(static_cast<py::ssize_t>(n));
   py::array_t<double> toi_hi(static_cast<py::ssize_t>(n));
@@ -133,7 +139,6 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
   double* out_hi = toi_hi.mutable_data();
   std::uint8_t* out_stage = stage.mutable_data();
   // The contact geometry (contact=True): NaN and kind -1 for the queries without contact.
-  const int k = type == QueryType::vertex_face ? 3 : 2;
   const auto rows = static_cast<py::ssize_t>(contact ? n : 0);
   py::array_t<double> parameters({rows, static_cast<py::ssize_t>(k), py::ssize_t{2}});
   py::array_t<double> normal({rows, py::ssize_t{3}, py::ssize_t{2}});
@@ -147,7 +152,7 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
   bool* out_oriented = oriented.mutable_data();
 
   for_each_query(n, threads, [&](std::size_t i) {
-    const CcdResult r = decide(type, data + 24 * i, options);
+    const CcdResult r = decide(data + stride * i, options);
     out_collides[i] = r.collides;
     out_lo[i] = r.toi_lo;
     out_hi[i] = r.toi_hi;
@@ -162,7 +167,7 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
       out_oriented[i] = false;
       return;
     }
-    const ContactGeometry g = geometry(type, data + 24 * i, r, options.min_separation);
+    const ContactGeometry g = geometry(data + stride * i, r, options.min_separation);
     write_enclosures(out_parameters + 2 * k * i, g.parameters.data(), k);
     write_enclosures(out_normal + 6 * i, g.normal.data(), 3);
     write_enclosures(out_point + 6 * i, g.point.data(), 3);
@@ -174,48 +179,40 @@ py::tuple decide_batch(QueryType type, const py::handle& queries, double t_max,
                         py::make_tuple(parameters, normal, point, kind, oriented));
 }
 
-// N point-plane queries (N, 6, 3): rows p, origin, normal at t0 then at t1.
-py::tuple decide_point_plane_batch(const py::handle& queries, double t_max, double toi_width,
-                                   const std::string& mode, const std::optional<int>& threads,
-                                   double min_separation) {
-  const CcdOptions options = make_options(t_max, toi_width, mode, min_separation);
-  check_threads(threads);
-  const DoubleArray array = as_double_array(queries, {-1, 6, 3}, "queries");
-  const auto n = static_cast<std::size_t>(array.shape(0));
-  py::array_t<bool> collides(static_cast<py::ssize_t>(n));
-  py::array_t<double> toi_lo(static_cast<py::ssize_t>(n));
-  py::array_t<double> toi_hi(static_cast<py::ssize_t>(n));
-  py::array_t<std::uint8_t> stage(static_cast<py::ssize_t>(n));
-  const double* data = array.data();
-  bool* out_collides = collides.mutable_data();
-  double* out_lo = toi_lo.mutable_data();
-  double* out_hi = toi_hi.mutable_data();
-  std::uint8_t* out_stage = stage.mutable_data();
-  for_each_query(n, threads, [&](std::size_t i) {
-    const double* d = data + 18 * i;
-    const CcdResult r = point_plane_ccd(
-        {row_of(d, 0), row_of(d, 1), row_of(d, 2), row_of(d, 3), row_of(d, 4), row_of(d, 5)},
-        options);
-    out_collides[i] = r.collides;
-    out_lo[i] = r.toi_lo;
-    out_hi[i] = r.toi_hi;
-    out_stage[i] = static_cast<std::uint8_t>(r.decided_by);
-  });
-  return py::make_tuple(collides, toi_lo, toi_hi, stage);
+/// A point-plane query from its 6 rows: p, origin, normal at t0 then at t1.
+PointPlaneQuery point_plane_of(const double* d) {
+  return {row_of(d, 0), row_of(d, 1), row_of(d, 2), row_of(d, 3), row_of(d, 4), row_of(d, 5)};
 }
 
 }  // namespace
 
 void bind_batch(py::module_& m) {
-  m.def("_point_plane_batch", &decide_point_plane_batch, py::arg("queries"), py::arg("t_max"),
-        py::arg("toi_width"), py::arg("mode"), py::arg("threads"), py::arg("min_separation"));
+  m.def(
+      "_point_plane_batch",
+      [](const py::handle& queries, double t_max, double toi_width, const std::string& mode,
+         const std::optional<int>& threads, double min_separation, bool contact) {
+        return decide_batch(
+            queries, 6, 0, t_max, toi_width, mode, threads, min_separation, contact,
+            [](const double* d, const CcdOptions& o) { return point_plane_ccd(point_plane_of(d), o); },
+            [](const double* d, const CcdResult& r, double delta) {
+              return contact_geometry(point_plane_of(d), r, delta);
+            });
+      },
+      py::arg("queries"), py::arg("t_max"), py::arg("toi_width"), py::arg("mode"),
+      py::arg("threads"), py::arg("min_separation"), py::arg("contact") = false);
   m.def(
       "_ccd_batch",
-      [](const std::string& type, const py::handle& queries, double t_max, double toi_width,
+      [](const std::string& type_name, const py::handle& queries, double t_max, double toi_width,
          const std::string& mode, const std::optional<int>& threads, double min_separation,
          bool contact) {
-        return decide_batch(parse_query_type(type), queries, t_max, toi_width, mode, threads,
-                            min_separation, contact);
+        const QueryType type = parse_query_type(type_name);
+        return decide_batch(
+            queries, 8, type == QueryType::vertex_face ? 3 : 2, t_max, toi_width, mode, threads,
+            min_separation, contact,
+            [type](const double* d, const CcdOptions& o) { return decide(type, d, o); },
+            [type](const double* d, const CcdResult& r, double delta) {
+              return geometry(type, d, r, delta);
+            });
       },
       py::arg("type"), py::arg("queries"), py::arg("t_max"), py::arg("toi_width"),
       py::arg("mode"), py::arg("threads"), py::arg("min_separation"), py::arg("contact") = false);

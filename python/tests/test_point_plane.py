@@ -129,3 +129,29 @@ def test_contact_geometry_on_request():
     with pytest.raises(ValueError, match="certified mode"):
         exactccd.point_plane_ccd([0, 0, -1.0], [0, 0, 0], [0, 0, 3],
                                  [0, 0, 1.0], [0, 0, 0], [0, 0, 3], contact=True, mode="float_only")
+
+
+def test_batch_contact_geometry_equals_single_calls():
+    rng = np.random.default_rng(7)
+    n = 200
+    queries = np.zeros((n, 6, 3))
+    queries[:, 0] = rng.uniform(-1, 1, (n, 3)) + [0, 0, 0.5]      # p at t0, above
+    queries[:, 1] = rng.uniform(-0.1, 0.1, (n, 3))               # origin
+    queries[:, 2] = rng.uniform(-0.2, 0.2, (n, 3)) + [0, 0, 1]   # normal
+    queries[:, 3] = rng.uniform(-1, 1, (n, 3)) - [0, 0, 0.5]     # p at t1, below
+    queries[:, 4:] = queries[:, 1:3]
+    for delta in (0.0, 0.05):
+        batch = exactccd.point_plane_ccd_batch(queries, contact=True, min_separation=delta)
+        assert batch.contact.parameters.shape == (n, 0, 2)
+        assert batch.collides.sum() > n // 2
+        for i in range(n):
+            single = exactccd.point_plane_ccd(queries[i], contact=True, min_separation=delta)
+            assert single.collides == batch.collides[i]
+            if single.collides:
+                assert np.array_equal(single.contact.normal, batch.contact.normal[i])
+                assert np.array_equal(single.contact.point, batch.contact.point[i])
+                assert exactccd.CONTACT_KIND_NAMES[batch.contact.kind[i]] == single.contact.kind
+            else:
+                assert batch.contact.kind[i] == -1
+    with pytest.raises(ValueError, match="certified mode"):
+        exactccd.point_plane_ccd_batch(queries, contact=True, mode="float_only")
