@@ -33,6 +33,7 @@
 #include "corpus/meshes.hpp"
 #include "corpus/broad_phase.hpp"
 #include "exactccd/ccd.hpp"
+#include "exactccd/contact.hpp"
 #include "exactccd/scene.hpp"
 
 namespace {
@@ -295,6 +296,34 @@ void BM_ClothStepStaticScheme(benchmark::State& state) {
 BENCHMARK(BM_ClothStepStaticScheme)->Name("cloth_step/static_bvh")
     ->ArgsProduct({{1, 2}, {2}})->ArgNames({"scenario", "threads"})
     ->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// The cloth step (2 threads) with the certified contact geometry of every contact
+/// (Scene::contact_geometry, serially after find_contacts), against find_contacts alone in
+/// cloth_step/all_pairs (issue 28: the cost of asking for the geometry).
+void BM_ClothStepWithGeometry(benchmark::State& state) {
+  const FoldedCloth& c = cloth(static_cast<int>(state.range(0)));
+  state.SetLabel(kScenarioNames[state.range(0)]);
+  exactccd::Scene scene;
+  const exactccd::MeshId id = scene.add_mesh(c.start, c.triangles);
+  scene.set_motion(id, c.start, c.end);
+  exactccd::SceneOptions options;
+  options.max_threads = 2;
+  scene.find_contacts(options);
+  std::size_t contacts = 0, resolved = 0;
+  for (auto _ : state) {
+    scene.set_motion(id, c.start, c.end);
+    const auto r = scene.find_contacts(options);
+    contacts = r.contacts.size();
+    resolved = 0;
+    for (const exactccd::SceneContact& contact : r.contacts)
+      resolved += scene.contact_geometry(contact).kind == exactccd::ContactKind::point;
+    benchmark::DoNotOptimize(resolved);
+  }
+  state.counters["contacts"] = static_cast<double>(contacts);
+  state.counters["point_kind"] = static_cast<double>(resolved);
+}
+BENCHMARK(BM_ClothStepWithGeometry)->Name("cloth_step/all_pairs_with_geometry")
+    ->DenseRange(1, 2)->ArgNames({"scenario"})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// A fast body through a static sheet within one step: a sphere (uv, 48 x 24: 2,208 triangles)
 /// of radius 0.2 crossing a 128 x 128-cell sheet (32,768 triangles) from 0.25 above to 0.25
