@@ -6,6 +6,7 @@
 #pragma once
 
 #include <tuple>
+#include <utility>
 
 #include "exactccd/types.hpp"
 #include "filters/filter_outcome.hpp"
@@ -23,6 +24,25 @@ inline Stage stage_of(const FilterOutcome& f) {
     return Stage::filter_exact_toi;
   return Stage::filter;
 }
+
+/// The members of a problem without culling, scaling or an exact stage beside its exact path
+/// (the point-plane instances): it derives from this and gives Query, exact, float_only and
+/// filter; the filter's uncertain queries go to Derived::exact.
+template <class Derived, class QueryType>
+struct WithoutExactStage {
+  struct NoStage {};
+  static bool culled(const QueryType&, const CcdOptions&) { return false; }
+  static constexpr int normalising_exponent(const QueryType&) { return 0; }
+  static QueryType scaled(const QueryType& q, int) { return q; }
+  static NoStage exact_stage(const QueryType&, const CcdOptions&) { return {}; }
+  static std::pair<double, double> tighten(NoStage&, double lo, double hi, const CcdOptions&) {
+    return {lo, hi};
+  }
+  static CcdResult after_filter(const QueryType& q, const CcdOptions& o, const FilterOutcome&,
+                                NoStage&) {
+    return Derived::exact(q, o);
+  }
+};
 
 /// A Problem is a struct of static members (pipeline/linear_problems.hpp,
 /// pipeline/rigid_problems.hpp):

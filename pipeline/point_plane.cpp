@@ -14,6 +14,7 @@
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/fp_environment.hpp"
 #include "core/predicates/interval.hpp"
+#include "core/predicates/plane_offset.hpp"
 #include "exact/arithmetic/rational.hpp"
 #include "exact/arithmetic/stack_dyadic.hpp"
 #include "exact/polynomials/polynomial.hpp"
@@ -32,18 +33,8 @@ exact::PointPlanePoints rows_of(const PointPlaneQuery& q) {
   return {q.p_t0, q.origin_t0, q.normal_t0, q.p_t1, q.origin_t1, q.normal_t1};
 }
 
-/// The polynomial's enclosure over [0, t] (t >= 0): c0 + T (c1 + T (c2 + ...)), T = [0, t].
-template <int D>
-predicates::Interval over(const predicates::FixedPoly<predicates::Interval, D>& f, double t) {
-  const predicates::Interval T(0.0, t);
-  predicates::Interval r = f.c[D];
-  for (int i = D - 1; i >= 0; --i) r = f.c[i] + T * r;
-  return r;
-}
-
-struct PointPlane {
+struct PointPlane : WithoutExactStage<PointPlane, PointPlaneQuery> {
   using Query = PointPlaneQuery;
-  struct NoStage {};
 
   static CcdResult exact(const Query& q, const CcdOptions& o) {
     return exact::point_plane_ccd_exact(rows_of(q), o);
@@ -51,10 +42,7 @@ struct PointPlane {
   /// The float polynomial's roots in doubles (min_separation: its roots compared with delta in
   /// doubles, the common practice). Uncertified.
   static CcdResult float_only(const Query& q, const CcdOptions& o) {
-    const auto p = predicates::moving_point<double>(q.p_t0, q.p_t1),
-               org = predicates::moving_point<double>(q.origin_t0, q.origin_t1),
-               n = predicates::moving_point<double>(q.normal_t0, q.normal_t1);
-    const auto f = predicates::dot(p - org, n);
+    const auto f = predicates::linear_plane_offset<double>(q);
     CcdResult r;
     r.decided_by = Stage::float_only;
     const auto distance_at = [&](double t) {
@@ -76,27 +64,22 @@ struct PointPlane {
     }
     return r;
   }
-  static bool culled(const Query&, const CcdOptions&) { return false; }
-  static constexpr int normalising_exponent(const Query&) { return 0; }
-  static Query scaled(const Query& q, int) { return q; }
-  static NoStage exact_stage(const Query&, const CcdOptions&) { return {}; }
   /// No contact when the polynomial keeps a certain sign on [0, t_max] (contact: f != 0;
   /// within delta: g > 0), by interval arithmetic with upward rounding.
   static FilterOutcome filter(const Query& q, const CcdOptions& o, NoStage&) {
     const predicates::RoundingGuard upward;
     using predicates::Interval;
-    const auto p = predicates::moving_point<Interval>(q.p_t0, q.p_t1),
-               org = predicates::moving_point<Interval>(q.origin_t0, q.origin_t1),
-               n = predicates::moving_point<Interval>(q.normal_t0, q.normal_t1);
-    const auto f = predicates::dot(p - org, n);
+    const auto n = predicates::moving_point<Interval>(q.normal_t0, q.normal_t1);
+    const auto f = predicates::linear_plane_offset<Interval>(q);
     FilterOutcome out;
     bool apart;
     if (o.min_separation == 0.0) {
-      apart = predicates::certain_strict_sign(over(f, o.t_max)) != 0;
+      apart = predicates::certain_strict_sign(predicates::enclosure_over(f, 0.0, o.t_max)) != 0;
     } else {
       const Interval delta(o.min_separation);
       const predicates::FixedPoly<Interval, 0> delta2{{delta * delta}};
-      apart = over(f * f - delta2 * predicates::dot(n, n), o.t_max).inf() > 0;
+      apart = predicates::enclosure_over(f * f - delta2 * predicates::dot(n, n), 0.0, o.t_max)
+                  .inf() > 0;
     }
     if (apart) {
       out.verdict = FilterOutcome::Verdict::no_contact;
@@ -130,7 +113,7 @@ struct PointPlane {
       const int s = predicates::certain_strict_sign(value_at(t));
       if (s != 0) return s;
       out->exact_used = true;
-      if (!dyadic_f) dyadic_f = polynomial_over<exact::StackDyadic>(q);
+      if (!dyadic_f) dyadic_f = predicates::linear_plane_offset<exact::StackDyadic>(q);
       const exact::StackDyadic T(t);
       const exact::StackDyadic v = dyadic_f->c[0] + T * (dyadic_f->c[1] + T * dyadic_f->c[2]);
       if (!v.overflow()) return v.sign();
@@ -196,24 +179,9 @@ struct PointPlane {
     out->toi_hi = hi;
     out->toi_final = true;
   }
-  /// f = (p - o) . n over NT (every double converted exactly).
-  template <class NT>
-  static predicates::FixedPoly<NT, 2> polynomial_over(const Query& q) {
-    const auto p = predicates::moving_point<NT>(q.p_t0, q.p_t1),
-               org = predicates::moving_point<NT>(q.origin_t0, q.origin_t1),
-               n = predicates::moving_point<NT>(q.normal_t0, q.normal_t1);
-    return predicates::dot(p - org, n);
-  }
   /// f with the doubles' exact rational coefficients.
   static exact::Polynomial exact_polynomial(const Query& q) {
-    return exact::Polynomial(polynomial_over<exact::Rational>(q));
-  }
-  static std::pair<double, double> tighten(NoStage&, double lo, double hi, const CcdOptions&) {
-    return {lo, hi};
-  }
-  static CcdResult after_filter(const Query& q, const CcdOptions& o, const FilterOutcome&,
-                                NoStage&) {
-    return exact(q, o);
+    return exact::Polynomial(predicates::linear_plane_offset<exact::Rational>(q));
   }
 };
 

@@ -13,7 +13,7 @@
 #include "core/float_only/float_only_ccd.hpp"
 #include "core/predicates/fp_environment.hpp"
 #include "core/predicates/interval.hpp"
-#include "core/predicates/rigid_motion.hpp"
+#include "core/predicates/plane_offset.hpp"
 #include "exact/reference/rigid_point_plane.hpp"
 #include "exactccd/rigid.hpp"
 #include "pipeline/ccd_options_check.hpp"
@@ -27,39 +27,9 @@ namespace pipeline {
 namespace {
 
 using predicates::FixedPoly;
-using predicates::Vec3;
 
-/// F(s) = (X(s) - o w(s)) . n over NT, every input double converted exactly.
-template <class NT>
-FixedPoly<NT, 3> offset_numerator(const RigidPointPlaneQuery& q, FixedPoly<NT, 2>* w_out) {
-  const auto to = [](const Eigen::Vector3d& x) { return Vec3<NT>{NT(x.x()), NT(x.y()), NT(x.z())}; };
-  const predicates::RigidMotionOver<NT> motion{to(q.motion.pivot), to(q.motion.translation),
-                                               to(q.motion.cayley)};
-  const Vec3<FixedPoly<NT, 3>> X = predicates::rigid_path_numerator(motion, to(q.p));
-  const FixedPoly<NT, 2> w = predicates::rigid_path_denominator(motion);
-  const FixedPoly<NT, 3>* Xk[3] = {&X.x, &X.y, &X.z};
-  FixedPoly<NT, 3> F{};
-  for (int i = 0; i < 4; ++i) F.c[i] = NT(0);
-  for (int k = 0; k < 3; ++k) {
-    const NT o(q.origin[k]), n(q.normal[k]);
-    for (int i = 0; i < 4; ++i) F.c[i] += (i < 3 ? Xk[k]->c[i] - o * w.c[i] : Xk[k]->c[i]) * n;
-  }
-  if (w_out) *w_out = w;
-  return F;
-}
-
-/// The polynomial's enclosure over [a, b] by Horner's rule on the interval [a, b].
-template <int D>
-predicates::Interval over(const FixedPoly<predicates::Interval, D>& f, double a, double b) {
-  const predicates::Interval T(a, b);
-  predicates::Interval r = f.c[D];
-  for (int i = D - 1; i >= 0; --i) r = f.c[i] + T * r;
-  return r;
-}
-
-struct RigidPointPlane {
+struct RigidPointPlane : WithoutExactStage<RigidPointPlane, RigidPointPlaneQuery> {
   using Query = RigidPointPlaneQuery;
-  struct NoStage {};
   static constexpr int kPieces = 8;
 
   static CcdResult exact(const Query& q, const CcdOptions& o) {
@@ -69,7 +39,7 @@ struct RigidPointPlane {
   /// (the common practice). Uncertified.
   static CcdResult float_only(const Query& q, const CcdOptions& o) {
     FixedPoly<double, 2> w;
-    const FixedPoly<double, 3> F = offset_numerator<double>(q, &w);
+    const FixedPoly<double, 3> F = predicates::rigid_plane_offset<double>(q, &w);
     const double n = q.normal.norm();
     const auto distance_at = [&](double s) {
       const double f = F.c[0] + s * (F.c[1] + s * (F.c[2] + s * F.c[3]));
@@ -92,17 +62,13 @@ struct RigidPointPlane {
       }
     return r;
   }
-  static bool culled(const Query&, const CcdOptions&) { return false; }
-  static constexpr int normalising_exponent(const Query&) { return 0; }
-  static Query scaled(const Query& q, int) { return q; }
-  static NoStage exact_stage(const Query&, const CcdOptions&) { return {}; }
   /// No contact when the polynomial keeps a certain sign on every piece of [0, t_max]
   /// (contact: F != 0; within delta: G > 0), by interval arithmetic with upward rounding.
   static FilterOutcome filter(const Query& q, const CcdOptions& o, NoStage&) {
     const predicates::RoundingGuard upward;
     using predicates::Interval;
     FixedPoly<Interval, 2> w;
-    const FixedPoly<Interval, 3> F = offset_numerator<Interval>(q, &w);
+    const FixedPoly<Interval, 3> F = predicates::rigid_plane_offset<Interval>(q, &w);
     FixedPoly<Interval, 6> G;
     if (o.min_separation > 0.0) {
       Interval nn(0.0);
@@ -117,19 +83,12 @@ struct RigidPointPlane {
       const double a = k == 0 ? 0.0 : -(-o.t_max * k / kPieces);  // rounded down
       const double b = k + 1 == kPieces ? o.t_max : o.t_max * (k + 1) / kPieces;  // rounded up
       const bool apart = o.min_separation == 0.0
-                             ? predicates::certain_strict_sign(over(F, a, b)) != 0
-                             : over(G, a, b).inf() > 0;
+                             ? predicates::certain_strict_sign(predicates::enclosure_over(F, a, b)) != 0
+                             : predicates::enclosure_over(G, a, b).inf() > 0;
       if (!apart) return out;  // uncertain: the exact path
     }
     out.verdict = FilterOutcome::Verdict::no_contact;
     return out;
-  }
-  static std::pair<double, double> tighten(NoStage&, double lo, double hi, const CcdOptions&) {
-    return {lo, hi};
-  }
-  static CcdResult after_filter(const Query& q, const CcdOptions& o, const FilterOutcome&,
-                                NoStage&) {
-    return exact(q, o);
   }
 };
 

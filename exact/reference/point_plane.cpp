@@ -1,6 +1,7 @@
 // PROOF: proofs/point_plane.md#reduction
 #include "exact/reference/point_plane.hpp"
 
+#include "core/predicates/plane_offset.hpp"
 #include "exact/reference/earliest_contact.hpp"
 
 namespace exactccd::exact {
@@ -11,13 +12,8 @@ namespace {
 /// delta of it, or none.
 std::optional<AlgebraicTime> first_time(const PointPlanePoints& x, const Rational& t_max,
                                         double min_separation) {
-  const auto moving_of = [&](int row) {
-    return moving(RationalPoint{Rational(x[row].x()), Rational(x[row].y()), Rational(x[row].z())},
-                  RationalPoint{Rational(x[row + 3].x()), Rational(x[row + 3].y()),
-                                Rational(x[row + 3].z())});
-  };
-  const auto p = moving_of(0), o = moving_of(1), n = moving_of(2);
-  const auto f_t = predicates::dot(p - o, n);  // degree <= 2
+  const auto f_t = predicates::linear_plane_offset<Rational>(
+      PointPlaneQuery{x[0], x[1], x[2], x[3], x[4], x[5]});  // degree <= 2
   const Polynomial f(f_t);
   if (min_separation == 0.0)
     // On the plane: f(t) = 0 (f identically zero: on it throughout, the start is the TOI).
@@ -27,6 +23,7 @@ std::optional<AlgebraicTime> first_time(const PointPlanePoints& x, const Rationa
   // root of g (g is continuous: it is positive just before its first non-positive time).
   const Rational delta(min_separation);
   const predicates::FixedPoly<Rational, 0> delta2{{Rational(delta * delta)}};
+  const auto n = predicates::moving_point<Rational>(x[2], x[5]);
   const Polynomial g(f_t * f_t - delta2 * predicates::dot(n, n));  // degree <= 4
   return earliest_contact(std::vector<Polynomial>{g}, true, t_max,
                           [&](AlgebraicTime& t) { return t.sign_of(g) <= 0; });
