@@ -98,6 +98,8 @@ class Bvh {
   }
 
   bool empty() const { return nodes_.empty(); }
+  /// The box of primitive i as last built or refitted.
+  const Box& box(std::uint32_t i) const { return boxes_[i]; }
   /// The box of every primitive (the root's); the tree must not be empty.
   const Box& bounds() const { return nodes_.front().box; }
 

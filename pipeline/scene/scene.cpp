@@ -839,23 +839,26 @@ struct Scene::Impl {
       if (p.a != p.b) point_edge(p.b, p.a, p.ba);
       point_point(p.a, p.b);
     });
-    plane_candidates(sink, until, delta);
+    plane_candidates(at, sink, until, delta);
   }
 
-  /// A rigid body's vertices against a plane: each vertex's certified box over the step
-  /// (rigid_vertex_boxes) against the plane (box_apart_from_plane). PROOF: proofs/scene.md#planes
+  /// A rigid body's vertices against a plane: each vertex's certified box in the hierarchy
+  /// `vertices` (rigid_vertex_boxes, upper corners raised by delta: a larger box) against the
+  /// plane (box_apart_from_plane). PROOF: proofs/scene.md#planes
   template <class Sink>
-  void rigid_plane_candidates(MeshId id, MeshId plane, const Sink& sink, double delta) const {
-    const Mesh& m = meshes[id];
+  void rigid_plane_candidates(MeshId id, const Bvh& vertices, MeshId plane, const Sink& sink,
+                              double delta) const {
     const Mesh& pm = meshes[plane];
-    const std::vector<Box> boxes = rigid_vertex_boxes(m, Span::swept);
     std::vector<std::uint32_t> near;
     {
       const predicates::RoundingGuard upward;
-      for (std::size_t v = 0; v < boxes.size(); ++v)
-        if (!scene::box_apart_from_plane(boxes[v].lo, boxes[v].hi, pm.plane_origin,
-                                         pm.plane_normal, delta))
-          near.push_back(static_cast<std::uint32_t>(v));
+      const auto count = static_cast<std::uint32_t>(meshes[id].start.rows());
+      for (std::uint32_t v = 0; v < count; ++v) {
+        const Box& box = vertices.box(v);
+        if (!scene::box_apart_from_plane(box.lo, box.hi, pm.plane_origin, pm.plane_normal,
+                                         delta))
+          near.push_back(v);
+      }
     }
     for (const std::uint32_t v : near)
       sink(ScenePair{QueryType::point_plane, id, v, plane, 0}, 0.0);
@@ -864,8 +867,8 @@ struct Scene::Impl {
   /// Every vertex of a moving mesh against every plane, cut by apart_from_plane over
   /// [0, until()] (one certified test per vertex: no hierarchy, no cost per triangle).
   /// PROOF: proofs/scene.md#planes
-  template <class Sink, class Until>
-  void plane_candidates(const Sink& sink, const Until& until, double delta) const {
+  template <class At, class Sink, class Until>
+  void plane_candidates(const At& at, const Sink& sink, const Until& until, double delta) const {
     for (MeshId plane = 0; plane < meshes.size(); ++plane) {
       const Mesh& pm = meshes[plane];
       if (pm.kind != MeshKind::plane) continue;
@@ -873,7 +876,7 @@ struct Scene::Impl {
         const Mesh& m = meshes[id];
         if (m.is_static) continue;  // planes and static meshes never move
         if (m.is_rigid) {
-          rigid_plane_candidates(id, plane, sink, delta);
+          rigid_plane_candidates(id, at(m).vertices, plane, sink, delta);
           continue;
         }
         tbb::parallel_for(
