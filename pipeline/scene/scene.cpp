@@ -1315,26 +1315,31 @@ void check_planar(const Positions& x, const char* what) {
                                   std::to_string(v));
 }
 
-/// Edges of an edge mesh: in range, two distinct vertices, none given twice (either way round).
-void check_edges(const Edges& edges, Eigen::Index vertex_count) {
+/// An edge as its vertices (smaller first) and its row.
+using EdgeRow = std::pair<std::pair<std::int32_t, std::int32_t>, Eigen::Index>;
+
+/// The edges checked (in range, two distinct vertices, none given twice either way round) and
+/// sorted by their vertices; messages start with `what` ("exactccd: " or "exactccd: set_edges: ").
+std::vector<EdgeRow> checked_sorted_edges(const Edges& edges, Eigen::Index vertex_count,
+                                          const std::string& what) {
   if (vertex_count > std::numeric_limits<std::int32_t>::max())
-    throw std::invalid_argument("exactccd: too many vertices in one mesh");
-  std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, Eigen::Index>> seen;
-  seen.reserve(static_cast<std::size_t>(edges.rows()));
+    throw std::invalid_argument(what + "too many vertices in one mesh");
+  std::vector<EdgeRow> sorted;
+  sorted.reserve(static_cast<std::size_t>(edges.rows()));
   for (Eigen::Index e = 0; e < edges.rows(); ++e) {
     const std::int32_t a = edges(e, 0), b = edges(e, 1);
     if (a < 0 || a >= vertex_count || b < 0 || b >= vertex_count)
-      throw std::invalid_argument("exactccd: edge " + std::to_string(e) +
+      throw std::invalid_argument(what + "edge " + std::to_string(e) +
                                   " has a vertex index out of range");
-    if (a == b)
-      throw std::invalid_argument("exactccd: edge " + std::to_string(e) + " repeats a vertex");
-    seen.push_back({{std::min(a, b), std::max(a, b)}, e});
+    if (a == b) throw std::invalid_argument(what + "edge " + std::to_string(e) + " repeats a vertex");
+    sorted.push_back({{std::min(a, b), std::max(a, b)}, e});
   }
-  std::sort(seen.begin(), seen.end());
-  for (std::size_t k = 1; k < seen.size(); ++k)
-    if (seen[k].first == seen[k - 1].first)
-      throw std::invalid_argument("exactccd: edge " + std::to_string(seen[k].second) +
-                                  " repeats edge " + std::to_string(seen[k - 1].second));
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 1; k < sorted.size(); ++k)
+    if (sorted[k].first == sorted[k - 1].first)
+      throw std::invalid_argument(what + "edge " + std::to_string(sorted[k].second) +
+                                  " repeats edge " + std::to_string(sorted[k - 1].second));
+  return sorted;
 }
 
 /// Marks the vertices on none of the mesh's edges as points.
@@ -1354,7 +1359,7 @@ SceneDimension Scene::dimension() const { return impl_->dimension; }
 MeshId Scene::add_edge_mesh(const Positions& positions, const Edges& edges) {
   check_positions(positions, "the mesh's positions");
   if (impl_->planar()) check_planar(positions, "the mesh's positions");
-  check_edges(edges, positions.rows());
+  checked_sorted_edges(edges, positions.rows(), "exactccd: ");
   Mesh m;
   m.kind = MeshKind::edges;
   m.start = positions;
@@ -1421,26 +1426,11 @@ void Scene::set_edges(MeshId id, const Edges& edges) {
                                 " is not a triangle mesh (an edge mesh keeps the edges "
                                 "add_edge_mesh was given)");
   const Edges sides = edges_of(m.triangles);  // sorted (i, j), i < j, each side once
-  std::vector<std::pair<std::pair<std::int32_t, std::int32_t>, Eigen::Index>> given;
-  given.reserve(static_cast<std::size_t>(edges.rows()));
-  const auto vertices = static_cast<std::int32_t>(m.start.rows());
-  for (Eigen::Index e = 0; e < edges.rows(); ++e) {
-    const std::int32_t a = edges(e, 0), b = edges(e, 1);
-    if (a < 0 || a >= vertices || b < 0 || b >= vertices)
-      throw std::invalid_argument("exactccd: set_edges: edge " + std::to_string(e) +
-                                  " has a vertex index out of range");
-    if (a == b)
-      throw std::invalid_argument("exactccd: set_edges: edge " + std::to_string(e) +
-                                  " repeats a vertex");
-    given.push_back({{std::min(a, b), std::max(a, b)}, e});
-  }
-  std::sort(given.begin(), given.end());
+  const std::vector<EdgeRow> given =
+      checked_sorted_edges(edges, m.start.rows(), "exactccd: set_edges: ");
   Eigen::Index k = 0;  // the next side of the triangles to find
   for (std::size_t g = 0; g < given.size(); ++g) {
-    const auto& [side, row] = given[g];
-    if (g > 0 && given[g - 1].first == side)
-      throw std::invalid_argument("exactccd: set_edges: edge " + std::to_string(row) +
-                                  " repeats edge " + std::to_string(given[g - 1].second));
+    const auto& [side, row] = given[g];  // distinct (checked_sorted_edges)
     while (k < sides.rows() && std::make_pair(sides(k, 0), sides(k, 1)) < side) ++k;
     if (k == sides.rows() || std::make_pair(sides(k, 0), sides(k, 1)) != side)
       throw std::invalid_argument("exactccd: set_edges: edge " + std::to_string(row) + " (" +
