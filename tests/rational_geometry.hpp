@@ -5,6 +5,9 @@
 
 #include <gmpxx.h>
 
+#include <type_traits>
+
+#include "core/predicates/query_points.hpp"
 #include "exactccd/contact.hpp"
 #include "exactccd/rational_query.hpp"
 
@@ -48,6 +51,18 @@ inline bool unit_component_in(const mpq_class& v, const mpq_class& N, const Encl
     return h >= 0 ? v * v <= h * h * N : v * v >= h * h * N;
   };
   return at_least(e.lo) && at_most(e.hi);
+}
+
+/// A double query (VertexFaceQuery or EdgeEdgeQuery) as the rational query of the same doubles.
+template <class Query>
+RationalQuery rational_query_of(const Query& q) {
+  const predicates::QueryPoints rows = predicates::points_of(q);
+  RationalQuery r{std::is_same_v<Query, VertexFaceQuery> ? QueryType::vertex_face
+                                                         : QueryType::edge_edge,
+                  {}};
+  for (int i = 0; i < 8; ++i)
+    r.points[i] = {mpq_class(rows[i]->x()), mpq_class(rows[i]->y()), mpq_class(rows[i]->z())};
+  return r;
 }
 
 }  // namespace exactccd::test

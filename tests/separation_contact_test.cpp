@@ -135,11 +135,7 @@ TEST(SeparationContact, AVertexBesideATriangleSideOrCorner) {
     if (g.kind != ContactKind::point) continue;
     ASSERT_TRUE(g.normal_oriented);
     for (const mpq_class& t : times_of(r)) {
-      RationalQuery rq{QueryType::vertex_face, {}};
-      const Vector3d* rows[8] = {&q.p_t0, &q.a_t0, &q.b_t0, &q.c_t0,
-                                 &q.p_t1, &q.a_t1, &q.b_t1, &q.c_t1};
-      for (int i = 0; i < 8; ++i)
-        rq.points[i] = {mpq_class(rows[i]->x()), mpq_class(rows[i]->y()), mpq_class(rows[i]->z())};
+      const RationalQuery rq = rational_query_of(q);
       std::array<mpq_class, 3> bary;
       const RationalVector P = vec(position_at(rq, 0, t));
       const RationalVector Q = closest_on_triangle(P, vec(position_at(rq, 1, t)),
@@ -175,11 +171,7 @@ TEST(SeparationContact, EdgesNearEachOthersEnds) {
     const ContactGeometry g = contact_geometry(q, r, 0.1);
     if (g.kind != ContactKind::point) continue;
     for (const mpq_class& t : times_of(r)) {
-      RationalQuery rq{QueryType::edge_edge, {}};
-      const Vector3d* rows[8] = {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0,
-                                 &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
-      for (int i = 0; i < 8; ++i)
-        rq.points[i] = {mpq_class(rows[i]->x()), mpq_class(rows[i]->y()), mpq_class(rows[i]->z())};
+      const RationalQuery rq = rational_query_of(q);
       const RationalVector A0 = vec(position_at(rq, 0, t)), A1 = vec(position_at(rq, 1, t)),
                            B0 = vec(position_at(rq, 2, t)), B1 = vec(position_at(rq, 3, t));
       mpq_class s, w;
@@ -216,11 +208,7 @@ TEST(SeparationContact, PointsAgainstSegmentsAndPoints) {
     EXPECT_EQ(g.parameters[0].lo, 0.0);
     EXPECT_EQ(g.parameters[0].hi, 0.0);
     for (const mpq_class& t : times_of(r)) {
-      RationalQuery rq{QueryType::edge_edge, {}};
-      const Vector3d* rows[8] = {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0,
-                                 &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
-      for (int i = 0; i < 8; ++i)
-        rq.points[i] = {mpq_class(rows[i]->x()), mpq_class(rows[i]->y()), mpq_class(rows[i]->z())};
+      const RationalQuery rq = rational_query_of(q);
       const RationalVector P = vec(position_at(rq, 0, t)), B0 = vec(position_at(rq, 2, t)),
                            B1 = vec(position_at(rq, 3, t));
       mpq_class lambda = 0;
