@@ -11,7 +11,7 @@ packages=(
   python3 pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed doxygen
   # z3: the independent check of minimum-separation and rigid-body CCD (python/tests/test_min_separation.py,
   # python/tests/test_rigid_min_separation_z3.py,
-  # python/tests/test_rigid.py).
+  # python/tests/test_rigid.py) and of the contact geometry (python/tests/test_contact_z3.py).
   python3-z3
   # FCL 0.7: the comparison of rigid-body CCD with FCL's continuous collision
   # (bench/fcl_comparison; built only when CMake finds it, the library never uses it).
