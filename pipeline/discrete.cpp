@@ -30,17 +30,6 @@ namespace {
 
 using scene::Box;
 using scene::Bvh;
-/// The double nearest to q (ties to the even significand), for |q| <= DBL_MAX.
-double nearest_double(const exact::Rational& q) {
-  const double lo = exact::round_down(q), hi = exact::round_up(q);
-  if (lo == hi) return lo;
-  const int c = cmp(q - exact::Rational(lo), exact::Rational(hi) - q);
-  if (c != 0) return c < 0 ? lo : hi;
-  // A tie between two consecutive doubles: exactly one has an even significand, i.e. an even
-  // bit pattern (consecutive doubles of one sign have consecutive bit patterns).
-  return (predicates::bits_of(lo) & 1u) == 0 ? lo : hi;
-}
-
 /// The double nearest to (1 - t) a + t b = a + t (b - a), for 0 <= t <= 1 (ties to even); a at
 /// t = 0 and b at t = 1. Needs round-to-nearest. PROOF: proofs/discrete.md#positions
 double position_at(double a, double b, double t) {
@@ -57,7 +46,7 @@ double position_at(double a, double b, double t) {
     if (e == 0.0) return std::fma(t, d, a);
   }
   const exact::Rational ea(a);
-  return nearest_double(ea + exact::Rational(t) * (exact::Rational(b) - ea));
+  return exact::round_nearest(ea + exact::Rational(t) * (exact::Rational(b) - ea));
 }
 
 bool share_vertex(const Triangles& tri, std::uint32_t i, std::uint32_t j) {

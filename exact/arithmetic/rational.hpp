@@ -14,6 +14,9 @@ using Rational = mpq_class;
 double round_down(const Rational& q);
 /// The smallest double >= q: +inf when q > DBL_MAX, -DBL_MAX when q < -DBL_MAX.
 double round_up(const Rational& q);
+/// The double nearest to q, ties to even (IEEE round to nearest), subnormals included; +-inf
+/// from +-(DBL_MAX + half its ulp) on, as a correctly rounded conversion gives.
+double round_nearest(const Rational& q);
 /// True when q is exactly a finite double (and then sets *d to it).
 bool to_double_exactly(const Rational& q, double* d);
 
