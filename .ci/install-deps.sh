@@ -16,6 +16,10 @@ packages=(
   # FCL 0.7: the comparison of rigid-body CCD with FCL's continuous collision
   # (bench/fcl_comparison; built only when CMake finds it, the library never uses it).
   libfcl-dev
+  # The inspector pages (issue 29): Debian's three.js, inlined into every page; their browser
+  # tests (tests/browser) drive Debian's Chromium headless through ChromeDriver and Selenium,
+  # with a font for the pages' text.
+  libjs-three chromium chromium-driver python3-selenium fonts-liberation
 )
 if [[ "${1:-}" == "--with-plots" ]]; then packages+=(python3-matplotlib); fi
 # .ci/sanitizers.sh: clang with its sanitizer and libFuzzer runtimes, llvm-symbolizer for traces.

@@ -74,6 +74,7 @@ TEST_F(CliRobustness, StdoutOnAFullDeviceExitsTwo) {
        "--truth", "none"},
       {"generate", "--out", (dir_ / "gen").string(), "--per-family", "7", "--families",
        "vf_interior"},
+      {"inspect", small, "--index", "2"},
       {"--help"},
       {"check", "--help"}};
   for (const std::vector<std::string>& args : commands) {

@@ -14,6 +14,9 @@
 #include "corpus/corpus_writer.hpp"
 #include "corpus/point_families.hpp"
 #include "oracle/common.hpp"
+#include "oracle/inspection.hpp"
+#include "oracle/inspection_report.hpp"
+#include "oracle/inspector_page.hpp"
 #include "oracle/output_file.hpp"
 
 namespace exactccd::cli {
@@ -136,6 +139,45 @@ int run_generate_points(const GenerateOptions& options, PrimitiveKind kind) {
   return kExitAgree;
 }
 
+// DIR/index.html and DIR/inspect/<family>.html: a browsable index of the suite, one inspector
+// page per family on a representative member (its first colliding one, else its first).
+void write_suite_index(const families::Corpus& corpus, const fs::path& root, Overwrite overwrite) {
+  InspectionFolder pages((root / "inspect").string(), overwrite, "--html");
+  InspectSettings settings;
+  settings.min_separation = corpus.min_separation.value_or(0.0);
+  IndexSection table{"Families", "",
+                     {"family", "type", "queries", "collisions", "inspected member", "what it is"},
+                     {}};
+  for (const families::GeneratedFamily& g : corpus.families) {
+    std::size_t member = 0;
+    for (std::size_t i = 0; i < g.exact.size(); ++i)
+      if (g.exact[i].collides) {
+        member = i;
+        break;
+      }
+    const fs::path data = root / families::family_folder(g.family) / "data_0.csv";
+    const QueryFile file = read_query_file(data.string(), g.family.type);
+    const std::string page = pages.add_page(
+        g.family.name,
+        inspection_json(file.queries.at(member), g.family.type, data.string(), member, settings));
+    table.rows.push_back({{g.family.name, to_string(g.family.type),
+                           std::to_string(g.family.members.size()), std::to_string(g.collisions()),
+                           "query " + std::to_string(member) + " (" +
+                               g.family.members[member].label + ")",
+                           g.family.description},
+                          {"inspect/" + page}});
+  }
+  const std::string intro =
+      "The queries exactccd generate wrote here (seed " + std::to_string(corpus.seed) + ", " +
+      std::to_string(corpus.per_family) + " per family" +
+      (corpus.min_separation ? ", minimum separation " + format_double(*corpus.min_separation)
+                             : std::string()) +
+      "), with the exact path's truth. Each family links to the inspector of one member.";
+  write_file_atomically((root / "index.html").string(),
+                        index_page("exactccd generate: the suite", intro, {table}), overwrite,
+                        "--html");
+}
+
 }  // namespace
 
 int run_generate(const GenerateOptions& options) {
@@ -143,6 +185,8 @@ int run_generate(const GenerateOptions& options) {
     throw UsageError("--per-family must lie in [" + std::to_string(families::kMinPerFamily) + ", " +
                      std::to_string(families::kMaxPerFamily) + "], got " +
                      std::to_string(options.per_family));
+  if (options.primitive && options.html)
+    throw UsageError("--html indexes the vertex-face and edge-edge families (not --type)");
   if (options.primitive) return run_generate_points(options, *options.primitive);
   if (options.min_separation) {
     const std::string problem = families::min_separation_delta_problem(*options.min_separation);
@@ -175,6 +219,10 @@ int run_generate(const GenerateOptions& options) {
   check_output_folder(root);
   // An earlier run's manifest: refused before the work (the other files after it, once known).
   check_output_path((root / "manifest.json").string(), overwrite, "--out");
+  if (options.html) {
+    require_inspector();
+    check_output_path((root / "index.html").string(), overwrite, "--html");
+  }
 
   const auto start = std::chrono::steady_clock::now();
   const families::Corpus corpus =
@@ -185,6 +233,7 @@ int run_generate(const GenerateOptions& options) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_corpus_files(corpus, root, overwrite);
+  if (options.html) write_suite_index(corpus, root, overwrite);
 
   std::size_t mismatches = 0, queries = 0, collisions = 0;
   for (const families::GeneratedFamily& g : corpus.families)

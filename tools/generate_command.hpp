@@ -28,6 +28,8 @@ struct GenerateOptions {
   /// --type: the degenerate families of this point kind (point_families.hpp) instead, one file
   /// of the kind per family, DIR/<family>.csv.
   std::optional<PrimitiveKind> primitive;
+  /// --html: also DIR/index.html and DIR/inspect/<family>.html (oracle/inspection_report.hpp).
+  bool html = false;
 };
 
 /// Runs the subcommand: 0 when every base-family member's exact verdict and TOI match its

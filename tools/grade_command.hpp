@@ -2,6 +2,7 @@
 // (oracle/grade.hpp) and print the findings.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -19,6 +20,9 @@ struct GradeOptions {
   double t_max = 1.0;
   double min_separation = 0.0;  ///< --min-separation: delta >= 0 (0: contact)
   bool json = false;
+  std::string html_path;       ///< --html REPORT.html (empty: none)
+  std::size_t html_limit = 10; ///< inspector pages per kind of finding
+  bool force = false;          ///< replace REPORT.html and the pages of its folder
 };
 
 /// Returns 0 when every answer is right and every toi conservative, 1 otherwise. Throws

@@ -25,6 +25,7 @@
 #include "exactccd/version.hpp"
 #include "generate_command.hpp"
 #include "grade_command.hpp"
+#include "inspect_command.hpp"
 #include "rigid_command.hpp"
 #include "oracle/command_line.hpp"
 #include "oracle/common.hpp"
@@ -108,6 +109,10 @@ int forward_to_study(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   if (argc >= 2 && std::strcmp(argv[1], "study") == 0) return forward_to_study(argc, argv);
+  // Output to a file or pipe in one buffer as large as any summary or help text (the help has
+  // outgrown stdio's 4 KiB): a failed write then surfaces in finish()'s fflush, with its reason.
+  static char stdout_buffer[1 << 16];
+  if (!isatty(STDOUT_FILENO)) std::setvbuf(stdout, stdout_buffer, _IOFBF, sizeof stdout_buffer);
 
   CLI::App app(
       "Exact continuous collision detection oracle for the CCD benchmark "
@@ -173,6 +178,15 @@ int main(int argc, char** argv) {
   add_check_type_option(grade, grade_type);
   add_t_max_option(grade, grade_options.t_max);
   add_min_separation_option(grade, grade_options.min_separation);
+  grade->add_option("--html", grade_options.html_path,
+                    "Also write REPORT.html: the grading tables and an inspector page for each of "
+                    "the first findings of each kind, in the folder REPORT_files beside it "
+                    "(refused if either exists, without --force)");
+  grade->add_option("--html-limit", grade_options.html_limit,
+                    "Inspector pages per kind of finding in the --html report")
+      ->check(numeric_text(true) & CLI::NonNegativeNumber)
+      ->capture_default_str();
+  add_force_flag(grade, grade_options.force);
 
   SimulateOptions simulate_options;
   std::string simulate_truth = "exact";
@@ -326,6 +340,9 @@ int main(int argc, char** argv) {
   }
   generate->add_option("--out", generate_options.out_dir, "The output folder DIR")->required();
   add_force_flag(generate, generate_options.force);
+  generate->add_flag("--html", generate_options.html,
+                     "Also write DIR/index.html, a browsable index of the suite, and one inspector "
+                     "page per family (a representative member) in DIR/inspect");
   generate->add_option("--seed", generate_options.seed, "Seed of the constructions")
       ->check(seed_text())
       ->capture_default_str();
@@ -379,6 +396,42 @@ int main(int argc, char** argv) {
                        "at which primitives of two bodies come within Euclidean distance delta "
                        "(0: contact). Replaces the scene file's \"min_separation\"")
           ->check(numeric_text(false));
+
+  InspectOptions inspect_options;
+  std::string inspect_type, inspect_mode = exactccd::to_string(exactccd::Mode::filtered);
+  CLI::App* inspect = app.add_subcommand(
+      "inspect",
+      "Show one query of a benchmark CSV file (or the first contact of a step of a rigid scene "
+      "file, FILE.json): its answer in a mode, the exact and float_only "
+      "answers, the polynomial that decides it with its roots as exact brackets and the "
+      "inclusion test at each, and the contact geometry; with --html, as one self-contained "
+      "page (a 3D view with a time slider, a plot of the polynomial, a panel; nothing fetched "
+      "at view time) for a browser.");
+  inspect->footer(kExitStatusHelp);
+  inspect->add_option("FILE", inspect_options.path, "The benchmark CSV file")->required();
+  inspect->add_option("--index", inspect_options.index, "The 0-based query index in FILE")
+      ->check(numeric_text(true) & CLI::NonNegativeNumber)
+      ->capture_default_str();
+  inspect->add_option("--mode", inspect_mode,
+                      std::string(kModeHelp) +
+                          ". Coordinates must be doubles, except with --mode exact")
+      ->check(mode_name_check())
+      ->capture_default_str();
+  add_type_option(inspect, inspect_type);
+  add_t_max_option(inspect, inspect_options.settings.t_max);
+  add_min_separation_option(inspect, inspect_options.settings.min_separation);
+  inspect->add_option("--html", inspect_options.html_path,
+                      "Write the inspector page OUT.html (refused if it exists, without --force)");
+  add_force_flag(inspect, inspect_options.force);
+  inspect->add_flag("--json", inspect_options.json,
+                    "Print the inspection as JSON (the page's data) instead of text");
+  std::size_t inspect_step = 0;
+  CLI::Option* inspect_step_option =
+      inspect
+          ->add_option("--step", inspect_step,
+                       "With a rigid scene file (FILE.json, as exactccd rigid runs it): show the "
+                       "first contact of this step (1-based; default: the first step with one)")
+          ->check(numeric_text(true) & CLI::NonNegativeNumber);
 
   // CLI11 would only say that a subcommand is required.
   if (argc >= 2 && argv[1][0] != '-') {
@@ -478,6 +531,15 @@ int main(int argc, char** argv) {
       if (!generate_type.empty())
         generate_options.primitive = exactccd::primitive_kind_from_name(generate_type);
       return run_generate(generate_options);
+    }
+    if (inspect->parsed()) {
+      inspect_options.type = parse_type_name(inspect_type);
+      inspect_options.settings.mode = *parse_mode_name(inspect_mode);
+      if (inspect_step_option->count() > 0) inspect_options.step = inspect_step;
+      inspect_options.mode_given = inspect->get_option("--mode")->count() > 0;
+      inspect_options.t_max_given = inspect->get_option("--t-max")->count() > 0;
+      inspect_options.min_separation_given = inspect->get_option("--min-separation")->count() > 0;
+      return run_inspect(inspect_options);
     }
     grade_options.type = parse_type_name(grade_type);
     grade_options.primitive = exactccd::primitive_kind_from_name(grade_type);

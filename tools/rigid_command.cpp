@@ -29,11 +29,6 @@ namespace {
 using oracle::format_double;
 using Json = nlohmann::json;
 
-struct StepResult {
-  EarliestContact earliest;
-  double start_rounding = 0.0;  ///< largest rounding of a rigid body's start pose
-};
-
 bool moves(const RigidMotion& m) {
   return m.cayley != Eigen::Vector3d::Zero() || m.translation != Eigen::Vector3d::Zero();
 }
@@ -90,7 +85,7 @@ Json json_of(const Feature& f, const RigidSceneFile& file) {
 Json nullable(bool defined, double value) { return defined ? Json(value) : Json(nullptr); }
 
 void print_text(const RigidOptions& o, const RigidSceneFile& file, double delta,
-                const Scene& scene, const std::vector<StepResult>& steps) {
+                const Scene& scene, const std::vector<RigidStepResult>& steps) {
   std::size_t rigid = 0;
   for (const SceneBody& b : file.bodies) rigid += b.kind == BodyKind::rigid;
   std::cout << o.scene_path << ": " << file.bodies.size()
@@ -103,7 +98,7 @@ void print_text(const RigidOptions& o, const RigidSceneFile& file, double delta,
   std::cout << "\n";
   std::optional<std::size_t> first;
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const StepResult& r = steps[k];
+    const RigidStepResult& r = steps[k];
     std::cout << "step " << k + 1 << ": ";
     if (!r.earliest.collides) {
       std::cout << "collision-free";
@@ -131,7 +126,7 @@ void print_text(const RigidOptions& o, const RigidSceneFile& file, double delta,
 }
 
 void print_json(const RigidOptions& o, const RigidSceneFile& file, double delta,
-                const Scene& scene, const std::vector<StepResult>& steps) {
+                const Scene& scene, const std::vector<RigidStepResult>& steps) {
   Json bodies = Json::array();
   for (const SceneBody& b : file.bodies)
     bodies.push_back({{"name", b.name},
@@ -148,7 +143,7 @@ void print_json(const RigidOptions& o, const RigidSceneFile& file, double delta,
               {"first_contact_step", nullptr}};
   Json list = Json::array();
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const StepResult& r = steps[k];
+    const RigidStepResult& r = steps[k];
     Json step = {{"step", k + 1},
                  {"start_rounding", r.start_rounding},
                  {"collides", r.earliest.collides},
@@ -180,12 +175,16 @@ double min_separation_of(const RigidOptions& o, const RigidSceneFile& file) {
 
 }  // namespace
 
-int run_rigid(const RigidOptions& options) {
-  // The command line first: a bad --min-separation is refused before any file is read.
-  if (options.min_separation) oracle::validate_min_separation(*options.min_separation);
-  const RigidSceneFile file = read_rigid_scene_file(options.scene_path);
-  const double delta = min_separation_of(options, file);
-  Scene scene;
+std::string contact_features_text(const Scene& scene, const RigidSceneFile& file,
+                                  const ScenePair& pair) {
+  const auto [a, b] = features_of(scene, pair);
+  return std::string(to_string(pair.type)) + ", " + text_of(a, file) + " against " +
+         text_of(b, file);
+}
+
+std::vector<RigidStepResult> run_rigid_steps(const RigidSceneFile& file, double delta,
+                                             const std::string& scene_path, Scene& scene,
+                                             const RigidStepVisitor& visit) {
   std::vector<Positions> start;  // each body's positions at the start of the current step
   for (std::size_t i = 0; i < file.bodies.size(); ++i) {
     const SceneBody& b = file.bodies[i];
@@ -197,7 +196,7 @@ int run_rigid(const RigidOptions& options) {
         case BodyKind::plane: scene.add_plane(b.origin, b.normal); break;
       }
     } catch (const std::invalid_argument& e) {  // validated already; kept as a bad-input error
-      throw InputError(options.scene_path, 0, "bodies[" + std::to_string(i) + "]: " + e.what());
+      throw InputError(scene_path, 0, "bodies[" + std::to_string(i) + "]: " + e.what());
     }
     start.push_back(b.positions);
   }
@@ -206,9 +205,9 @@ int run_rigid(const RigidOptions& options) {
   o.ccd.toi_width = file.toi_width;
   o.ccd.mode = file.mode;
   o.min_separation = delta;  // the scene gives every pair this delta
-  std::vector<StepResult> results;
+  std::vector<RigidStepResult> results;
   for (std::size_t k = 0; k < file.step_count; ++k) {
-    StepResult r;
+    RigidStepResult r;
     for (std::size_t i = 0; i < file.bodies.size(); ++i) {
       const SceneBody& b = file.bodies[i];
       const auto id = static_cast<MeshId>(i);
@@ -217,7 +216,7 @@ int run_rigid(const RigidOptions& options) {
         if (k > 0 && k - 1 < b.steps.size() && moves(b.steps[k - 1])) {
           double rounding = 0.0;
           start[i] = rounded_end_pose(start[i], b.steps[k - 1], &rounding,
-                                      options.scene_path + ": bodies[" + std::to_string(i) + "]");
+                                      scene_path + ": bodies[" + std::to_string(i) + "]");
           r.start_rounding = std::max(r.start_rounding, rounding);
         }
         scene.set_rigid_motion(id, start[i], k < b.steps.size() ? b.steps[k] : RigidMotion{});
@@ -231,7 +230,19 @@ int run_rigid(const RigidOptions& options) {
     }
     r.earliest = scene.earliest_contact(o);
     results.push_back(r);
+    if (visit && !visit(k, results.back())) break;
   }
+  return results;
+}
+
+int run_rigid(const RigidOptions& options) {
+  // The command line first: a bad --min-separation is refused before any file is read.
+  if (options.min_separation) oracle::validate_min_separation(*options.min_separation);
+  const RigidSceneFile file = read_rigid_scene_file(options.scene_path);
+  const double delta = min_separation_of(options, file);
+  Scene scene;
+  const std::vector<RigidStepResult> results =
+      run_rigid_steps(file, delta, options.scene_path, scene);
   if (options.json)
     print_json(options, file, delta, scene, results);
   else

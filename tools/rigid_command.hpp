@@ -2,8 +2,14 @@
 // Scene::earliest_contact and prints the first contact of each step with its features.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "exactccd/scene.hpp"
+#include "rigid_scene_file.hpp"
 
 namespace exactccd::cli {
 
@@ -14,6 +20,26 @@ struct RigidOptions {
   /// "min_separation".
   std::optional<double> min_separation;
 };
+
+/// One step of a scene run: its earliest contact, and how far rounding moved the start poses.
+struct RigidStepResult {
+  EarliestContact earliest;
+  double start_rounding = 0.0;  ///< largest rounding of a rigid body's start pose
+};
+
+/// Called after each step with the scene still in that step's motions; false stops the run.
+using RigidStepVisitor = std::function<bool(std::size_t step, const RigidStepResult& result)>;
+
+/// Adds the file's bodies to `scene` (empty) and runs its steps with Scene::earliest_contact
+/// (each step from the previous step's exact end pose rounded to doubles), with minimum
+/// separation `delta`. Throws InputError naming `scene_path`.
+std::vector<RigidStepResult> run_rigid_steps(const RigidSceneFile& file, double delta,
+                                             const std::string& scene_path, Scene& scene,
+                                             const RigidStepVisitor& visit = {});
+
+/// "vertex_face, vertex 3 of body 0 'box' against triangle 7 (vertices 1 2 3) of body 1 ..."
+std::string contact_features_text(const Scene& scene, const RigidSceneFile& file,
+                                  const ScenePair& pair);
 
 /// Exit statuses of `exactccd rigid`, for its --help.
 extern const char* const kRigidExitStatusHelp;

@@ -63,6 +63,7 @@ from ._exactccd import (
     rigid_vertex_face_ccd,
     rigid_vertex_face_collision_free_step,
 )
+from .inspect import inspect
 from .query_files import (
     QueryData,
     read_query_file,
@@ -146,7 +147,7 @@ __all__ = [
     "BatchContact", "BatchResult", "CONTACT_KIND_NAMES", "CcdResult", "ContactGeometry",
     "EarliestContact", "InputError", "MODE_NAMES", "QueryData", "QueryType", "RigidCcdResult",
     "RigidMotion", "STAGE_NAMES", "Scene", "SceneContact", "ScenePair", "SceneResult",
-    "SceneStats", "StepResult", "__version__", "edge_edge_ccd", "edge_edge_ccd_batch",
+    "SceneStats", "StepResult", "__version__", "edge_edge_ccd", "edge_edge_ccd_batch", "inspect",
     "edge_edge_collision_free_step", "exact_ccd", "find_query_files", "point_edge_ccd",
     "point_edge_ccd_batch", "point_edge_collision_free_step", "point_plane_ccd",
     "point_plane_ccd_batch", "point_point_ccd", "point_point_ccd_batch",

@@ -17,6 +17,9 @@
 #include "oracle/common.hpp"
 #include "oracle/exact_doubles.hpp"
 #include "oracle/grade.hpp"
+#include "oracle/inspection.hpp"
+#include "oracle/inspector_page.hpp"
+#include "oracle/output_file.hpp"
 #include "oracle/names.hpp"
 
 namespace exactccd::python {
@@ -191,6 +194,30 @@ void bind_oracle(py::module_& m) {
   m.def("_grade_file_shard", &grade_file_shard, py::arg("queries_path"),
         py::arg("answers_path"), py::arg("type"), py::arg("begin"), py::arg("end"),
         py::arg("t_max"));
+  // exactccd.inspect: the command's inspection and page (oracle/inspection.hpp).
+  m.def(
+      "_inspect",
+      [](const std::string& path, std::size_t index, const std::optional<std::string>& type,
+         const std::string& mode, double t_max, double min_separation) {
+        oracle::validate_t_max(t_max);
+        oracle::validate_min_separation(min_separation);
+        oracle::InspectSettings settings;
+        settings.mode = parse_mode(mode);
+        settings.t_max = t_max;
+        settings.min_separation = min_separation;
+        py::gil_scoped_release release;
+        return oracle::inspect_file_query(path, forced_type(type), index, settings);
+      },
+      py::arg("path"), py::arg("index"), py::arg("type"), py::arg("mode"), py::arg("t_max"),
+      py::arg("min_separation"));
+  m.def(
+      "_write_inspector_page",
+      [](const std::string& json, const std::string& path, bool force) {
+        const oracle::Overwrite overwrite =
+            force ? oracle::Overwrite::replace : oracle::Overwrite::refuse;
+        oracle::write_file_atomically(path, oracle::inspector_page(json), overwrite, "html");
+      },
+      py::arg("json"), py::arg("path"), py::arg("force"));
   m.def(
       "_merge_tallies",
       [](const py::list& tallies, const std::string& file) {

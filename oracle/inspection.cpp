@@ -1,0 +1,543 @@
+#include "oracle/inspection.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <type_traits>
+#include <vector>
+
+#include "core/predicates/coplanarity_cubic.hpp"
+#include "core/predicates/inclusion.hpp"
+#include "exact/arithmetic/rational.hpp"
+#include "exact/polynomials/root_isolation.hpp"
+#include "exact/reference/earliest_contact.hpp"
+#include "exact/reference/primitive_contact.hpp"
+#include "exact/reference/rigid_ccd.hpp"
+#include "exact/stages/rigid_exact_stage.hpp"
+#include "corpus/rigid_exact_pose.hpp"
+#include "pipeline/rigid_query_check.hpp"
+#include "exactccd/ccd.hpp"
+#include "exactccd/contact.hpp"
+#include "exactccd/rational_query.hpp"
+#include "exactccd/rigid.hpp"
+#include "oracle/exact_doubles.hpp"
+#include "oracle/names.hpp"
+
+namespace exactccd::oracle {
+namespace {
+
+using nlohmann::json;
+using exact::AlgebraicTime;
+using exact::Polynomial;
+using exact::Rational;
+
+json time_value(double t) { return std::isfinite(t) ? json(t) : json(nullptr); }
+
+json answer_json(const CcdResult& r) {
+  return {{"collides", r.collides},
+          {"toi_lo", time_value(r.toi_lo)},
+          {"toi_hi", time_value(r.toi_hi)},
+          {"decided_by", to_string(r.decided_by)}};
+}
+
+std::string exact_text(const Rational& q) { return q.get_str(); }
+
+// The nearest double of each coordinate, for drawing and for the double distance samples.
+std::array<Eigen::Vector3d, 8> nearest_doubles(const RationalQuery& q) {
+  std::array<Eigen::Vector3d, 8> p;
+  for (int i = 0; i < 8; ++i)
+    p[i] = {q.points[i].x.get_d(), q.points[i].y.get_d(), q.points[i].z.get_d()};
+  return p;
+}
+
+// The simplest rational in the closed interval [a, b], 0 <= a <= b (the continued fraction of
+// the two ends up to where they part): what a reader would write for the root, 2/3 say.
+Rational simplest_rational_between(Rational a, Rational b) {
+  // Continued-fraction convergents of the answer: h/k = (h1 q + h0) / (k1 q + k0).
+  mpz_class h0 = 0, h1 = 1, k0 = 1, k1 = 0;
+  for (int guard = 0; guard < 4096; ++guard) {
+    mpz_class q;
+    mpz_fdiv_q(q.get_mpz_t(), a.get_num_mpz_t(), a.get_den_mpz_t());  // floor(a)
+    if (Rational(q) == a || Rational(q + 1) <= b) {  // an integer lies in [a, b]
+      const mpz_class n = Rational(q) == a ? q : q + 1;
+      return Rational(h1 * n + h0, k1 * n + k0);
+    }
+    const mpz_class h = h1 * q + h0, k = k1 * q + k0;
+    h0 = h1, h1 = h, k0 = k1, k1 = k;
+    // [a, b] -> [1 / (b - q), 1 / (a - q)].
+    const Rational na = 1 / (b - q), nb = 1 / (a - q);
+    a = na, b = nb;
+  }
+  return Rational(h1, k1);  // not reached for doubles' brackets
+}
+
+// The root's exact value when it is rational and simple to find: the time says so already, or
+// the simplest rational of its isolating interval (unique root there) is a zero.
+std::optional<Rational> rational_root(const Polynomial& poly, AlgebraicTime& t) {
+  if (t.is_rational()) return t.lo();
+  const Rational r = simplest_rational_between(t.lo(), t.hi());
+  if (sgn(poly.evaluate(r)) == 0) return r;
+  return std::nullopt;
+}
+
+// One polynomial of the exact path with its real roots in [0, t_max], each an exact bracket
+// and the inclusion test's answer there. `contact_at` is the instant predicate.
+template <class ContactAt>
+json polynomial_json(const std::string& name, const Polynomial& poly, const Rational& t_max,
+                     ContactAt&& contact_at, std::optional<AlgebraicTime>* earliest) {
+  json coefficients_exact = json::array(), coefficients = json::array();
+  for (const Rational& c : poly.coefficients()) {
+    coefficients_exact.push_back(exact_text(c));
+    coefficients.push_back(c.get_d());
+  }
+  json roots = json::array();
+  if (poly.degree() >= 1 && sgn(t_max) > 0) {
+    for (AlgebraicTime& t : exact::real_roots_in(poly, Rational(0), t_max)) {
+      const bool inclusion = contact_at(t);
+      if (inclusion && (!*earliest || exact::compare(t, **earliest) < 0)) *earliest = t;
+      const auto [lo, hi] = t.enclosure(0.0);  // refines t's interval: then look for a rational
+      std::optional<Rational> value = rational_root(poly, t);
+      roots.push_back({{"lo", lo},
+                       {"hi", hi},
+                       {"exact", value ? json(exact_text(*value)) : json(nullptr)},
+                       {"inclusion", inclusion},
+                       {"earliest", false}});
+    }
+  }
+  return {{"name", name},
+          {"coefficients_exact", coefficients_exact},
+          {"coefficients", coefficients},
+          {"identically_zero", poly.is_zero()},
+          {"roots", roots}};
+}
+
+// Marks the root whose bracket is the earliest contact's (the same doubles).
+void mark_earliest(json& polynomials, const std::optional<AlgebraicTime>& earliest) {
+  if (!earliest) return;
+  AlgebraicTime t = *earliest;
+  const auto [lo, hi] = t.enclosure(0.0);
+  for (json& p : polynomials)
+    for (json& r : p["roots"])
+      if (r["inclusion"].get<bool>() && r["lo"].get<double>() == lo &&
+          r["hi"].get<double>() == hi) {
+        r["earliest"] = true;
+        return;
+      }
+}
+
+// The polynomials that decide a contact query of four moving points y (any moving-point type
+// of the exact path) given its coplanarity polynomial: that polynomial, or, when it vanishes
+// identically, the vertex-edge candidates of the coplanar case (and t = 0).
+// PROOF: proofs/exact_ccd.md#theorem-1
+template <class Point>
+json contact_polynomials(QueryType type, const std::array<Point, 4>& y,
+                         const Polynomial& coplanarity, const std::string& name,
+                         const Rational& t_max, bool* contact_at_start) {
+  json polynomials = json::array();
+  std::optional<AlgebraicTime> earliest;
+  *contact_at_start = false;
+  auto contact_at = [&](AlgebraicTime& t) {
+    return type == QueryType::vertex_face
+               ? predicates::point_in_triangle_at(y[0], y[1], y[2], y[3], exact::sign_at(t))
+               : predicates::segments_intersect_at(y[0], y[1], y[2], y[3], exact::sign_at(t));
+  };
+  polynomials.push_back(polynomial_json(name, coplanarity, t_max, contact_at, &earliest));
+  if (coplanarity.is_zero()) {
+    AlgebraicTime start = AlgebraicTime::rational(Rational(0));
+    *contact_at_start = contact_at(start);
+    using exact::vertex_edge_candidates;
+    if (type == QueryType::vertex_face) {
+      const char* names[] = {"p against side ab", "p against side bc", "p against side ca"};
+      const Polynomial sides[] = {vertex_edge_candidates(y[0], y[1], y[2]),
+                                  vertex_edge_candidates(y[0], y[2], y[3]),
+                                  vertex_edge_candidates(y[0], y[3], y[1])};
+      for (int k = 0; k < 3; ++k)
+        polynomials.push_back(polynomial_json(names[k], sides[k], t_max, contact_at, &earliest));
+    } else {
+      const char* names[] = {"ea0 against edge b", "ea1 against edge b", "eb0 against edge a",
+                             "eb1 against edge a"};
+      const Polynomial ends[] = {
+          vertex_edge_candidates(y[0], y[2], y[3]), vertex_edge_candidates(y[1], y[2], y[3]),
+          vertex_edge_candidates(y[2], y[0], y[1]), vertex_edge_candidates(y[3], y[0], y[1])};
+      for (int k = 0; k < 4; ++k)
+        polynomials.push_back(polynomial_json(names[k], ends[k], t_max, contact_at, &earliest));
+    }
+  }
+  if (!*contact_at_start) mark_earliest(polynomials, earliest);
+  return polynomials;
+}
+
+// The linear query's polynomials: the coplanarity cubic of its moving points.
+json contact_polynomials(const RationalQuery& q, const Rational& t_max, bool* contact_at_start) {
+  const auto& v = q.points;
+  using exact::moving;
+  const std::array<predicates::MovingPoint<Rational>, 4> y = {
+      moving(v[0], v[4]), moving(v[1], v[5]), moving(v[2], v[6]), moving(v[3], v[7])};
+  const bool vf = q.type == QueryType::vertex_face;
+  const Polynomial cubic(vf ? predicates::vertex_face_coplanarity_cubic(y[0], y[1], y[2], y[3])
+                            : predicates::edge_edge_coplanarity_cubic(y[0], y[1], y[2], y[3]));
+  return contact_polynomials(q.type, y, cubic,
+                             vf ? "coplanarity cubic det[b - a, c - a, p - a](t)"
+                                : "coplanarity cubic det[ea1 - ea0, eb0 - ea0, eb1 - ea0](t)",
+                             t_max, contact_at_start);
+}
+
+// Distances for the plot of a minimum-separation query, in double: for display only.
+double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                              const Eigen::Vector3d& b) {
+  const Eigen::Vector3d d = b - a;
+  const double l = d.squaredNorm();
+  const double s = l > 0 ? std::clamp((p - a).dot(d) / l, 0.0, 1.0) : 0.0;
+  return (p - (a + s * d)).norm();
+}
+
+double point_triangle_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                               const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  double best = std::min({point_segment_distance(p, a, b), point_segment_distance(p, b, c),
+                          point_segment_distance(p, c, a)});
+  const Eigen::Vector3d n = (b - a).cross(c - a);
+  const double n2 = n.squaredNorm();
+  if (n2 > 0) {
+    const Eigen::Vector3d f = p - n * ((p - a).dot(n) / n2);  // foot on the plane
+    const bool inside = (b - a).cross(f - a).dot(n) >= 0 && (c - b).cross(f - b).dot(n) >= 0 &&
+                        (a - c).cross(f - c).dot(n) >= 0;
+    if (inside) best = std::min(best, (p - f).norm());
+  }
+  return best;
+}
+
+double segment_segment_distance(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                                const Eigen::Vector3d& b0, const Eigen::Vector3d& b1) {
+  double best = std::min({point_segment_distance(a0, b0, b1), point_segment_distance(a1, b0, b1),
+                          point_segment_distance(b0, a0, a1), point_segment_distance(b1, a0, a1)});
+  const Eigen::Vector3d u = a1 - a0, v = b1 - b0, w = a0 - b0;
+  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), uw = u.dot(w), vw = v.dot(w);
+  const double den = uu * vv - uv * uv;
+  if (den > 0) {  // interior closest points, when they lie on both segments
+    const double s = (uv * vw - vv * uw) / den, t = (uu * vw - uv * uw) / den;
+    if (s >= 0 && s <= 1 && t >= 0 && t <= 1)
+      best = std::min(best, (w + s * u - t * v).norm());
+  }
+  return best;
+}
+
+json distance_samples(const std::array<Eigen::Vector3d, 8>& x, QueryType type, double t_max,
+                      double delta) {
+  constexpr int kSamples = 400;
+  json samples = json::array();
+  for (int i = 0; i <= kSamples; ++i) {
+    const double t = t_max * i / kSamples;
+    std::array<Eigen::Vector3d, 4> p;
+    for (int k = 0; k < 4; ++k) p[k] = (1 - t) * x[k] + t * x[k + 4];
+    const double d = type == QueryType::vertex_face
+                         ? point_triangle_distance(p[0], p[1], p[2], p[3])
+                         : segment_segment_distance(p[0], p[1], p[2], p[3]);
+    samples.push_back({t, d});
+  }
+  return {{"delta", delta}, {"samples", samples}};
+}
+
+json enclosures_json(const std::array<Enclosure, 3>& e, int count = 3) {
+  json out = json::array();
+  for (int k = 0; k < count; ++k) out.push_back({e[k].lo, e[k].hi});
+  return out;
+}
+
+json geometry_json(const ContactGeometry& g) {
+  return {{"kind", to_string(g.kind)},
+          {"point", enclosures_json(g.point)},
+          {"normal", enclosures_json(g.normal)},
+          {"normal_oriented", g.normal_oriented},
+          {"parameters", enclosures_json(g.parameters, g.parameter_count)}};
+}
+
+}  // namespace
+
+std::string inspection_json(const QueryRecord& record, QueryType type, const std::string& source,
+                            std::size_t index, const InspectSettings& settings,
+                            const GradedAnswer* graded) {
+  RationalQuery q = record.query;
+  q.type = type;
+  CcdOptions options;
+  options.t_max = settings.t_max;
+  options.min_separation = settings.min_separation;
+  const CcdResult exact_answer = exact_ccd(q, options);  // validates the options
+
+  std::size_t bad_row = 0;
+  const std::optional<QueryPoints> doubles = exact_doubles(q, &bad_row);
+  if (!doubles && settings.mode != Mode::exact)
+    throw InputError(source, record.line_of_row(bad_row),
+                     std::string("a coordinate is not a double: mode ") + to_string(settings.mode) +
+                         " decides double queries; use --mode exact");
+  const auto x = nearest_doubles(q);
+  const bool vf = type == QueryType::vertex_face;
+
+  CcdResult answer = exact_answer, float_answer;
+  CcdOptions float_options = options;
+  float_options.mode = Mode::float_only;
+  json contact = nullptr;
+  if (doubles) {
+    options.mode = settings.mode;
+    const VertexFaceQuery vfq = vertex_face_query(*doubles);
+    const EdgeEdgeQuery eeq = edge_edge_query(*doubles);
+    answer = vf ? vertex_face_ccd(vfq, options) : edge_edge_ccd(eeq, options);
+    float_answer = vf ? vertex_face_ccd(vfq, float_options) : edge_edge_ccd(eeq, float_options);
+    if (exact_answer.collides)
+      contact = geometry_json(vf ? contact_geometry(vfq, exact_answer, settings.min_separation)
+                                 : contact_geometry(eeq, exact_answer, settings.min_separation));
+  } else {
+    const VertexFaceQuery vfq = vertex_face_query(x);
+    const EdgeEdgeQuery eeq = edge_edge_query(x);
+    float_answer = vf ? vertex_face_ccd(vfq, float_options) : edge_edge_ccd(eeq, float_options);
+  }
+
+  json points_exact = json::array(), points = json::array();
+  for (int i = 0; i < 8; ++i) {
+    const RationalPoint& p = q.points[i];
+    points_exact.push_back({exact_text(p.x), exact_text(p.y), exact_text(p.z)});
+    points.push_back({x[i].x(), x[i].y(), x[i].z()});
+  }
+
+  json doc;
+  doc["format"] = "exactccd-inspection";
+  doc["version"] = 1;
+  doc["title"] = std::string(vf ? "vertex-face" : "edge-edge") + " query " +
+                 std::to_string(index) + " of " + source;
+  doc["source"] = {{"file", source}, {"index", index}, {"first_line", record.first_line}};
+  doc["kind"] = vf ? "vertex_face" : "edge_edge";
+  doc["motion"] = "linear";
+  doc["t_max"] = settings.t_max;
+  doc["min_separation"] = settings.min_separation;
+  doc["labels"] = vf ? json{"p", "a", "b", "c"} : json{"ea0", "ea1", "eb0", "eb1"};
+  doc["points_exact"] = points_exact;
+  doc["points"] = points;
+  doc["points_are_doubles"] = doubles.has_value();
+  doc["truth"] = record.truth;
+  doc["result"] = answer_json(answer);
+  doc["result"]["mode"] = to_string(settings.mode);
+  doc["exact"] = answer_json(exact_answer);
+  doc["float_only"] = answer_json(float_answer);
+  doc["float_only"]["wrong"] = float_answer.collides != exact_answer.collides;
+  doc["float_only"]["on_rounded_points"] = !doubles.has_value();
+  doc["contact"] = contact;
+  bool at_start = false;
+  if (settings.min_separation == 0.0) {
+    doc["polynomials"] = contact_polynomials(q, Rational(settings.t_max), &at_start);
+    doc["distance"] = nullptr;
+  } else {
+    doc["polynomials"] = json::array();
+    doc["distance"] = distance_samples(x, type, settings.t_max, settings.min_separation);
+  }
+  doc["contact_at_start_coplanar"] = at_start;
+  if (graded)
+    doc["graded"] = {{"finding", graded->finding},
+                     {"collides", graded->collides},
+                     {"toi_exact", graded->toi ? json(*graded->toi) : json(nullptr)},
+                     {"toi", graded->toi ? json(graded->toi_double) : json(nullptr)}};
+  return doc.dump();
+}
+
+namespace {
+
+json rigid_answer_json(const RigidCcdResult& r) {
+  json a = answer_json(r.ccd);
+  a["has_time"] = r.has_time;
+  a["time_lo"] = r.has_time ? time_value(r.time_lo) : json(nullptr);
+  a["time_hi"] = r.has_time ? time_value(r.time_hi) : json(nullptr);
+  return a;
+}
+
+// The four points of a rigid query at s, exactly: a rigid side by its Cayley motion
+// (corpus/rigid_exact_pose.hpp, the matrix form), a linear side on its straight lines.
+std::array<rigid_pose::RationalPosition, 4> exact_points_at(const Eigen::Vector3d (&start)[4],
+                                                            const SideMotion (&side)[2],
+                                                            int first_side_points,
+                                                            const mpq_class& s) {
+  std::array<rigid_pose::RationalPosition, 4> out;
+  for (int i = 0; i < 4; ++i) {
+    const bool second = i >= first_side_points;
+    const SideMotion& m = side[second ? 1 : 0];
+    if (m.kind == PathKind::rigid) {
+      out[i] = rigid_pose::exact_position(m.rigid, start[i], s);
+    } else {
+      const Eigen::Vector3d& end = m.linear_end[second ? i - first_side_points : i];
+      for (int k = 0; k < 3; ++k)
+        out[i][k] = mpq_class(start[i][k]) + s * (mpq_class(end[k]) - mpq_class(start[i][k]));
+    }
+  }
+  return out;
+}
+
+template <class Query>
+std::string rigid_inspection(const Query& query, QueryType type, const Eigen::Vector3d (&start)[4],
+                             const SideMotion (&side)[2], const InspectSettings& settings,
+                             const std::string& title, const std::string& source,
+                             const std::vector<std::string>& labels,
+                             std::optional<std::size_t> step) {
+  const bool vf = type == QueryType::vertex_face;
+  const int first_side_points = vf ? 1 : 2;
+  auto decide = [&](Mode mode) {
+    CcdOptions options;
+    options.t_max = settings.t_max;
+    options.min_separation = settings.min_separation;
+    options.mode = mode;
+    if constexpr (std::is_same_v<Query, RigidVertexFaceQuery>)
+      return vertex_face_ccd(query, options);
+    else
+      return edge_edge_ccd(query, options);
+  };
+  const RigidCcdResult exact_answer = decide(Mode::exact);
+  const RigidCcdResult answer = decide(settings.mode);
+  const RigidCcdResult float_answer = decide(Mode::float_only);
+
+  // Samples of s: 64 pieces of [0, t_max], and the TOI's lower end, where the page shows the
+  // contact: each position exact, then rounded to the nearest double.
+  std::vector<double> times;
+  for (int k = 0; k <= 64; ++k) times.push_back(settings.t_max * k / 64);
+  if (exact_answer.ccd.collides) times.push_back(exact_answer.ccd.toi_lo);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  json positions = json::array();
+  std::vector<std::array<Eigen::Vector3d, 4>> rounded;
+  for (double s : times) {
+    const auto exact_points = exact_points_at(start, side, first_side_points, mpq_class(s));
+    json snapshot = json::array();
+    std::array<Eigen::Vector3d, 4> r;
+    for (int i = 0; i < 4; ++i) {
+      for (int k = 0; k < 3; ++k) r[i][k] = exact::round_nearest(exact_points[i][k]);
+      snapshot.push_back({r[i].x(), r[i].y(), r[i].z()});
+    }
+    positions.push_back(snapshot);
+    rounded.push_back(r);
+  }
+  json points_exact = json::array(), points = json::array();
+  for (const mpq_class& s : {mpq_class(0), mpq_class(settings.t_max)}) {
+    const auto exact_points = exact_points_at(start, side, first_side_points, s);
+    for (const auto& p : exact_points) {
+      points_exact.push_back({exact_text(p[0]), exact_text(p[1]), exact_text(p[2])});
+      points.push_back({exact::round_nearest(p[0]), exact::round_nearest(p[1]),
+                        exact::round_nearest(p[2])});
+    }
+  }
+
+  json doc;
+  doc["format"] = "exactccd-inspection";
+  doc["version"] = 1;
+  doc["title"] = title;
+  doc["source"] = {{"file", source}};
+  if (step) doc["source"]["step"] = *step;
+  doc["kind"] = vf ? "vertex_face" : "edge_edge";
+  doc["motion"] = "samples";
+  doc["parameter"] = "s";
+  doc["trajectory"] = {{"times", times}, {"positions", positions}};
+  doc["t_max"] = settings.t_max;
+  doc["min_separation"] = settings.min_separation;
+  doc["labels"] = labels;
+  doc["points_exact"] = points_exact;
+  doc["points"] = points;
+  doc["points_are_doubles"] = false;
+  doc["truth"] = nullptr;
+  doc["result"] = rigid_answer_json(answer);
+  doc["result"]["mode"] = to_string(settings.mode);
+  doc["exact"] = rigid_answer_json(exact_answer);
+  doc["float_only"] = rigid_answer_json(float_answer);
+  doc["float_only"]["wrong"] = float_answer.ccd.collides != exact_answer.ccd.collides;
+  doc["contact"] = exact_answer.ccd.collides
+                       ? geometry_json(contact_geometry(query, exact_answer,
+                                                        settings.min_separation))
+                       : json(nullptr);
+  bool at_start = false;
+  if (settings.min_separation == 0.0) {
+    const exact::RationalRigidQuery rq = exact::rational_query(pipeline::checked_query(query));
+    doc["polynomials"] = contact_polynomials(
+        type, exact::common_denominator_points(rq), exact::rigid_coplanarity_polynomial(rq),
+        "reduced rigid coplanarity polynomial g(s)", Rational(settings.t_max), &at_start);
+    doc["distance"] = nullptr;
+  } else {
+    json samples = json::array();
+    for (std::size_t j = 0; j < times.size(); ++j) {
+      const auto& p = rounded[j];
+      samples.push_back({times[j], vf ? point_triangle_distance(p[0], p[1], p[2], p[3])
+                                      : segment_segment_distance(p[0], p[1], p[2], p[3])});
+    }
+    doc["polynomials"] = json::array();
+    doc["distance"] = {{"delta", settings.min_separation}, {"samples", samples}};
+  }
+  doc["contact_at_start_coplanar"] = at_start;
+  return doc.dump();
+}
+
+}  // namespace
+
+std::string rigid_inspection_json(const RigidVertexFaceQuery& q, const InspectSettings& settings,
+                                  const std::string& title, const std::string& source,
+                                  const std::vector<std::string>& labels,
+                                  std::optional<std::size_t> step) {
+  const Eigen::Vector3d start[4] = {q.p, q.a, q.b, q.c};
+  const SideMotion side[2] = {q.vertex, q.face};
+  return rigid_inspection(q, QueryType::vertex_face, start, side, settings, title, source, labels, step);
+}
+
+std::string rigid_inspection_json(const RigidEdgeEdgeQuery& q, const InspectSettings& settings,
+                                  const std::string& title, const std::string& source,
+                                  const std::vector<std::string>& labels,
+                                  std::optional<std::size_t> step) {
+  const Eigen::Vector3d start[4] = {q.ea0, q.ea1, q.eb0, q.eb1};
+  const SideMotion side[2] = {q.edge_a, q.edge_b};
+  return rigid_inspection(q, QueryType::edge_edge, start, side, settings, title, source, labels, step);
+}
+
+std::string inspect_file_query(const std::string& path, std::optional<QueryType> type,
+                               std::size_t index, const InspectSettings& settings) {
+  const QueryType resolved = resolve_query_type(path, type);
+  const QueryFile file = read_query_file(path, resolved);
+  if (index >= file.queries.size())
+    throw InputError(path, 0,
+                     "index " + std::to_string(index) + " is past the end: the file has " +
+                         std::to_string(file.queries.size()) + " queries (0-based indices 0 to " +
+                         std::to_string(file.queries.size() - 1) + ")");
+  return inspection_json(file.queries[index], resolved, path, index, settings);
+}
+
+std::string inspection_text(const std::string& text) {
+  const json doc = json::parse(text);
+  std::ostringstream out;
+  out.precision(17);
+  auto toi = [&](const json& a) {
+    std::ostringstream s;
+    s.precision(17);
+    if (a["toi_lo"].is_null()) return std::string("+infinity (no contact)");
+    s << "[" << a["toi_lo"].get<double>() << ", " << a["toi_hi"].get<double>() << "]";
+    return s.str();
+  };
+  const json& r = doc["result"];
+  out << doc["title"].get<std::string>() << "\n";
+  out << "  " << r["mode"].get<std::string>() << ": "
+      << (r["collides"].get<bool>() ? "collides" : "no contact") << ", toi " << toi(r)
+      << ", decided by " << r["decided_by"].get<std::string>() << "\n";
+  out << "  exact: " << (doc["exact"]["collides"].get<bool>() ? "collides" : "no contact")
+      << ", toi " << toi(doc["exact"]);
+  if (doc["truth"].is_boolean()) out << "; truth column: " << (doc["truth"].get<bool>() ? "1" : "0");
+  out << "\n";
+  out << "  float_only: " << (doc["float_only"]["collides"].get<bool>() ? "collides" : "no contact")
+      << (doc["float_only"]["wrong"].get<bool>() ? " (WRONG)" : " (right)") << "\n";
+  for (const json& p : doc["polynomials"]) {
+    out << "  " << p["name"].get<std::string>() << ":";
+    if (p["identically_zero"].get<bool>()) out << " identically zero";
+    if (!p["identically_zero"].get<bool>() && p["roots"].empty()) out << " no root in [0, t_max]";
+    for (const json& root : p["roots"])
+      out << " root " << (root["exact"].is_string() ? root["exact"].get<std::string>() + " " : "")
+          << "in [" << root["lo"].get<double>() << ", " << root["hi"].get<double>() << "] "
+          << (root["inclusion"].get<bool>() ? "inside" : "outside")
+          << (root["earliest"].get<bool>() ? " (earliest contact)" : "") << ";";
+    out << "\n";
+  }
+  if (doc["contact_at_start_coplanar"].get<bool>())
+    out << "  coplanar throughout, in contact at t = 0\n";
+  return out.str();
+}
+
+}  // namespace exactccd::oracle
