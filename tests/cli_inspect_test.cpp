@@ -109,7 +109,7 @@ TEST_F(CliInspectTest, GradeReportLinksAPagePerFinding) {
                                     "--answers",    answers.string(),  "--html",
                                     limited.string(), "--html-limit", "0"};
   EXPECT_EQ(run(limit).status, 1);
-  EXPECT_NE(read_text(limited).find("1 more are not"), std::string::npos);
+  EXPECT_NE(read_text(limited).find("1 more is not"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir_ / "limited_files" / "query_1.html"));
 }
 

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "exact/arithmetic/rational.hpp"
 #include "oracle/answers_file.hpp"
 #include "oracle/common.hpp"
 #include "oracle/grade.hpp"
@@ -79,14 +80,16 @@ void write_grade_report(const GradeOptions& options, const GradeFindings& findin
       const CcdResult exact = exact_ccd(file.queries[i].query, exact_options);
       section.rows.push_back(
           {{"query " + std::to_string(i), std::to_string(file.queries[i].first_line),
-            a.collides ? "1" : "0", a.toi ? a.toi->get_str() : "-",
+            a.collides ? "1" : "0", a.toi ? format_double(exact::round_nearest(*a.toi)) : "-",
             exact.collides ? format_double(exact.toi_lo) : "no contact"},
            {folder_name + "/" + page}});
     }
-    if (kind.indices.size() > options.html_limit)
+    if (kind.indices.size() > options.html_limit) {
+      const std::size_t rest = kind.indices.size() - options.html_limit;
       section.text = "The first " + std::to_string(options.html_limit) + " are shown; " +
-                     std::to_string(kind.indices.size() - options.html_limit) +
-                     " more are not (exactccd grade --json lists them; --html-limit shows more).";
+                     std::to_string(rest) + (rest == 1 ? " more is not" : " more are not") +
+                     " (exactccd grade --json lists them; --html-limit shows more).";
+    }
     sections.push_back(std::move(section));
   }
   const std::string intro = "Answers " + options.answers_path + " graded against the exact "
