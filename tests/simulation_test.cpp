@@ -22,6 +22,8 @@
 #include <tuple>
 #include <vector>
 
+#include "corpus/barrier_steps.hpp"
+#include "exactccd/scene.hpp"
 #include "corpus/broad_phase.hpp"
 #include "corpus/simulation_queries.hpp"
 #include "exactccd/query_file.hpp"
@@ -369,6 +371,53 @@ TEST_F(SimulateCommand, KeepsEarlierDataFilesAndRejectsBadConfig) {
   EXPECT_EQ(simulate_command({"--resolution 1"}), 2);
   EXPECT_EQ(simulate_command({"--steps 0"}), 2);
   EXPECT_EQ(simulate_command({"--truth maybe"}), 2);
+}
+
+TEST_F(SimulateCommand, BarrierStepWritesTheScenesCandidatesWithExactTruth) {
+  ASSERT_EQ(simulate_command({"--barrier-step rollers", "--barrier-scale 0.02"}), 0);
+  // The scene's own candidates and contacts, in pair order: the files hold the candidates, and
+  // the exact path's truth of each equals the scene's (filtered) verdict.
+  exactccd::Scene scene =
+      exactccd::corpus::make_scene(exactccd::corpus::barrier_step("rollers", 0.02));
+  exactccd::SceneOptions options;
+  options.record_candidates = true;
+  const exactccd::SceneResult result = scene.find_contacts(options);
+  std::set<exactccd::ScenePair> contacts;
+  for (const auto& c : result.contacts) contacts.insert(c.pair);
+  ASSERT_GT(contacts.size(), 10u);
+  std::size_t next[2] = {}, collisions = 0;
+  std::vector<exactccd::ScenePair> of_type[2];
+  for (const exactccd::ScenePair& p : result.candidates)
+    of_type[static_cast<int>(p.type)].push_back(p);
+  for (const QueryType type : {QueryType::vertex_face, QueryType::edge_edge}) {
+    const int t = static_cast<int>(type);
+    const fs::path file = dir_ / "barrier" / "rollers" / exactccd::to_string(type) / "data_0.csv";
+    for (const exactccd::QueryRecord& record : exactccd::read_query_file(file.string(), type).queries) {
+      ASSERT_LT(next[t], of_type[t].size());
+      const exactccd::ScenePair& pair = of_type[t][next[t]++];
+      EXPECT_EQ(record.truth, contacts.count(pair) == 1);
+      collisions += record.truth;
+      // The rows are the pair's query, exactly.
+      const std::array<Eigen::Vector3d, 8> rows =
+          type == QueryType::vertex_face
+              ? [&] { const auto q = scene.vertex_face_query(pair);
+                      return std::array<Eigen::Vector3d, 8>{q.p_t0, q.a_t0, q.b_t0, q.c_t0,
+                                                             q.p_t1, q.a_t1, q.b_t1, q.c_t1}; }()
+              : [&] { const auto q = scene.edge_edge_query(pair);
+                      return std::array<Eigen::Vector3d, 8>{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0,
+                                                             q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}; }();
+      for (int row = 0; row < 8; ++row)
+        ASSERT_EQ(record.query.points[row].x, mpq_class(rows[row].x()));
+    }
+    EXPECT_EQ(next[t], of_type[t].size());
+  }
+  EXPECT_EQ(collisions, contacts.size());
+  EXPECT_EQ(simulate_command({"--barrier-step rollers", "--barrier-scale 0.02"}), 2);  // exists
+  EXPECT_EQ(simulate_command({"--barrier-step nope"}), 2);
+  EXPECT_EQ(simulate_command({"--barrier-step rollers", "--barrier-scale 0"}), 2);
+  EXPECT_EQ(simulate_command({"--barrier-step rollers", "--barrier-scale 2"}), 2);
+  EXPECT_EQ(simulate_command({"--barrier-scale 0.1"}), 2);
+  EXPECT_EQ(simulate_command({"--barrier-step rollers", "--resolution 4"}), 2);
 }
 
 }  // namespace

@@ -200,7 +200,21 @@ int main(int argc, char** argv) {
   simulate->footer(kExitStatusHelp);
   simulate->add_option("--out", simulate_options.out_dir, "The output folder DIR")->required();
   add_force_flag(simulate, simulate_options.force);
-  add_simulation_options(simulate, simulate_options.config);
+  const auto [simulate_resolution, simulate_steps, simulate_seed] =
+      add_simulation_options(simulate, simulate_options.config);
+  simulate
+      ->add_option("--barrier-step", simulate_options.barrier_step,
+                   "Write instead the candidate pairs of a barrier-method trial step (the "
+                   "scene's broad phase, as exactccd bench --barrier-steps runs it: "
+                   "cloth_on_ball, many_bodies, resting_slide, debris_field, twisted_rods, "
+                   "rollers) to DIR/barrier/NAME/{vertex-face,edge-edge}/data_K.csv");
+  CLI::Option* simulate_barrier_scale =
+      simulate
+          ->add_option("--barrier-scale", simulate_options.barrier_scale,
+                       "Mesh resolution of --barrier-step, in (0, 1] (1: 20k-650k triangles, "
+                       "millions of candidates)")
+          ->check(numeric_text(false))
+          ->capture_default_str();
   simulate
       ->add_option("--truth", simulate_truth,
                    "exact: the truth column from the exact path (in parallel); none: all 0")
@@ -465,6 +479,12 @@ int main(int argc, char** argv) {
       return run_check(check_options);
     }
     if (simulate->parsed()) {
+      if (simulate_options.barrier_step.empty() && simulate_barrier_scale->count() > 0)
+        throw UsageError("--barrier-scale needs --barrier-step");
+      if (!simulate_options.barrier_step.empty())
+        for (CLI::Option* option : {simulate_resolution, simulate_steps, simulate_seed})
+          if (option->count() > 0)
+            throw UsageError(option->get_name() + " does not apply to --barrier-step");
       simulate_options.exact_truth = simulate_truth == "exact";
       return run_simulate(simulate_options);
     }

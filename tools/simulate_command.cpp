@@ -11,7 +11,9 @@
 #include <regex>
 #include <stdexcept>
 
+#include "corpus/barrier_steps.hpp"
 #include "exactccd/query_file.hpp"
+#include "exactccd/scene.hpp"
 #include "exactccd/rational_query.hpp"
 #include "oracle/common.hpp"
 #include "oracle/exact_doubles.hpp"
@@ -73,19 +75,10 @@ void write_chunk(const FileChunk& chunk, const std::vector<sim::SimulationQuery>
   write_file_atomically(chunk.path.string(), text, overwrite, "--out");
 }
 
-}  // namespace
-
-int run_simulate(const SimulateOptions& options) {
-  try {
-    sim::validate(options.config);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
-  if (options.out_dir.empty()) throw UsageError("--out: the folder name is empty");
-  const fs::path root = fs::path(options.out_dir) / "simulation";
-  const fs::path folders[2] = {root / "vertex-face", root / "edge-edge"};
-  const Overwrite overwrite = options.force ? Overwrite::replace : Overwrite::refuse;
-  for (const fs::path& folder : folders) {  // refuse before the work, not after it
+// ROOT/vertex-face and ROOT/edge-edge created; refused before any work when they hold an
+// earlier run's data_K.csv files and `overwrite` is refuse.
+void prepare_folders(const fs::path& root, Overwrite overwrite) {
+  for (const fs::path& folder : {root / "vertex-face", root / "edge-edge"}) {
     const std::vector<fs::path> earlier = data_files_in(folder);
     if (!earlier.empty() && overwrite == Overwrite::refuse)
       throw OutputError(earlier.front().string(),
@@ -96,18 +89,13 @@ int run_simulate(const SimulateOptions& options) {
     if (!fs::is_directory(folder, error))
       throw OutputError(folder.string(), "cannot create the folder: not a directory");
   }
+}
 
-  const auto generation_start = std::chrono::steady_clock::now();
-  const std::vector<sim::SimulationQuery> queries =
-      sim::generate_simulation_queries(options.config);
-  const double generation_seconds = seconds_since(generation_start);
-
-  const auto truth_start = std::chrono::steady_clock::now();
-  const std::vector<std::uint8_t> truth =
-      options.exact_truth ? exact_truth(queries) : std::vector<std::uint8_t>(queries.size(), 0);
-  const double truth_seconds = seconds_since(truth_start);
-
-  // Files: each type's queries in generation order, kQueriesPerFile to a file.
+// Each type's queries in order, kQueriesPerFile to a file ROOT/<type>/data_K.csv, written in
+// parallel; an earlier run's files beyond these are kept and named. Returns the file count.
+std::size_t write_query_files(const fs::path& root, const std::vector<sim::SimulationQuery>& queries,
+                              const std::vector<std::uint8_t>& truth, Overwrite overwrite) {
+  const fs::path folders[2] = {root / "vertex-face", root / "edge-edge"};
   std::vector<FileChunk> chunks;
   for (const QueryType type : {QueryType::vertex_face, QueryType::edge_edge}) {
     const fs::path& folder = folders[type == QueryType::vertex_face ? 0 : 1];
@@ -119,10 +107,8 @@ int run_simulate(const SimulateOptions& options) {
       chunks.back().indices.push_back(i);
     }
   }
-  const auto write_start = std::chrono::steady_clock::now();
   tbb::parallel_for(std::size_t{0}, chunks.size(),
                     [&](std::size_t k) { write_chunk(chunks[k], queries, truth, overwrite); });
-  const double write_seconds = seconds_since(write_start);
   // An earlier, larger run's files beyond this run's: kept (never deleted), but named.
   std::vector<std::string> left;
   for (const fs::path& folder : folders)
@@ -131,6 +117,100 @@ int run_simulate(const SimulateOptions& options) {
                        [&](const FileChunk& c) { return c.path == file; }))
         left.push_back(file.string());
   warn_files_left_in_place(left, root.string());
+  return chunks.size();
+}
+
+// `simulate --barrier-step NAME`: the candidates the scene's broad phase hands to the narrow
+// phase in one barrier-method trial step (corpus/barrier_steps.hpp), as benchmark queries.
+int run_simulate_barrier(const SimulateOptions& options) {
+  if (options.out_dir.empty()) throw UsageError("--out: the folder name is empty");
+  const std::vector<std::string>& names = corpus::barrier_step_names();
+  if (std::find(names.begin(), names.end(), options.barrier_step) == names.end()) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw UsageError("--barrier-step: unknown step '" + options.barrier_step + "' (one of " +
+                     list + ")");
+  }
+  if (!(options.barrier_scale > 0 && options.barrier_scale <= 1))
+    throw UsageError("--barrier-scale must lie in (0, 1], got " +
+                     format_double(options.barrier_scale));
+  const fs::path root = fs::path(options.out_dir) / "barrier" / options.barrier_step;
+  const Overwrite overwrite = options.force ? Overwrite::replace : Overwrite::refuse;
+  prepare_folders(root, overwrite);
+
+  const auto start = std::chrono::steady_clock::now();
+  Scene scene = corpus::make_scene(corpus::barrier_step(options.barrier_step, options.barrier_scale));
+  SceneOptions scene_options;
+  scene_options.record_candidates = true;
+  const SceneResult result = scene.find_contacts(scene_options);
+  std::vector<sim::SimulationQuery> queries;
+  queries.reserve(result.candidates.size());
+  for (const ScenePair& pair : result.candidates) {
+    sim::SimulationQuery q;
+    q.type = pair.type;
+    if (pair.type == QueryType::vertex_face) {
+      const VertexFaceQuery v = scene.vertex_face_query(pair);
+      q.points = {v.p_t0, v.a_t0, v.b_t0, v.c_t0, v.p_t1, v.a_t1, v.b_t1, v.c_t1};
+    } else {
+      const EdgeEdgeQuery e = scene.edge_edge_query(pair);
+      q.points = {e.ea0_t0, e.ea1_t0, e.eb0_t0, e.eb1_t0, e.ea0_t1, e.ea1_t1, e.eb0_t1, e.eb1_t1};
+    }
+    queries.push_back(q);
+  }
+  const double scene_seconds = seconds_since(start);
+  const auto truth_start = std::chrono::steady_clock::now();
+  const std::vector<std::uint8_t> truth =
+      options.exact_truth ? exact_truth(queries) : std::vector<std::uint8_t>(queries.size(), 0);
+  const double truth_seconds = seconds_since(truth_start);
+  const std::size_t files = write_query_files(root, queries, truth, overwrite);
+
+  std::size_t count[2] = {}, collide[2] = {};
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    ++count[static_cast<int>(queries[i].type)];
+    collide[static_cast<int>(queries[i].type)] += truth[i];
+  }
+  std::printf("barrier step %s at scale %g: %zu candidates in %.2f s (the scene's own contacts: "
+              "%zu)\n",
+              options.barrier_step.c_str(), options.barrier_scale,
+              queries.size(), scene_seconds, result.contacts.size());
+  if (options.exact_truth)
+    std::printf("truth from the exact path in %.2f s (%d threads)\n", truth_seconds,
+                tbb::this_task_arena::max_concurrency());
+  for (int t = 0; t < 2; ++t)
+    std::printf("%-12s %10zu queries %10s collisions\n", to_string(static_cast<QueryType>(t)),
+                count[t],
+                options.exact_truth ? std::to_string(collide[t]).c_str() : "-");
+  std::printf("wrote %zu files under %s\n", files, root.string().c_str());
+  return kExitAgree;
+}
+
+}  // namespace
+
+int run_simulate(const SimulateOptions& options) {
+  if (!options.barrier_step.empty()) return run_simulate_barrier(options);
+  try {
+    sim::validate(options.config);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  if (options.out_dir.empty()) throw UsageError("--out: the folder name is empty");
+  const fs::path root = fs::path(options.out_dir) / "simulation";
+  const Overwrite overwrite = options.force ? Overwrite::replace : Overwrite::refuse;
+  prepare_folders(root, overwrite);
+
+  const auto generation_start = std::chrono::steady_clock::now();
+  const std::vector<sim::SimulationQuery> queries =
+      sim::generate_simulation_queries(options.config);
+  const double generation_seconds = seconds_since(generation_start);
+
+  const auto truth_start = std::chrono::steady_clock::now();
+  const std::vector<std::uint8_t> truth =
+      options.exact_truth ? exact_truth(queries) : std::vector<std::uint8_t>(queries.size(), 0);
+  const double truth_seconds = seconds_since(truth_start);
+
+  const auto write_start = std::chrono::steady_clock::now();
+  const std::size_t files = write_query_files(root, queries, truth, overwrite);
+  const double write_seconds = seconds_since(write_start);
 
   // Counts by pair kind and type.
   constexpr int kKinds = 3;
@@ -165,7 +245,7 @@ int run_simulate(const SimulateOptions& options) {
     }
   for (int t = 0; t < 2; ++t) row("TOTAL", t, total[t], total_collide[t]);
   row("TOTAL", -1, total[0] + total[1], total_collide[0] + total_collide[1]);
-  std::printf("wrote %zu files under %s in %.2f s\n", chunks.size(), root.string().c_str(),
+  std::printf("wrote %zu files under %s in %.2f s\n", files, root.string().c_str(),
               write_seconds);
   return kExitAgree;
 }

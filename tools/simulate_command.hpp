@@ -15,6 +15,10 @@ struct SimulateOptions {
   sim::SimulationConfig config;
   bool exact_truth = true;       ///< --truth exact; false (--truth none): truth column all 0
   bool force = false;            ///< --force: replace data_K.csv files of an earlier run
+  /// --barrier-step NAME: instead, the candidates of that barrier-method trial step
+  /// (corpus/barrier_steps.hpp) at --barrier-scale, to out_dir/barrier/NAME/<type>/.
+  std::string barrier_step;
+  double barrier_scale = 0.1;
 };
 
 /// Runs the subcommand (exit status 0). Throws UsageError for a bad configuration, OutputError
