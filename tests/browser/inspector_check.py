@@ -288,6 +288,12 @@ def check_page(html_path, screenshot_path=None, expected_toi=NOT_GIVEN, timeout=
         if colours < 2:
             raise AssertionError('the 3D view is a single colour: WebGL drew nothing visible')
         facts['canvas_colours_at_least'] = colours
+        # The query itself is in view: some point's label is placed (a view scaled to infinity
+        # or to nothing draws only the background and the grid).
+        placed = driver.execute_script("return document.querySelectorAll('#labels .lbl').length;")
+        if not placed:
+            raise AssertionError('no point of the query is in the 3D view (no label placed): the framing failed')
+        facts['labels_in_view'] = placed
 
         data = data_from_html(html_text)
         labels, t_max = data['labels'], float(data['t_max'])

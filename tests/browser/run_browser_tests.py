@@ -16,6 +16,7 @@ import os
 import subprocess
 import sys
 import tempfile
+from fractions import Fraction
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -64,6 +65,22 @@ def write_pages(cli, work):
         page = os.path.join(work, name + '.html')
         run(cli, 'inspect', path, '--index', index, '--min-separation', delta, '--html', page)
         expect(page, check_toi(cli, work, path, index, delta))
+        pages.append(page)
+
+    # Extreme magnitudes: a vertex falling through a triangle 1e300 across, and the same at
+    # the scale of subnormal numbers (a feature 5e-321 across).
+    extreme = os.path.join(work, 'extreme', 'vertex-face', 'x.csv')
+    os.makedirs(os.path.dirname(extreme))
+    with open(extreme, 'w') as f:
+        for s in (Fraction(1e300), Fraction(5e-324) * 1024):
+            p = [(s / 4, s / 4, s), (0, 0, 0), (s, 0, 0), (0, s, 0)]
+            for point in p + [(s / 4, s / 4, -s)] + p[1:]:
+                f.write(','.join('%d,%d' % (Fraction(c).numerator, Fraction(c).denominator)
+                                 for c in point) + ',1\n')
+    for index, name in ((0, 'vf_huge'), (1, 'vf_subnormal')):
+        page = os.path.join(work, name + '.html')
+        run(cli, 'inspect', extreme, '--index', index, '--html', page)
+        expect(page, check_toi(cli, work, extreme, index, 0.0))
         pages.append(page)
 
     # A rigid scene: the first contact, as `exactccd rigid` reports it (in s).
