@@ -45,11 +45,13 @@ json answer_json(const CcdResult& r) {
 
 std::string exact_text(const Rational& q) { return q.get_str(); }
 
-// The nearest double of each coordinate, for drawing and for the double distance samples.
+// The nearest double of each coordinate (+-inf beyond the doubles), for drawing and for the
+// double distance samples.
 std::array<Eigen::Vector3d, 8> nearest_doubles(const RationalQuery& q) {
   std::array<Eigen::Vector3d, 8> p;
   for (int i = 0; i < 8; ++i)
-    p[i] = {q.points[i].x.get_d(), q.points[i].y.get_d(), q.points[i].z.get_d()};
+    p[i] = {exact::round_nearest(q.points[i].x), exact::round_nearest(q.points[i].y),
+            exact::round_nearest(q.points[i].z)};
   return p;
 }
 
@@ -74,9 +76,19 @@ Rational simplest_rational_between(Rational a, Rational b) {
   return Rational(h1, k1);  // not reached for doubles' brackets
 }
 
-// The root's exact value when it is rational and simple to find: the time says so already, or
-// the simplest rational of its isolating interval (unique root there) is a zero.
+// The root's exact value when it is rational. A rational root p/q of poly has q dividing the
+// leading coefficient L of poly's primitive integer multiple; once t's isolating interval is
+// narrower than 1/L^2, the simplest rational inside it (whose denominator is at most q) is
+// the root itself, since two rationals of denominators at most L differ by at least 1/L^2.
+// So: refine to that width (a bounded number of halvings; beyond it the value is not claimed),
+// then test the simplest rational.
 std::optional<Rational> rational_root(const Polynomial& poly, AlgebraicTime& t) {
+  const mpz_class L = abs(exact::primitive_part(poly).leading().get_num());
+  const Rational width_needed(1, L * L);
+  for (int halvings = 0; !t.is_rational() && t.hi() - t.lo() >= width_needed; ++halvings) {
+    if (halvings == 20000) return std::nullopt;  // coefficients of thousands of digits
+    t.refine_once();
+  }
   if (t.is_rational()) return t.lo();
   const Rational r = simplest_rational_between(t.lo(), t.hi());
   if (sgn(poly.evaluate(r)) == 0) return r;
@@ -85,19 +97,26 @@ std::optional<Rational> rational_root(const Polynomial& poly, AlgebraicTime& t) 
 
 // One polynomial of the exact path with its real roots in [0, t_max], each an exact bracket
 // and the inclusion test's answer there. `contact_at` is the instant predicate.
+// The earliest root passing inclusion so far, and where it is listed: (polynomial, root).
+struct Earliest {
+  std::optional<AlgebraicTime> time;
+  std::size_t polynomial = 0, root = 0;
+};
+
 template <class ContactAt>
 json polynomial_json(const std::string& name, const Polynomial& poly, const Rational& t_max,
-                     ContactAt&& contact_at, std::optional<AlgebraicTime>* earliest) {
+                     ContactAt&& contact_at, Earliest* earliest, std::size_t index) {
   json coefficients_exact = json::array(), coefficients = json::array();
   for (const Rational& c : poly.coefficients()) {
     coefficients_exact.push_back(exact_text(c));
-    coefficients.push_back(c.get_d());
+    coefficients.push_back(exact::round_nearest(c));
   }
   json roots = json::array();
   if (poly.degree() >= 1 && sgn(t_max) > 0) {
     for (AlgebraicTime& t : exact::real_roots_in(poly, Rational(0), t_max)) {
       const bool inclusion = contact_at(t);
-      if (inclusion && (!*earliest || exact::compare(t, **earliest) < 0)) *earliest = t;
+      if (inclusion && (!earliest->time || exact::compare(t, *earliest->time) < 0))
+        *earliest = {t, index, roots.size()};
       const auto [lo, hi] = t.enclosure(0.0);  // refines t's interval: then look for a rational
       std::optional<Rational> value = rational_root(poly, t);
       roots.push_back({{"lo", lo},
@@ -114,18 +133,9 @@ json polynomial_json(const std::string& name, const Polynomial& poly, const Rati
           {"roots", roots}};
 }
 
-// Marks the root whose bracket is the earliest contact's (the same doubles).
-void mark_earliest(json& polynomials, const std::optional<AlgebraicTime>& earliest) {
-  if (!earliest) return;
-  AlgebraicTime t = *earliest;
-  const auto [lo, hi] = t.enclosure(0.0);
-  for (json& p : polynomials)
-    for (json& r : p["roots"])
-      if (r["inclusion"].get<bool>() && r["lo"].get<double>() == lo &&
-          r["hi"].get<double>() == hi) {
-        r["earliest"] = true;
-        return;
-      }
+// Marks the earliest root that passes inclusion: the contact, unless it is at t = 0.
+void mark_earliest(json& polynomials, const Earliest& earliest) {
+  if (earliest.time) polynomials[earliest.polynomial]["roots"][earliest.root]["earliest"] = true;
 }
 
 // The polynomials that decide a contact query of four moving points y (any moving-point type
@@ -137,14 +147,14 @@ json contact_polynomials(QueryType type, const std::array<Point, 4>& y,
                          const Polynomial& coplanarity, const std::string& name,
                          const Rational& t_max, bool* contact_at_start) {
   json polynomials = json::array();
-  std::optional<AlgebraicTime> earliest;
+  Earliest earliest;
   *contact_at_start = false;
   auto contact_at = [&](AlgebraicTime& t) {
     return type == QueryType::vertex_face
                ? predicates::point_in_triangle_at(y[0], y[1], y[2], y[3], exact::sign_at(t))
                : predicates::segments_intersect_at(y[0], y[1], y[2], y[3], exact::sign_at(t));
   };
-  polynomials.push_back(polynomial_json(name, coplanarity, t_max, contact_at, &earliest));
+  polynomials.push_back(polynomial_json(name, coplanarity, t_max, contact_at, &earliest, 0));
   if (coplanarity.is_zero()) {
     AlgebraicTime start = AlgebraicTime::rational(Rational(0));
     *contact_at_start = contact_at(start);
@@ -155,7 +165,8 @@ json contact_polynomials(QueryType type, const std::array<Point, 4>& y,
                                   vertex_edge_candidates(y[0], y[2], y[3]),
                                   vertex_edge_candidates(y[0], y[3], y[1])};
       for (int k = 0; k < 3; ++k)
-        polynomials.push_back(polynomial_json(names[k], sides[k], t_max, contact_at, &earliest));
+        polynomials.push_back(
+            polynomial_json(names[k], sides[k], t_max, contact_at, &earliest, polynomials.size()));
     } else {
       const char* names[] = {"ea0 against edge b", "ea1 against edge b", "eb0 against edge a",
                              "eb1 against edge a"};
@@ -163,7 +174,8 @@ json contact_polynomials(QueryType type, const std::array<Point, 4>& y,
           vertex_edge_candidates(y[0], y[2], y[3]), vertex_edge_candidates(y[1], y[2], y[3]),
           vertex_edge_candidates(y[2], y[0], y[1]), vertex_edge_candidates(y[3], y[0], y[1])};
       for (int k = 0; k < 4; ++k)
-        polynomials.push_back(polynomial_json(names[k], ends[k], t_max, contact_at, &earliest));
+        polynomials.push_back(
+            polynomial_json(names[k], ends[k], t_max, contact_at, &earliest, polynomials.size()));
     }
   }
   if (!*contact_at_start) mark_earliest(polynomials, earliest);
@@ -224,6 +236,22 @@ double segment_segment_distance(const Eigen::Vector3d& a0, const Eigen::Vector3d
   return best;
 }
 
+// The distance between the primitives of four points, computed on the points scaled by a power
+// of two to unit size and scaled back (exact scalings: squared norms of points 1e-100 or 1e300
+// apart neither underflow nor overflow).
+double primitive_distance(QueryType type, std::array<Eigen::Vector3d, 4> p) {
+  double m = 0;
+  for (const auto& x : p) m = std::max(m, x.cwiseAbs().maxCoeff());
+  if (!std::isfinite(m)) return std::numeric_limits<double>::quiet_NaN();
+  int e = 0;
+  if (m > 0) std::frexp(m, &e);
+  for (auto& x : p)
+    for (int k = 0; k < 3; ++k) x[k] = std::ldexp(x[k], -e);
+  const double d = type == QueryType::vertex_face ? point_triangle_distance(p[0], p[1], p[2], p[3])
+                                                  : segment_segment_distance(p[0], p[1], p[2], p[3]);
+  return std::ldexp(d, e);
+}
+
 json distance_samples(const std::array<Eigen::Vector3d, 8>& x, QueryType type, double t_max,
                       double delta) {
   constexpr int kSamples = 400;
@@ -231,11 +259,9 @@ json distance_samples(const std::array<Eigen::Vector3d, 8>& x, QueryType type, d
   for (int i = 0; i <= kSamples; ++i) {
     const double t = t_max * i / kSamples;
     std::array<Eigen::Vector3d, 4> p;
-    for (int k = 0; k < 4; ++k) p[k] = (1 - t) * x[k] + t * x[k + 4];
-    const double d = type == QueryType::vertex_face
-                         ? point_triangle_distance(p[0], p[1], p[2], p[3])
-                         : segment_segment_distance(p[0], p[1], p[2], p[3]);
-    samples.push_back({t, d});
+    for (int k = 0; k < 4; ++k) p[k] = x[k] + t * (x[k + 4] - x[k]);
+    const double d = primitive_distance(type, p);
+    if (std::isfinite(d)) samples.push_back({t, d});  // beyond the doubles: no sample
   }
   return {{"delta", delta}, {"samples", samples}};
 }
@@ -276,6 +302,7 @@ std::string inspection_json(const QueryRecord& record, QueryType type, const std
   const bool vf = type == QueryType::vertex_face;
 
   CcdResult answer = exact_answer, float_answer;
+  bool float_computable = true;
   CcdOptions float_options = options;
   float_options.mode = Mode::float_only;
   json contact = nullptr;
@@ -288,10 +315,12 @@ std::string inspection_json(const QueryRecord& record, QueryType type, const std
     if (exact_answer.collides)
       contact = geometry_json(vf ? contact_geometry(vfq, exact_answer, settings.min_separation)
                                  : contact_geometry(eeq, exact_answer, settings.min_separation));
-  } else {
+  } else if (std::all_of(x.begin(), x.end(), [](const Eigen::Vector3d& v) { return v.allFinite(); })) {
     const VertexFaceQuery vfq = vertex_face_query(x);
     const EdgeEdgeQuery eeq = edge_edge_query(x);
     float_answer = vf ? vertex_face_ccd(vfq, float_options) : edge_edge_ccd(eeq, float_options);
+  } else {
+    float_computable = false;  // a coordinate beyond the doubles: no double query to give it
   }
 
   json points_exact = json::array(), points = json::array();
@@ -319,9 +348,13 @@ std::string inspection_json(const QueryRecord& record, QueryType type, const std
   doc["result"] = answer_json(answer);
   doc["result"]["mode"] = to_string(settings.mode);
   doc["exact"] = answer_json(exact_answer);
-  doc["float_only"] = answer_json(float_answer);
-  doc["float_only"]["wrong"] = float_answer.collides != exact_answer.collides;
-  doc["float_only"]["on_rounded_points"] = !doubles.has_value();
+  if (float_computable) {
+    doc["float_only"] = answer_json(float_answer);
+    doc["float_only"]["wrong"] = float_answer.collides != exact_answer.collides;
+    doc["float_only"]["on_rounded_points"] = !doubles.has_value();
+  } else {
+    doc["float_only"] = nullptr;
+  }
   doc["contact"] = contact;
   bool at_start = false;
   if (settings.min_separation == 0.0) {
@@ -337,7 +370,7 @@ std::string inspection_json(const QueryRecord& record, QueryType type, const std
                      {"collides", graded->collides},
                      {"toi_exact", graded->toi ? json(*graded->toi) : json(nullptr)},
                      {"toi", graded->toi ? json(graded->toi_double) : json(nullptr)}};
-  return doc.dump();
+  return doc.dump(-1, ' ', false, json::error_handler_t::replace);  // file names: any bytes
 }
 
 namespace {
@@ -397,7 +430,8 @@ std::string rigid_inspection(const Query& query, QueryType type, const Eigen::Ve
   // contact: each position exact, then rounded to the nearest double.
   std::vector<double> times;
   for (int k = 0; k <= 64; ++k) times.push_back(settings.t_max * k / 64);
-  if (exact_answer.ccd.collides) times.push_back(exact_answer.ccd.toi_lo);
+  for (const RigidCcdResult* r : {&exact_answer, &answer})  // where the page opens
+    if (r->ccd.collides) times.push_back(r->ccd.toi_lo);
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
   json positions = json::array();
@@ -460,14 +494,14 @@ std::string rigid_inspection(const Query& query, QueryType type, const Eigen::Ve
     json samples = json::array();
     for (std::size_t j = 0; j < times.size(); ++j) {
       const auto& p = rounded[j];
-      samples.push_back({times[j], vf ? point_triangle_distance(p[0], p[1], p[2], p[3])
-                                      : segment_segment_distance(p[0], p[1], p[2], p[3])});
+      const double d = primitive_distance(type, p);
+      if (std::isfinite(d)) samples.push_back({times[j], d});
     }
     doc["polynomials"] = json::array();
     doc["distance"] = {{"delta", settings.min_separation}, {"samples", samples}};
   }
   doc["contact_at_start_coplanar"] = at_start;
-  return doc.dump();
+  return doc.dump(-1, ' ', false, json::error_handler_t::replace);  // file names: any bytes
 }
 
 }  // namespace
@@ -494,6 +528,7 @@ std::string inspect_file_query(const std::string& path, std::optional<QueryType>
                                std::size_t index, const InspectSettings& settings) {
   const QueryType resolved = resolve_query_type(path, type);
   const QueryFile file = read_query_file(path, resolved);
+  if (file.queries.empty()) throw InputError(path, 0, "the file holds no query");
   if (index >= file.queries.size())
     throw InputError(path, 0,
                      "index " + std::to_string(index) + " is past the end: the file has " +
@@ -522,8 +557,12 @@ std::string inspection_text(const std::string& text) {
       << ", toi " << toi(doc["exact"]);
   if (doc["truth"].is_boolean()) out << "; truth column: " << (doc["truth"].get<bool>() ? "1" : "0");
   out << "\n";
-  out << "  float_only: " << (doc["float_only"]["collides"].get<bool>() ? "collides" : "no contact")
-      << (doc["float_only"]["wrong"].get<bool>() ? " (WRONG)" : " (right)") << "\n";
+  if (doc["float_only"].is_null())
+    out << "  float_only: not run (a coordinate is beyond the doubles)\n";
+  else
+    out << "  float_only: "
+        << (doc["float_only"]["collides"].get<bool>() ? "collides" : "no contact")
+        << (doc["float_only"]["wrong"].get<bool>() ? " (WRONG)" : " (right)") << "\n";
   for (const json& p : doc["polynomials"]) {
     out << "  " << p["name"].get<std::string>() << ":";
     if (p["identically_zero"].get<bool>()) out << " identically zero";

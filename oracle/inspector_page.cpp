@@ -51,7 +51,7 @@ void require_inspector() {
   if (!inspector_available())
     throw std::runtime_error(
         "this build has no three.js for the inspector page: install Debian's libjs-three "
-        "(bash .ci/install-deps.sh) and rebuild");
+        "(bash .ci/install-deps.sh), then configure (cmake -S . -B build) and build again");
 }
 
 std::vector<std::pair<std::string, std::string_view>> inspector_scripts() {

@@ -68,9 +68,26 @@ TEST_F(CliInspectTest, BadInput) {
       write_file("vertex-face/third.csv", replace_line(kHalfThirdNever, 1, "1,3,1,4,1,1,1"));
   expect_bad_input(run({"inspect", third.string()}), {"not a double", "--mode exact"});
   EXPECT_EQ(run({"inspect", third.string(), "--mode", "exact"}).status, 0);
-  expect_bad_input(run({"inspect", queries.string(), "--min-separation", "-1"}),
+  expect_bad_input(run({"inspect", queries.string(), "--min-separation", "-1", "--html",
+                        (dir_ / "out.html").string()}),
                    {"--min-separation"});
-  EXPECT_FALSE(fs::exists(dir_ / "out.html"));
+  expect_bad_input(run({"inspect", queries.string(), "--index", "7", "--html",
+                        (dir_ / "out.html").string()}),
+                   {"past the end"});
+  EXPECT_FALSE(fs::exists(dir_ / "out.html"));  // refused before anything is written
+  expect_bad_input(run({"inspect", queries.string(), "--html", ""}), {"--html", "empty"});
+  const fs::path empty = write_file("vertex-face/empty.csv", "");
+  expect_bad_input(run({"inspect", empty.string()}), {"no query"});
+  // A coordinate beyond the doubles: decided exactly, float_only not run (no double query).
+  const fs::path huge = write_file(
+      "vertex-face/huge.csv",
+      replace_line(kHalfThirdNever, 1, "1,4,1,4,1" + std::string(400, '0') + ",1,1"));
+  const RunResult beyond = run({"inspect", huge.string(), "--mode", "exact", "--json"});
+  ASSERT_EQ(beyond.status, 0) << beyond.err;
+  EXPECT_TRUE(parse_json(beyond)["float_only"].is_null());
+  // A file name that is not UTF-8 is carried, not fatal.
+  const fs::path odd = write_file("vertex-face/odd\xff.csv", kHalfThirdNever);
+  EXPECT_EQ(run({"inspect", odd.string(), "--json"}).status, 0);
 }
 
 TEST_F(CliInspectTest, GradeReportLinksAPagePerFinding) {
@@ -102,6 +119,17 @@ TEST_F(CliInspectTest, GradeReportLinksAPagePerFinding) {
   EXPECT_EQ(run(forced).status, 1);
   EXPECT_TRUE(fs::exists(report));
   expect_bad_input(run(args), {"report.html", "--force"});
+
+  // Coordinates that are not doubles: graded, and their pages show the exact path.
+  const fs::path thirds = write_file(
+      "vertex-face/thirds.csv", replace_line(kHalfThirdNever, 17, "1,3,1,4,1,1,0"));
+  const fs::path thirds_report = dir_ / "thirds.html";
+  EXPECT_EQ(run({"grade", "--queries", thirds.string(), "--answers", answers.string(), "--html",
+                 thirds_report.string()})
+                .status,
+            1);
+  EXPECT_TRUE(fs::exists(dir_ / "thirds_files" / "query_2.html"));
+  EXPECT_TRUE(fs::exists(thirds_report));
 
   // --html-limit 0: the tables and the count of what is not shown, no page.
   const fs::path limited = dir_ / "limited.html";
@@ -163,6 +191,7 @@ TEST_F(CliInspectTest, RigidSceneStep) {
   expect_bad_input(run({"inspect", queries.string(), "--step", "1"}), {"--step"});
   const fs::path broken = write_file("broken.json", "{\"bodies\": [");
   expect_bad_input(run({"inspect", broken.string()}), {"broken.json"});
+  expect_bad_input(run({"inspect", steps, "--index", "1"}), {"--index"});
 }
 
 }  // namespace

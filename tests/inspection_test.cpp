@@ -241,6 +241,31 @@ TEST(Inspection, HandMadeQueryAndTimeWindow) {
   EXPECT_EQ(doc["points_exact"][0], json({"1/4", "1/4", "1"}));
 }
 
+// Rational roots whose denominators are too large for the simplest rational of a one-ulp
+// bracket: found once the isolating interval is refined below 1 / L^2.
+TEST(Inspection, RationalRootsWithLargeDenominators) {
+  QueryRecord r;
+  const mpq_class rows[8][3] = {{mpq_class(1, 8), mpq_class(1, 8), mpq_class("35184372088839")},
+                                {0, 0, 0},
+                                {mpq_class("1099511627777"), 0, 0},
+                                {0, 1, 0},
+                                {mpq_class(1, 8), mpq_class(1, 8), mpq_class("-35184372088833")},
+                                {0, 0, 0},
+                                {mpq_class("-1099511627779"), 0, 0},
+                                {0, 1, 0}};
+  for (int i = 0; i < 8; ++i) r.query.points[i] = {rows[i][0], rows[i][1], rows[i][2]};
+  r.first_line = 1;
+  const json doc = json::parse(exactccd::oracle::inspection_json(
+      r, QueryType::vertex_face, "quad.csv", 0, InspectSettings{}));
+  const json& roots = doc["polynomials"][0]["roots"];
+  ASSERT_EQ(roots.size(), 2u);
+  EXPECT_EQ(roots[0]["exact"], "1099511627777/2199023255556");
+  EXPECT_EQ(roots[1]["exact"], "11728124029613/23456248059224");
+  Counts counts;
+  check_inspection(r, QueryType::vertex_face, "quad.csv", 1.0, counts);  // zeros, per CGAL
+  EXPECT_EQ(counts.roots, 2);
+}
+
 TEST(Inspection, NonDoubleCoordinatesNeedExactMode) {
   QueryRecord r = falling_vertex(-1);
   r.query.points[0].x = mpq_class(1, 3);

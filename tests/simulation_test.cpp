@@ -406,8 +406,12 @@ TEST_F(SimulateCommand, BarrierStepWritesTheScenesCandidatesWithExactTruth) {
               : [&] { const auto q = scene.edge_edge_query(pair);
                       return std::array<Eigen::Vector3d, 8>{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0,
                                                              q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1}; }();
-      for (int row = 0; row < 8; ++row)
-        ASSERT_EQ(record.query.points[row].x, mpq_class(rows[row].x()));
+      for (int row = 0; row < 8; ++row) {
+        const exactccd::RationalPoint& got = record.query.points[row];
+        ASSERT_EQ(got.x, mpq_class(rows[row].x()));
+        ASSERT_EQ(got.y, mpq_class(rows[row].y()));
+        ASSERT_EQ(got.z, mpq_class(rows[row].z()));
+      }
     }
     EXPECT_EQ(next[t], of_type[t].size());
   }

@@ -2,6 +2,8 @@
 
 #include <filesystem>
 #include <iostream>
+#include <utility>
+#include <vector>
 
 #include "exact/arithmetic/rational.hpp"
 #include "oracle/answers_file.hpp"
@@ -35,12 +37,16 @@ void write_grade_report(const GradeOptions& options, const GradeFindings& findin
   const std::vector<Answer> answers = read_answers_file(
       options.answers_path, file.queries.size(), options.queries_path, options.t_max);
   const std::string folder = pages_folder(options.html_path);
-  InspectionFolder pages(folder, overwrite, "--html");
   const std::string folder_name = std::filesystem::path(folder).filename().string();
 
+  // The pages show the exact path's answer (what the grading is against), which takes any
+  // rational coordinates; every page is made before the folder is, so that an error leaves
+  // nothing behind.
   InspectSettings settings;
+  settings.mode = Mode::exact;
   settings.t_max = options.t_max;
   settings.min_separation = options.min_separation;
+  std::vector<std::pair<std::string, std::string>> page_data;  // {name, JSON}
   std::vector<IndexSection> sections;
   sections.push_back({"Summary", "",
                       {"queries", "answers with a TOI", "false positives", "false negatives",
@@ -69,11 +75,12 @@ void write_grade_report(const GradeOptions& options, const GradeFindings& findin
       GradedAnswer graded{kind.finding, a.collides, std::nullopt, 0.0};
       if (a.toi) {
         graded.toi = a.toi->get_str();
-        graded.toi_double = a.toi->get_d();
+        graded.toi_double = exact::round_nearest(*a.toi);
       }
-      const std::string json =
-          inspection_json(file.queries[i], type, options.queries_path, i, settings, &graded);
-      const std::string page = pages.add_page("query_" + std::to_string(i), json);
+      page_data.push_back({"query_" + std::to_string(i),
+                           inspection_json(file.queries[i], type, options.queries_path, i,
+                                           settings, &graded)});
+      const std::string page = page_data.back().first + ".html";
       CcdOptions exact_options;
       exact_options.t_max = options.t_max;
       exact_options.min_separation = options.min_separation;
@@ -97,6 +104,8 @@ void write_grade_report(const GradeOptions& options, const GradeFindings& findin
                             format_double(options.t_max) + ", minimum separation " +
                             format_double(options.min_separation) +
                             "). Each linked query opens its inspector.";
+  InspectionFolder pages(folder, overwrite, "--html");
+  for (const auto& [name, json] : page_data) pages.add_page(name, json);
   write_file_atomically(options.html_path, index_page("exactccd grade", intro, sections),
                         overwrite, "--html");
 }

@@ -74,11 +74,15 @@ int run_inspect(const InspectOptions& options) {
   validate_t_max(options.settings.t_max);
   validate_min_separation(options.settings.min_separation);
   const Overwrite overwrite = options.force ? Overwrite::replace : Overwrite::refuse;
+  if (options.html_given && options.html_path.empty())
+    throw UsageError("--html: the file name is empty");
   if (!options.html_path.empty()) check_output_path(options.html_path, overwrite, "--html");
 
   if (!options.html_path.empty()) require_inspector();
   if (options.step && !is_scene_file(options.path))
     throw UsageError("--step needs a rigid scene file (FILE.json)");
+  if (is_scene_file(options.path) && (options.index_given || options.type))
+    throw UsageError("--index and --type apply to a query file, not to a scene file (use --step)");
   const std::string json =
       is_scene_file(options.path)
           ? inspect_scene_step(options)

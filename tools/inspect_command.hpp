@@ -24,6 +24,7 @@ struct InspectOptions {
   std::optional<std::size_t> step;
   /// Given on the command line (a scene file's own settings apply otherwise).
   bool mode_given = false, t_max_given = false, min_separation_given = false;
+  bool index_given = false, html_given = false;
 };
 
 /// Writes the page (when asked) and prints the summary; 0. A FILE ending in .json is a rigid

@@ -559,6 +559,8 @@ int main(int argc, char** argv) {
       inspect_options.mode_given = inspect->get_option("--mode")->count() > 0;
       inspect_options.t_max_given = inspect->get_option("--t-max")->count() > 0;
       inspect_options.min_separation_given = inspect->get_option("--min-separation")->count() > 0;
+      inspect_options.index_given = inspect->get_option("--index")->count() > 0;
+      inspect_options.html_given = inspect->get_option("--html")->count() > 0;
       return run_inspect(inspect_options);
     }
     grade_options.type = parse_type_name(grade_type);
