@@ -23,6 +23,8 @@
 #include "exactccd/contact.hpp"
 #include "exactccd/rational_query.hpp"
 #include "exactccd/rigid.hpp"
+#include "core/predicates/plane_offset.hpp"
+#include "oracle/check.hpp"
 #include "oracle/exact_doubles.hpp"
 #include "oracle/names.hpp"
 
@@ -448,7 +450,7 @@ std::string rigid_inspection(const Query& query, QueryType type, const Eigen::Ve
     rounded.push_back(r);
   }
   json points_exact = json::array(), points = json::array();
-  for (const mpq_class& s : {mpq_class(0), mpq_class(settings.t_max)}) {
+  for (const mpq_class& s : {mpq_class(0), mpq_class(1)}) {  // as the linear kinds: t = 0, 1
     const auto exact_points = exact_points_at(start, side, first_side_points, s);
     for (const auto& p : exact_points) {
       points_exact.push_back({exact_text(p[0]), exact_text(p[1]), exact_text(p[2])});
@@ -524,16 +526,216 @@ std::string rigid_inspection_json(const RigidEdgeEdgeQuery& q, const InspectSett
   return rigid_inspection(q, QueryType::edge_edge, start, side, settings, title, source, labels, step);
 }
 
+namespace {
+
+// The plane offset polynomial's page data: its roots (every one a contact: the plane is
+// infinite), the earliest marked, unless the point lies in the plane throughout.
+json plane_offset_polynomials(const Polynomial& f, const std::string& name, const Rational& t_max,
+                              bool* in_plane_throughout) {
+  Earliest earliest;
+  json polynomials = json::array();
+  polynomials.push_back(
+      polynomial_json(name, f, t_max, [](AlgebraicTime&) { return true; }, &earliest, 0));
+  *in_plane_throughout = f.is_zero();
+  mark_earliest(polynomials, earliest);
+  return polynomials;
+}
+
+// |(p - o) . n| / |n| in double, on vectors scaled to unit size by powers of two (display only).
+double plane_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& o, Eigen::Vector3d n) {
+  Eigen::Vector3d v = p - o;
+  int ev = 0, en = 0;
+  const double mv = v.cwiseAbs().maxCoeff(), mn = n.cwiseAbs().maxCoeff();
+  if (!std::isfinite(mv) || !(mn > 0) || !std::isfinite(mn))
+    return std::numeric_limits<double>::quiet_NaN();
+  if (mv > 0) std::frexp(mv, &ev);
+  std::frexp(mn, &en);
+  for (int k = 0; k < 3; ++k) v[k] = std::ldexp(v[k], -ev), n[k] = std::ldexp(n[k], -en);
+  return std::ldexp(std::fabs(v.dot(n)) / n.norm(), ev);
+}
+
+json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+json exact_vector_json(const Eigen::Vector3d& v) {
+  return {exact_text(Rational(v.x())), exact_text(Rational(v.y())), exact_text(Rational(v.z()))};
+}
+
+// The fields every point-plane page has.
+json point_plane_document(const PointPlaneSource& source, const InspectSettings& settings) {
+  json doc;
+  doc["format"] = "exactccd-inspection";
+  doc["version"] = 1;
+  doc["title"] = source.title;
+  doc["source"] = {{"file", source.file}};
+  if (source.index) doc["source"]["index"] = *source.index;
+  if (source.first_line) doc["source"]["first_line"] = *source.first_line;
+  if (source.step) doc["source"]["step"] = *source.step;
+  doc["kind"] = "point_plane";
+  doc["labels"] = {"p", "o"};
+  doc["t_max"] = settings.t_max;
+  doc["min_separation"] = settings.min_separation;
+  doc["truth"] = source.truth ? json(*source.truth) : json(nullptr);
+  doc["points_are_doubles"] = true;
+  return doc;
+}
+
+}  // namespace
+
+std::string point_plane_inspection_json(const PointPlaneQuery& q, const InspectSettings& settings,
+                                        const PointPlaneSource& source) {
+  auto decide = [&](Mode mode) {
+    CcdOptions options;
+    options.t_max = settings.t_max;
+    options.min_separation = settings.min_separation;
+    options.mode = mode;
+    return point_plane_ccd(q, options);
+  };
+  const CcdResult exact_answer = decide(Mode::exact), answer = decide(settings.mode),
+                  float_answer = decide(Mode::float_only);
+  json doc = point_plane_document(source, settings);
+  doc["motion"] = "linear";
+  doc["points_exact"] = {exact_vector_json(q.p_t0), exact_vector_json(q.origin_t0),
+                         exact_vector_json(q.p_t1), exact_vector_json(q.origin_t1)};
+  doc["points"] = {vector_json(q.p_t0), vector_json(q.origin_t0), vector_json(q.p_t1),
+                   vector_json(q.origin_t1)};
+  doc["plane_normal"] = {{"exact", {exact_vector_json(q.normal_t0), exact_vector_json(q.normal_t1)}},
+                         {"double", {vector_json(q.normal_t0), vector_json(q.normal_t1)}}};
+  doc["result"] = answer_json(answer);
+  doc["result"]["mode"] = to_string(settings.mode);
+  doc["exact"] = answer_json(exact_answer);
+  doc["float_only"] = answer_json(float_answer);
+  doc["float_only"]["wrong"] = float_answer.collides != exact_answer.collides;
+  doc["contact"] = exact_answer.collides
+                       ? geometry_json(contact_geometry(q, exact_answer, settings.min_separation))
+                       : json(nullptr);
+  bool in_plane = false;
+  if (settings.min_separation == 0.0) {
+    doc["polynomials"] = plane_offset_polynomials(
+        Polynomial(predicates::linear_plane_offset<Rational>(q)),
+        "plane offset f(t) = (p - o) . n", Rational(settings.t_max), &in_plane);
+    doc["distance"] = nullptr;
+  } else {
+    json samples = json::array();
+    for (int i = 0; i <= 400; ++i) {
+      const double t = settings.t_max * i / 400;
+      const double d = plane_distance(q.p_t0 + t * (q.p_t1 - q.p_t0),
+                                      q.origin_t0 + t * (q.origin_t1 - q.origin_t0),
+                                      q.normal_t0 + t * (q.normal_t1 - q.normal_t0));
+      if (std::isfinite(d)) samples.push_back({t, d});
+    }
+    doc["polynomials"] = json::array();
+    doc["distance"] = {{"delta", settings.min_separation}, {"samples", samples}};
+  }
+  doc["contact_at_start_coplanar"] = in_plane;
+  return doc.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+std::string rigid_point_plane_inspection_json(const RigidPointPlaneQuery& q,
+                                              const InspectSettings& settings,
+                                              const PointPlaneSource& source) {
+  auto decide = [&](Mode mode) {
+    CcdOptions options;
+    options.t_max = settings.t_max;
+    options.min_separation = settings.min_separation;
+    options.mode = mode;
+    return point_plane_ccd(q, options);
+  };
+  const RigidCcdResult exact_answer = decide(Mode::exact), answer = decide(settings.mode),
+                       float_answer = decide(Mode::float_only);
+  // Samples of s as for the other rigid pages: the exact pose rounded to nearest.
+  std::vector<double> times;
+  for (int k = 0; k <= 64; ++k) times.push_back(settings.t_max * k / 64);
+  for (const RigidCcdResult* r : {&exact_answer, &answer})
+    if (r->ccd.collides) times.push_back(r->ccd.toi_lo);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  auto at = [&](const mpq_class& s) {
+    const auto x = rigid_pose::exact_position(q.motion, q.p, s);
+    return std::pair(Eigen::Vector3d(exact::round_nearest(x[0]), exact::round_nearest(x[1]),
+                                     exact::round_nearest(x[2])),
+                     json{exact_text(x[0]), exact_text(x[1]), exact_text(x[2])});
+  };
+  json positions = json::array(), samples = json::array();
+  for (double s : times) {
+    const Eigen::Vector3d p = at(mpq_class(s)).first;
+    positions.push_back({vector_json(p), vector_json(q.origin)});
+    const double d = plane_distance(p, q.origin, q.normal);
+    if (std::isfinite(d)) samples.push_back({s, d});
+  }
+  json doc = point_plane_document(source, settings);
+  doc["motion"] = "samples";
+  doc["parameter"] = "s";
+  doc["trajectory"] = {{"times", times}, {"positions", positions}};
+  const auto [p1, p1_exact] = at(mpq_class(1));
+  doc["points_exact"] = {exact_vector_json(q.p), exact_vector_json(q.origin), p1_exact,
+                         exact_vector_json(q.origin)};
+  doc["points"] = {vector_json(q.p), vector_json(q.origin), vector_json(p1), vector_json(q.origin)};
+  doc["points_are_doubles"] = false;
+  doc["plane_normal"] = {{"exact", {exact_vector_json(q.normal), exact_vector_json(q.normal)}},
+                         {"double", {vector_json(q.normal), vector_json(q.normal)}}};
+  doc["result"] = rigid_answer_json(answer);
+  doc["result"]["mode"] = to_string(settings.mode);
+  doc["exact"] = rigid_answer_json(exact_answer);
+  doc["float_only"] = rigid_answer_json(float_answer);
+  doc["float_only"]["wrong"] = float_answer.ccd.collides != exact_answer.ccd.collides;
+  doc["contact"] = exact_answer.ccd.collides
+                       ? geometry_json(contact_geometry(q, exact_answer, settings.min_separation))
+                       : json(nullptr);
+  bool in_plane = false;
+  if (settings.min_separation == 0.0) {
+    doc["polynomials"] = plane_offset_polynomials(
+        Polynomial(predicates::rigid_plane_offset<Rational>(q, nullptr)),
+        "plane offset numerator F(s) = (X(s) - o w(s)) . n (the offset is F / w, w > 0)",
+        Rational(settings.t_max), &in_plane);
+    doc["distance"] = nullptr;
+  } else {
+    doc["polynomials"] = json::array();
+    doc["distance"] = {{"delta", settings.min_separation}, {"samples", samples}};
+  }
+  doc["contact_at_start_coplanar"] = in_plane;
+  return doc.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 std::string inspect_file_query(const std::string& path, std::optional<QueryType> type,
-                               std::size_t index, const InspectSettings& settings) {
+                               std::size_t index, const InspectSettings& settings,
+                               std::optional<PrimitiveKind> primitive) {
+  auto check_index = [&](std::size_t count) {
+    if (count == 0) throw InputError(path, 0, "the file holds no query");
+    if (index >= count)
+      throw InputError(path, 0,
+                       "index " + std::to_string(index) + " is past the end: the file has " +
+                           std::to_string(count) + " queries (0-based indices 0 to " +
+                           std::to_string(count - 1) + ")");
+  };
+  if (primitive) {
+    const PrimitiveQueryFile file = read_primitive_query_file(path, *primitive);
+    check_index(file.queries.size());
+    if (*primitive != PrimitiveKind::point_plane) {  // the edge-edge query of its segments
+      const QueryFile as_segments = as_edge_edge_file(file);
+      return inspection_json(as_segments.queries[index], QueryType::edge_edge, path, index,
+                             settings);
+    }
+    const PrimitiveQueryRecord& record = file.queries[index];
+    double x[6][3];
+    for (int row = 0; row < 6; ++row)
+      for (int k = 0; k < 3; ++k) {
+        const RationalPoint& p = record.points[row];
+        if (!exact::to_double_exactly(k == 0 ? p.x : k == 1 ? p.y : p.z, &x[row][k]))
+          throw InputError(path, record.first_line + row,
+                           "a coordinate is not a double (point-plane queries take doubles)");
+      }
+    auto v = [&](int row) { return Eigen::Vector3d(x[row][0], x[row][1], x[row][2]); };
+    const PointPlaneQuery q{v(0), v(1), v(2), v(3), v(4), v(5)};
+    PointPlaneSource source{path, index, record.first_line, std::nullopt, record.truth,
+                            "point-plane query " + std::to_string(index) + " of " + path};
+    try {
+      return point_plane_inspection_json(q, settings, source);
+    } catch (const std::invalid_argument& e) {  // a zero normal: bad input, named
+      throw InputError(path, record.first_line, e.what());
+    }
+  }
   const QueryType resolved = resolve_query_type(path, type);
   const QueryFile file = read_query_file(path, resolved);
-  if (file.queries.empty()) throw InputError(path, 0, "the file holds no query");
-  if (index >= file.queries.size())
-    throw InputError(path, 0,
-                     "index " + std::to_string(index) + " is past the end: the file has " +
-                         std::to_string(file.queries.size()) + " queries (0-based indices 0 to " +
-                         std::to_string(file.queries.size() - 1) + ")");
+  check_index(file.queries.size());
   return inspection_json(file.queries[index], resolved, path, index, settings);
 }
 

@@ -54,11 +54,31 @@ std::string rigid_inspection_json(const RigidEdgeEdgeQuery& query, const Inspect
                                   const std::vector<std::string>& labels,
                                   std::optional<std::size_t> step = std::nullopt);
 
+/// The inspection of a point against a plane: linear motion (a query of a `pl` file: `source`,
+/// `index`, `first_line` and `truth` from it) or a rigid body's point against a static plane
+/// (a contact of a rigid scene's `step`). The plane offset polynomial f = (p - o) . n (rigid: its
+/// numerator F(s) on the path's common denominator) with its roots as exact brackets.
+struct PointPlaneSource {
+  std::string file;
+  std::optional<std::size_t> index, first_line, step;
+  std::optional<bool> truth;
+  std::string title;
+};
+std::string point_plane_inspection_json(const PointPlaneQuery& query,
+                                        const InspectSettings& settings,
+                                        const PointPlaneSource& source);
+std::string rigid_point_plane_inspection_json(const RigidPointPlaneQuery& query,
+                                              const InspectSettings& settings,
+                                              const PointPlaneSource& source);
+
 /// The inspection of query `index` (0-based) of the benchmark CSV file `path` (its type `type`
-/// when given, else from the folder name). Throws InputError for a file that is not a benchmark
-/// file or an index past its end, and as inspection_json does.
+/// when given, else from the folder name), or of a file of a point kind or the plane
+/// (`primitive`: pe, pp and their 2D forms as the edge-edge queries of their zero-length
+/// segments, pl as a point-plane query). Throws InputError for a file that is not such a file
+/// or an index past its end, and as inspection_json does.
 std::string inspect_file_query(const std::string& path, std::optional<QueryType> type,
-                               std::size_t index, const InspectSettings& settings);
+                               std::size_t index, const InspectSettings& settings,
+                               std::optional<PrimitiveKind> primitive = std::nullopt);
 
 /// A short text account of the same inspection (verdict, TOI, stage, float_only, the roots and
 /// their inclusion test), for a terminal.

@@ -194,5 +194,41 @@ TEST_F(CliInspectTest, RigidSceneStep) {
   expect_bad_input(run({"inspect", steps, "--index", "1"}), {"--index"});
 }
 
+TEST_F(CliInspectTest, PointKindsAndPlanes) {
+  // A point falling through the floor z = 0 from height 1 to -1: contact at t = 1/2.
+  const fs::path floor = write_file("floor.csv",
+                                    "1,4,1,4,1,1,1\n0,1,0,1,0,1,1\n0,1,0,1,1,1,1\n"
+                                    "1,4,1,4,-1,1,1\n0,1,0,1,0,1,1\n0,1,0,1,1,1,1\n");
+  const nlohmann::json plane =
+      parse_json(run({"inspect", floor.string(), "--type", "pl", "--json"}));
+  EXPECT_EQ(plane["kind"], "point_plane");
+  EXPECT_EQ(plane["result"]["toi_lo"].get<double>(), 0.5);
+  EXPECT_EQ(plane["polynomials"][0]["roots"][0]["exact"], "1/2");
+  EXPECT_EQ(plane["plane_normal"]["exact"][0], nlohmann::json({"0", "0", "1"}));
+  EXPECT_EQ(run({"inspect", floor.string(), "--type", "pl", "--html",
+                 (dir_ / "floor.html").string()})
+                .status,
+            0);
+  // A zero normal: bad input at its query's line.
+  const fs::path zero = write_file("zero.csv",
+                                   "1,4,1,4,1,1,1\n0,1,0,1,0,1,1\n0,1,0,1,0,1,1\n"
+                                   "1,4,1,4,-1,1,1\n0,1,0,1,0,1,1\n0,1,0,1,0,1,1\n");
+  expect_bad_input(run({"inspect", zero.string(), "--type", "pl"}), {"zero.csv:1"});
+  // A point against a segment (pe): the edge-edge query of its zero-length segment.
+  const fs::path pe = write_file("pe.csv",
+                                 "1,2,1,1,0,1,1\n0,1,0,1,0,1,1\n1,1,0,1,0,1,1\n"
+                                 "1,2,-1,1,0,1,1\n0,1,0,1,0,1,1\n1,1,0,1,0,1,1\n");
+  const nlohmann::json point = parse_json(run({"inspect", pe.string(), "--type", "pe", "--json"}));
+  EXPECT_EQ(point["kind"], "edge_edge");
+  EXPECT_EQ(point["result"]["toi_lo"].get<double>(), 0.5);
+  // A rigid cube tipping onto a floor plane: a point-plane contact of a rigid body.
+  const nlohmann::json tips = parse_json(run(
+      {"inspect", (fs::path(EXACTCCD_TEST_DATA) / "rigid" / "cube_tips_onto_floor.json").string(),
+       "--json"}));
+  EXPECT_EQ(tips["kind"], "point_plane");
+  EXPECT_EQ(tips["motion"], "samples");
+  EXPECT_TRUE(tips["result"]["collides"].get<bool>());
+}
+
 }  // namespace
 }  // namespace cli_test

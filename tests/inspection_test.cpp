@@ -15,8 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "corpus/point_families.hpp"
 #include "corpus/rigid_exact_pose.hpp"
 #include "exact/arithmetic/rational.hpp"
+#include "exactccd/ccd.hpp"
 #include "exactccd/query_file.hpp"
 #include "exactccd/rigid.hpp"
 #include "exactccd/rational_query.hpp"
@@ -391,6 +393,88 @@ TEST(Inspection, RigidQueryAgreesWithExactPoses) {
       q, within, "turning corner", "test", {"p", "a", "b", "c"}));
   EXPECT_LT(near["result"]["toi_hi"].get<double>(), lo);
   EXPECT_FALSE(near["distance"]["samples"].empty());
+}
+
+// f(t) = (p(t) - o(t)) . n(t) of a point-plane query, over the rationals (independent of the
+// library's polynomial code).
+mpq_class plane_offset_at(const exactccd::PointPlaneQuery& q, const mpq_class& t) {
+  // mpq_class, not auto: gmpxx's expression templates would outlive their temporaries.
+  auto lerp = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, int k) -> mpq_class {
+    return mpq_class(a[k]) + t * (mpq_class(b[k]) - mpq_class(a[k]));
+  };
+  mpq_class f = 0;
+  for (int k = 0; k < 3; ++k)
+    f += (lerp(q.p_t0, q.p_t1, k) - lerp(q.origin_t0, q.origin_t1, k)) *
+         lerp(q.normal_t0, q.normal_t1, k);
+  return f;
+}
+
+TEST(Inspection, PointPlaneFamiliesAgreeWithTheOffset) {
+  // The point-plane degenerate families (exactccd generate --type pl): crossing at dyadic times,
+  // grazing a turning plane (a double root), stopping one ulp short, sliding in the plane.
+  int roots = 0, contacts = 0;
+  for (const auto& family :
+       exactccd::families::generate_point_families(exactccd::PrimitiveKind::point_plane, 1, 8)) {
+    const std::string& f = family.name;
+    for (std::size_t i = 0; i < family.members.size(); ++i) {
+      const auto& x = family.members[i];
+      const exactccd::PointPlaneQuery q{x[0], x[1], x[2], x[3], x[4], x[5]};
+      SCOPED_TRACE(f + " #" + std::to_string(i));
+      const json doc = json::parse(exactccd::oracle::point_plane_inspection_json(
+          q, InspectSettings{}, {"test", std::nullopt, std::nullopt, std::nullopt, std::nullopt, f}));
+      const exactccd::CcdResult exact = [&] {
+        exactccd::CcdOptions o;
+        o.mode = exactccd::Mode::exact;
+        return exactccd::point_plane_ccd(q, o);
+      }();
+      EXPECT_EQ(doc["exact"]["collides"].get<bool>(), exact.collides);
+      const json& poly = doc["polynomials"][0];
+      EXPECT_EQ(poly["identically_zero"].get<bool>(),
+                plane_offset_at(q, 0) == 0 && plane_offset_at(q, 1) == 0 &&
+                    plane_offset_at(q, mpq_class(1, 3)) == 0);
+      int earliest = 0;
+      for (const json& root : poly["roots"]) {
+        ++roots;
+        const mpq_class lo = exact_of(root["lo"]), hi = exact_of(root["hi"]);
+        const int a = sgn(plane_offset_at(q, lo)), b = sgn(plane_offset_at(q, hi));
+        if (root["exact"].is_string())
+          EXPECT_EQ(plane_offset_at(q, mpq_class(root["exact"].get<std::string>())), 0);
+        else
+          EXPECT_LE(a * b, 0) << "[" << lo << ", " << hi << "]";  // a double root is rational
+        if (root["earliest"].get<bool>()) {
+          ++earliest;
+          EXPECT_EQ(root["lo"].get<double>(), exact.toi_lo);
+          EXPECT_EQ(root["hi"].get<double>(), exact.toi_hi);
+        }
+      }
+      if (exact.collides && !poly["identically_zero"].get<bool>()) {
+        EXPECT_EQ(earliest, 1);
+        ++contacts;
+      }
+    }
+  }
+  EXPECT_GT(roots, 20);
+  EXPECT_GT(contacts, 10);
+}
+
+TEST(Inspection, RigidPointPlaneAgreesWithExactPoses) {
+  // The corner (5, 5, 0) of a cube turning about the z axis (cayley (0, 0, -1/2)) against the
+  // static floor x = 7 seen as a plane: the same contact as the wall, at s = 2/3.
+  exactccd::RigidMotion turn;
+  turn.cayley = {0, 0, -0.5};
+  const exactccd::RigidPointPlaneQuery q({5, 5, 0}, turn, {7, 0, 0}, {-1, 0, 0});
+  const json doc = json::parse(exactccd::oracle::rigid_point_plane_inspection_json(
+      q, InspectSettings{}, {"test", std::nullopt, std::nullopt, 1, std::nullopt, "corner"}));
+  EXPECT_EQ(doc["kind"], "point_plane");
+  EXPECT_EQ(doc["polynomials"][0]["roots"][0]["exact"], "2/3");
+  EXPECT_TRUE(doc["polynomials"][0]["roots"][0]["earliest"].get<bool>());
+  const json& times = doc["trajectory"]["times"];
+  for (std::size_t j = 0; j < times.size(); ++j) {
+    const auto x = exactccd::rigid_pose::exact_position(turn, q.p, exact_of(times[j]));
+    for (int k = 0; k < 3; ++k)
+      EXPECT_TRUE(is_nearest(doc["trajectory"]["positions"][j][0][k].get<double>(),
+                             CGAL::Gmpq(x[k].get_str())));
+  }
 }
 
 TEST(InspectorPage, CarriesTheDataAndEveryScript) {

@@ -49,11 +49,15 @@ std::string inspect_scene_step(const InspectOptions& options) {
                     if (pair.type == QueryType::vertex_face)
                       json = rigid_inspection_json(scene.rigid_vertex_face_query(pair), settings,
                                                    title, options.path, {"p", "a", "b", "c"}, k + 1);
-                    else if (pair.type == QueryType::point_plane)
-                      throw InputError(options.path, 0,
-                                       "step " + std::to_string(k + 1) +
-                                           ": the first contact is a point against a plane, which "
-                                           "the inspector does not show");
+                    else if (pair.type == QueryType::point_plane) {
+                      const PointPlaneSource source{options.path, std::nullopt, std::nullopt,
+                                                    k + 1, std::nullopt, title};
+                      json = file.bodies[pair.first_mesh].kind == BodyKind::rigid
+                                 ? rigid_point_plane_inspection_json(
+                                       scene.rigid_point_plane_query(pair), settings, source)
+                                 : point_plane_inspection_json(scene.point_plane_query(pair),
+                                                               settings, source);
+                    }
                     else
                       json = rigid_inspection_json(scene.rigid_edge_edge_query(pair), settings,
                                                    title, options.path,
@@ -81,12 +85,13 @@ int run_inspect(const InspectOptions& options) {
   if (!options.html_path.empty()) require_inspector();
   if (options.step && !is_scene_file(options.path))
     throw UsageError("--step needs a rigid scene file (FILE.json)");
-  if (is_scene_file(options.path) && (options.index_given || options.type))
+  if (is_scene_file(options.path) && (options.index_given || options.type || options.primitive))
     throw UsageError("--index and --type apply to a query file, not to a scene file (use --step)");
   const std::string json =
       is_scene_file(options.path)
           ? inspect_scene_step(options)
-          : inspect_file_query(options.path, options.type, options.index, options.settings);
+          : inspect_file_query(options.path, options.type, options.index, options.settings,
+                               options.primitive);
   if (!options.html_path.empty())
     write_file_atomically(options.html_path, inspector_page(json), overwrite, "--html");
   std::cout << (options.json ? json + "\n" : inspection_text(json));

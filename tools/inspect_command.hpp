@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "exactccd/query_file.hpp"
 #include "exactccd/types.hpp"
 #include "oracle/inspection.hpp"
 
@@ -14,6 +15,9 @@ namespace exactccd::cli {
 struct InspectOptions {
   std::string path;            ///< a benchmark CSV file
   std::optional<QueryType> type;
+  /// --type pe|pe2d|pp|pp2d|pl: a file of a point kind (shown as the edge-edge query of its
+  /// zero-length segments) or of the plane (a point-plane page).
+  std::optional<PrimitiveKind> primitive;
   std::size_t index = 0;       ///< 0-based query index in the file
   oracle::InspectSettings settings;
   std::string html_path;       ///< --html OUT.html (empty: no page)

@@ -431,7 +431,7 @@ int main(int argc, char** argv) {
                           ". Coordinates must be doubles, except with --mode exact")
       ->check(mode_name_check())
       ->capture_default_str();
-  add_type_option(inspect, inspect_type);
+  add_check_type_option(inspect, inspect_type);
   add_t_max_option(inspect, inspect_options.settings.t_max);
   add_min_separation_option(inspect, inspect_options.settings.min_separation);
   inspect->add_option("--html", inspect_options.html_path,
@@ -554,6 +554,7 @@ int main(int argc, char** argv) {
     }
     if (inspect->parsed()) {
       inspect_options.type = parse_type_name(inspect_type);
+      inspect_options.primitive = exactccd::primitive_kind_from_name(inspect_type);
       inspect_options.settings.mode = *parse_mode_name(inspect_mode);
       if (inspect_step_option->count() > 0) inspect_options.step = inspect_step;
       inspect_options.mode_given = inspect->get_option("--mode")->count() > 0;

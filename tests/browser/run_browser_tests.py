@@ -1,6 +1,6 @@
 """The browser tests of the inspector pages (ctest label `browser`): writes pages with the
 `exactccd` command (inspect on sample queries, a minimum-separation query and a rigid scene;
-generate --html on degenerate families; grade --html), records next to each page the TOI that
+a point-plane file and a floor; generate --html on degenerate families; grade --html), records next to each page the TOI that
 the command's other subcommands report for the same query (check --out, rigid --json), and runs
 test_inspector_page.py on them in headless Chromium.
 
@@ -82,6 +82,27 @@ def write_pages(cli, work):
         run(cli, 'inspect', extreme, '--index', index, '--html', page)
         expect(page, check_toi(cli, work, extreme, index, 0.0))
         pages.append(page)
+
+    # A point against a turning plane grazing it (a double root), from the point-plane families.
+    planes = os.path.join(work, 'planes')
+    run(cli, 'generate', '--type', 'pl', '--out', planes, '--per-family', 8)
+    page = os.path.join(work, 'pl_graze_turning.html')
+    pl_file = os.path.join(planes, 'pl_graze_turning.csv')
+    run(cli, 'inspect', pl_file, '--type', 'pl', '--index', 0, '--html', page)
+    out = os.path.join(work, 'pl-check.csv')
+    run(cli, 'check', '--type', 'pl', pl_file, '--out', out, ok=(0, 1))
+    with open(out) as f:
+        row = next(r for r in csv.reader(f) if r[1] == '0')
+    expect(page, None if row[2] == '0' else [float(row[3]), float(row[4])])
+    pages.append(page)
+
+    # A rigid cube tipping onto a floor plane: a point-plane contact of a rigid body.
+    scene = os.path.join(DATA, 'rigid', 'cube_tips_onto_floor.json')
+    page = os.path.join(work, 'rigid_cube_floor.html')
+    run(cli, 'inspect', scene, '--html', page)
+    contact = json.loads(run(cli, 'rigid', scene, '--json'))['steps'][0]['contact']
+    expect(page, [contact['s_lo'], contact['s_hi']])
+    pages.append(page)
 
     # A rigid scene: the first contact, as `exactccd rigid` reports it (in s).
     scene = os.path.join(DATA, 'rigid', 'cube_turns_into_wall.json')
