@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -406,6 +407,29 @@ std::array<rigid_pose::RationalPosition, 4> exact_points_at(const Eigen::Vector3
   return out;
 }
 
+// A query decided in `mode` with the page's t_max and minimum separation (any query type the
+// library's overloads take).
+template <class Query, class Decide>
+auto decided(const Query& q, const InspectSettings& settings, Mode mode, Decide&& decide) {
+  CcdOptions options;
+  options.t_max = settings.t_max;
+  options.min_separation = settings.min_separation;
+  options.mode = mode;
+  return decide(q, options);
+}
+
+// The parameters a rigid page samples: 64 pieces of [0, t_max], and the TOIs' lower ends (where
+// the page opens), sorted and distinct.
+std::vector<double> sample_parameters(double t_max, std::initializer_list<const RigidCcdResult*> at) {
+  std::vector<double> times;
+  for (int k = 0; k <= 64; ++k) times.push_back(t_max * k / 64);
+  for (const RigidCcdResult* r : at)
+    if (r->ccd.collides) times.push_back(r->ccd.toi_lo);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
 template <class Query>
 std::string rigid_inspection(const Query& query, QueryType type, const Eigen::Vector3d (&start)[4],
                              const SideMotion (&side)[2], const InspectSettings& settings,
@@ -415,14 +439,12 @@ std::string rigid_inspection(const Query& query, QueryType type, const Eigen::Ve
   const bool vf = type == QueryType::vertex_face;
   const int first_side_points = vf ? 1 : 2;
   auto decide = [&](Mode mode) {
-    CcdOptions options;
-    options.t_max = settings.t_max;
-    options.min_separation = settings.min_separation;
-    options.mode = mode;
-    if constexpr (std::is_same_v<Query, RigidVertexFaceQuery>)
-      return vertex_face_ccd(query, options);
-    else
-      return edge_edge_ccd(query, options);
+    return decided(query, settings, mode, [](const Query& q, const CcdOptions& o) {
+      if constexpr (std::is_same_v<Query, RigidVertexFaceQuery>)
+        return vertex_face_ccd(q, o);
+      else
+        return edge_edge_ccd(q, o);
+    });
   };
   const RigidCcdResult exact_answer = decide(Mode::exact);
   const RigidCcdResult answer = decide(settings.mode);
@@ -430,12 +452,7 @@ std::string rigid_inspection(const Query& query, QueryType type, const Eigen::Ve
 
   // Samples of s: 64 pieces of [0, t_max], and the TOI's lower end, where the page shows the
   // contact: each position exact, then rounded to the nearest double.
-  std::vector<double> times;
-  for (int k = 0; k <= 64; ++k) times.push_back(settings.t_max * k / 64);
-  for (const RigidCcdResult* r : {&exact_answer, &answer})  // where the page opens
-    if (r->ccd.collides) times.push_back(r->ccd.toi_lo);
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
+  const std::vector<double> times = sample_parameters(settings.t_max, {&exact_answer, &answer});
   json positions = json::array();
   std::vector<std::array<Eigen::Vector3d, 4>> rounded;
   for (double s : times) {
@@ -583,11 +600,8 @@ json point_plane_document(const PointPlaneSource& source, const InspectSettings&
 std::string point_plane_inspection_json(const PointPlaneQuery& q, const InspectSettings& settings,
                                         const PointPlaneSource& source) {
   auto decide = [&](Mode mode) {
-    CcdOptions options;
-    options.t_max = settings.t_max;
-    options.min_separation = settings.min_separation;
-    options.mode = mode;
-    return point_plane_ccd(q, options);
+    return decided(q, settings, mode,
+                   [](const PointPlaneQuery& x, const CcdOptions& o) { return point_plane_ccd(x, o); });
   };
   const CcdResult exact_answer = decide(Mode::exact), answer = decide(settings.mode),
                   float_answer = decide(Mode::float_only);
@@ -633,21 +647,14 @@ std::string rigid_point_plane_inspection_json(const RigidPointPlaneQuery& q,
                                               const InspectSettings& settings,
                                               const PointPlaneSource& source) {
   auto decide = [&](Mode mode) {
-    CcdOptions options;
-    options.t_max = settings.t_max;
-    options.min_separation = settings.min_separation;
-    options.mode = mode;
-    return point_plane_ccd(q, options);
+    return decided(q, settings, mode, [](const RigidPointPlaneQuery& x, const CcdOptions& o) {
+      return point_plane_ccd(x, o);
+    });
   };
   const RigidCcdResult exact_answer = decide(Mode::exact), answer = decide(settings.mode),
                        float_answer = decide(Mode::float_only);
   // Samples of s as for the other rigid pages: the exact pose rounded to nearest.
-  std::vector<double> times;
-  for (int k = 0; k <= 64; ++k) times.push_back(settings.t_max * k / 64);
-  for (const RigidCcdResult* r : {&exact_answer, &answer})
-    if (r->ccd.collides) times.push_back(r->ccd.toi_lo);
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
+  const std::vector<double> times = sample_parameters(settings.t_max, {&exact_answer, &answer});
   auto at = [&](const mpq_class& s) {
     const auto x = rigid_pose::exact_position(q.motion, q.p, s);
     return std::pair(Eigen::Vector3d(exact::round_nearest(x[0]), exact::round_nearest(x[1]),
