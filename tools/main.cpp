@@ -200,7 +200,10 @@ int main(int argc, char** argv) {
   simulate->footer(kExitStatusHelp);
   simulate->add_option("--out", simulate_options.out_dir, "The output folder DIR")->required();
   add_force_flag(simulate, simulate_options.force);
-  const auto [simulate_resolution, simulate_steps, simulate_seed] =
+  // Not a structured binding: the run lambda below uses them (clang 14 refuses captures of
+  // structured bindings, a C++20 feature).
+  CLI::Option *simulate_resolution, *simulate_steps, *simulate_seed;
+  std::tie(simulate_resolution, simulate_steps, simulate_seed) =
       add_simulation_options(simulate, simulate_options.config);
   simulate
       ->add_option("--barrier-step", simulate_options.barrier_step,
