@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/float_only/tolerance_ccd.hpp"
 #include "core/predicates/coplanarity_cubic.hpp"
 #include "core/predicates/inclusion.hpp"
 #include "exact/arithmetic/rational.hpp"
@@ -200,45 +201,6 @@ json contact_polynomials(const RationalQuery& q, const Rational& t_max, bool* co
                              t_max, contact_at_start);
 }
 
-// Distances for the plot of a minimum-separation query, in double: for display only.
-double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                              const Eigen::Vector3d& b) {
-  const Eigen::Vector3d d = b - a;
-  const double l = d.squaredNorm();
-  const double s = l > 0 ? std::clamp((p - a).dot(d) / l, 0.0, 1.0) : 0.0;
-  return (p - (a + s * d)).norm();
-}
-
-double point_triangle_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                               const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  double best = std::min({point_segment_distance(p, a, b), point_segment_distance(p, b, c),
-                          point_segment_distance(p, c, a)});
-  const Eigen::Vector3d n = (b - a).cross(c - a);
-  const double n2 = n.squaredNorm();
-  if (n2 > 0) {
-    const Eigen::Vector3d f = p - n * ((p - a).dot(n) / n2);  // foot on the plane
-    const bool inside = (b - a).cross(f - a).dot(n) >= 0 && (c - b).cross(f - b).dot(n) >= 0 &&
-                        (a - c).cross(f - c).dot(n) >= 0;
-    if (inside) best = std::min(best, (p - f).norm());
-  }
-  return best;
-}
-
-double segment_segment_distance(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
-                                const Eigen::Vector3d& b0, const Eigen::Vector3d& b1) {
-  double best = std::min({point_segment_distance(a0, b0, b1), point_segment_distance(a1, b0, b1),
-                          point_segment_distance(b0, a0, a1), point_segment_distance(b1, a0, a1)});
-  const Eigen::Vector3d u = a1 - a0, v = b1 - b0, w = a0 - b0;
-  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), uw = u.dot(w), vw = v.dot(w);
-  const double den = uu * vv - uv * uv;
-  if (den > 0) {  // interior closest points, when they lie on both segments
-    const double s = (uv * vw - vv * uw) / den, t = (uu * vw - uv * uw) / den;
-    if (s >= 0 && s <= 1 && t >= 0 && t <= 1)
-      best = std::min(best, (w + s * u - t * v).norm());
-  }
-  return best;
-}
-
 // The distance between the primitives of four points, computed on the points scaled by a power
 // of two to unit size and scaled back (exact scalings: squared norms of points 1e-100 or 1e300
 // apart neither underflow nor overflow).
@@ -250,8 +212,10 @@ double primitive_distance(QueryType type, std::array<Eigen::Vector3d, 4> p) {
   if (m > 0) std::frexp(m, &e);
   for (auto& x : p)
     for (int k = 0; k < 3; ++k) x[k] = std::ldexp(x[k], -e);
-  const double d = type == QueryType::vertex_face ? point_triangle_distance(p[0], p[1], p[2], p[3])
-                                                  : segment_segment_distance(p[0], p[1], p[2], p[3]);
+  // The tolerance method's distances in double (core/float_only): for display only.
+  const double d = type == QueryType::vertex_face
+                       ? methods::point_triangle_distance(p[0], p[1], p[2], p[3])
+                       : methods::segment_segment_distance(p[0], p[1], p[2], p[3]);
   return std::ldexp(d, e);
 }
 
